@@ -1,0 +1,76 @@
+#include "app/cli.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "scenarios/error.h"
+
+namespace canopy::app {
+
+void usageError(const std::string& what, const std::string& message) {
+  throw scenarios::ScenarioError("command line", what, message);
+}
+
+Args::Args(int argc, char** argv, int first) : args_(argv, argv + argc), next_(first) {}
+
+std::string Args::value(const std::string& name) {
+  if (done()) usageError(name, "expected a value after " + name);
+  return take();
+}
+
+std::uint64_t Args::unsignedValue(const std::string& name) {
+  const std::string text = value(name);
+  std::uint64_t x = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (error != std::errc() || end != text.data() + text.size()) {
+    usageError(name, "expected a non-negative integer, got '" + text + "'");
+  }
+  return x;
+}
+
+int Args::intValue(const std::string& name, int min_value, int max_value) {
+  const std::string text = value(name);
+  int x = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (error != std::errc() || end != text.data() + text.size() || x < min_value || x > max_value) {
+    usageError(name, "expected an integer in [" + std::to_string(min_value) + ", " +
+                         std::to_string(max_value) + "], got '" + text + "'");
+  }
+  return x;
+}
+
+double Args::doubleValue(const std::string& name) {
+  const std::string text = value(name);
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(x)) {
+    usageError(name, "expected a finite number, got '" + text + "'");
+  }
+  return x;
+}
+
+std::vector<double> Args::listValue(const std::string& name, std::size_t count) {
+  const std::string text = value(name);
+  std::vector<double> numbers;
+  std::stringstream stream(text);
+  std::string item;
+  const std::string expected =
+      "expected " + std::to_string(count) + " comma-separated finite numbers, got '" + text + "'";
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x)) usageError(name, expected);
+    numbers.push_back(x);
+  }
+  if (numbers.size() != count) usageError(name, expected);
+  return numbers;
+}
+
+std::string Args::joined() const {
+  std::string text;
+  for (const std::string& a : args_) text += (text.empty() ? "" : " ") + a;
+  return text;
+}
+
+}  // namespace canopy::app

@@ -1,0 +1,41 @@
+#pragma once
+// Small helpers for the command line: argument cursor and typed option values.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/types.h"
+
+namespace canopy::app {
+
+/// Exit codes: 0 success, 1 a failure of the run itself (I/O), 2 bad user input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+/// Walks argv; option values are checked as they are taken, failures throw ScenarioError
+/// naming the option (exit code 2).
+class Args {
+ public:
+  Args(int argc, char** argv, int first);
+  bool done() const { return next_ >= args_.size(); }
+  const std::string& peek() const { return args_[next_]; }
+  std::string take() { return args_[next_++]; }
+  /// The value after option `name`.
+  std::string value(const std::string& name);
+  std::uint64_t unsignedValue(const std::string& name);
+  int intValue(const std::string& name, int min_value, int max_value);
+  double doubleValue(const std::string& name);
+  /// "a,b,c,d" as numbers.
+  std::vector<double> listValue(const std::string& name, std::size_t count);
+  /// The whole command line, for manifests.
+  std::string joined() const;
+
+ private:
+  std::vector<std::string> args_;
+  std::size_t next_;
+};
+
+[[noreturn]] void usageError(const std::string& what, const std::string& message);
+
+}  // namespace canopy::app

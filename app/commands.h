@@ -1,0 +1,15 @@
+#pragma once
+// One function per `canopy` subcommand; each returns the process exit code.
+#include "app/cli.h"
+
+namespace canopy::app {
+
+int runCommand(Args& args);       // canopy run [SCENARIO] [options]
+int validateCommand(Args& args);  // canopy validate SCENARIO [--set k=v]...
+int listCommand(Args& args);      // canopy list
+int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
+
+/// The scenario `canopy run` uses when none is given.
+inline constexpr const char* kDefaultScenario = "demo";
+
+}  // namespace canopy::app

@@ -1,0 +1,140 @@
+#include "scenarios/forest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "core/random.h"
+
+namespace canopy::scenarios {
+namespace {
+
+struct Candidate {
+  Vec2 centre;
+  double radius;
+  double mark;  // Matérn II priority: smaller marks win
+};
+
+Aabb dilate(const Aabb& box, double margin) {
+  return {box.lo - Vec2(margin, margin), box.hi + Vec2(margin, margin)};
+}
+
+double drawRadius(const RadiusRange& range, RandomStream& rng) {
+  return range.lo == range.hi ? range.lo : rng.uniform(range.lo, range.hi);
+}
+
+// Homogeneous Poisson points on `box`: x-coordinates are the arrivals of a 1-D Poisson process
+// of rate λ · height (exponential gaps), y-coordinates uniform. Exact, and O(number of points).
+template <typename Emit>
+void poissonPoints(const Aabb& box, double lambda, RandomStream& rng, Emit emit) {
+  const double rate = lambda * box.height();  // points per metre along x
+  if (!(rate > 0.0)) return;
+  for (double x = box.lo.x() + rng.exponential(rate); x < box.hi.x(); x += rng.exponential(rate)) {
+    emit(Vec2(x, rng.uniform(box.lo.y(), box.hi.y())));
+  }
+}
+
+// Matérn II thinning on a uniform hash grid; keeps the input order of the survivors.
+std::vector<Candidate> thin(const std::vector<Candidate>& points, double max_radius, double gap) {
+  const double reach = 2.0 * max_radius + gap;  // largest centre distance that can conflict
+  if (points.empty() || reach <= 0.0) return points;
+  auto cellOf = [reach](const Vec2& p) {
+    return std::pair<long long, long long>(static_cast<long long>(std::floor(p.x() / reach)),
+                                           static_cast<long long>(std::floor(p.y() / reach)));
+  };
+  auto key = [](long long cx, long long cy) { return (cx * 73856093LL) ^ (cy * 19349663LL); };
+  std::unordered_map<long long, std::vector<int>> grid;  // lookups only: order never matters
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+    const auto [cx, cy] = cellOf(points[i].centre);
+    grid[key(cx, cy)].push_back(i);
+  }
+  std::vector<Candidate> kept;
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+    const Candidate& p = points[i];
+    const auto [cx, cy] = cellOf(p.centre);
+    bool dominated = false;
+    for (long long dx = -1; dx <= 1 && !dominated; ++dx) {
+      for (long long dy = -1; dy <= 1 && !dominated; ++dy) {
+        const auto cell = grid.find(key(cx + dx, cy + dy));
+        if (cell == grid.end()) continue;
+        for (const int j : cell->second) {
+          if (j == i) continue;
+          const Candidate& q = points[j];
+          const double d = p.radius + q.radius + gap;
+          if (q.mark < p.mark && (q.centre - p.centre).squaredNorm() < d * d) {
+            dominated = true;
+            break;
+          }
+        }
+      }
+    }
+    if (!dominated) kept.push_back(p);
+  }
+  return kept;
+}
+
+std::vector<world::TreeDef> keepInside(const std::vector<Candidate>& points, const Aabb& region) {
+  std::vector<world::TreeDef> trees;
+  for (const Candidate& p : points) {
+    if (region.contains(p.centre)) trees.push_back(world::TreeDef::disc(p.centre, p.radius));
+  }
+  return trees;
+}
+
+}  // namespace
+
+double maternIIIntensity(double lambda, double radius, double min_gap) {
+  const double d = 2.0 * radius + min_gap;
+  const double area = std::numbers::pi * d * d;
+  return (1.0 - std::exp(-lambda * area)) / area;
+}
+
+std::vector<world::TreeDef> poissonForest(const PoissonForestDef& def) {
+  RandomStream rng(def.seed, "forest.poisson");
+  const double margin = def.min_gap ? 2.0 * def.radius.hi + *def.min_gap : 0.0;
+  std::vector<Candidate> points;
+  poissonPoints(dilate(def.region, margin), def.lambda, rng, [&](const Vec2& p) {
+    const double radius = drawRadius(def.radius, rng);
+    points.push_back({p, radius, rng.uniform()});
+  });
+  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap);
+  return keepInside(points, def.region);
+}
+
+std::vector<world::TreeDef> gridForest(const GridForestDef& def) {
+  RandomStream rng(def.seed, "forest.grid");
+  const double c = std::cos(def.angle), s = std::sin(def.angle);
+  std::vector<world::TreeDef> trees;
+  for (int r = 0; r < def.rows; ++r) {
+    for (int col = 0; col < def.cols; ++col) {
+      const Vec2 local(col * def.spacing.x(), r * def.spacing.y());
+      Vec2 centre = def.origin + Vec2(c * local.x() - s * local.y(), s * local.x() + c * local.y());
+      if (def.jitter > 0.0) centre += def.jitter * Vec2(rng.normal(), rng.normal());
+      trees.push_back(world::TreeDef::disc(centre, drawRadius(def.radius, rng)));
+    }
+  }
+  return trees;
+}
+
+std::vector<world::TreeDef> clusterForest(const ClusterForestDef& def) {
+  RandomStream rng(def.seed, "forest.cluster");
+  // Parents beyond 5σ of the region contribute a negligible share of trees inside it.
+  const double margin = 5.0 * def.spread;
+  std::vector<Vec2> parents;
+  poissonPoints(dilate(def.region, margin), def.parent_lambda, rng,
+                [&](const Vec2& p) { parents.push_back(p); });
+  std::vector<Candidate> points;
+  for (const Vec2& parent : parents) {
+    const int n = rng.poisson(def.mean_trees);
+    for (int k = 0; k < n; ++k) {
+      const Vec2 centre = parent + def.spread * Vec2(rng.normal(), rng.normal());
+      const double radius = drawRadius(def.radius, rng);
+      points.push_back({centre, radius, rng.uniform()});
+    }
+  }
+  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap);
+  return keepInside(points, def.region);
+}
+
+}  // namespace canopy::scenarios

@@ -1,0 +1,266 @@
+#include "scenarios/internal/json_reader.h"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace canopy::scenarios::internal {
+namespace {
+
+std::string shortDump(const Json& value) {
+  std::string text = value.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+std::string joinPath(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+const char* boundText(Bound bound) {
+  switch (bound) {
+    case Bound::any: return "a finite number";
+    case Bound::positive: return "a positive number";
+    case Bound::non_negative: return "a number >= 0";
+    case Bound::probability: return "a probability in [0, 1]";
+    case Bound::open_probability: return "a probability in (0, 1)";
+    case Bound::unit_interval: return "a number in (0, 1]";
+  }
+  return "a number";
+}
+
+bool satisfies(double x, Bound bound) {
+  switch (bound) {
+    case Bound::any: return true;
+    case Bound::positive: return x > 0.0;
+    case Bound::non_negative: return x >= 0.0;
+    case Bound::probability: return x >= 0.0 && x <= 1.0;
+    case Bound::open_probability: return x > 0.0 && x < 1.0;
+    case Bound::unit_interval: return x > 0.0 && x <= 1.0;
+  }
+  return false;
+}
+
+}  // namespace
+
+Json parseJson(const std::string& text, const std::string& file) {
+  try {
+    return Json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const Json::parse_error& e) {
+    // e.what(): "[json.exception.parse_error.101] parse error at line L, column C: detail"
+    std::string detail = e.what();
+    std::string where;
+    const auto at = detail.find(" at line ");
+    const auto colon = detail.find(": ", at == std::string::npos ? 0 : at);
+    if (at != std::string::npos && colon != std::string::npos) {
+      where = detail.substr(at + 4, colon - at - 4);  // "line L, column C"
+      detail = detail.substr(colon + 2);
+    }
+    throw ScenarioError(file, where, "invalid JSON: " + detail);
+  }
+}
+
+Json readJsonFile(const std::string& path, const std::string& referenced_from) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw ScenarioError(referenced_from.empty() ? path : referenced_from, "",
+                        "cannot read file '" + path + "'");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseJson(text.str(), path);
+}
+
+std::string describe(const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return "the boolean " + value.dump();
+    case Json::value_t::string: return "the string " + shortDump(value);
+    case Json::value_t::array: return "an array " + shortDump(value);
+    case Json::value_t::object: return "an object " + shortDump(value);
+    case Json::value_t::number_float:
+      if (!std::isfinite(value.get<double>())) return "a non-finite number";
+      return "the number " + value.dump();
+    default: return "the number " + value.dump();
+  }
+}
+
+void Field::fail(const std::string& message) const { throw ScenarioError(file_, path_, message); }
+
+double Field::number(Bound bound) const {
+  if (!value_->is_number()) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  const double x = value_->get<double>();
+  if (!std::isfinite(x)) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  if (!satisfies(x, bound)) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  if (out_) *out_ = x;
+  return x;
+}
+
+int Field::integer(int min_value, int max_value) const {
+  const std::string expected = "an integer in [" + std::to_string(min_value) + ", " +
+                               std::to_string(max_value) + "]";
+  if (!value_->is_number_integer()) fail("expected " + expected + ", got " + describe(*value_));
+  const auto x = value_->get<long long>();
+  if (value_->is_number_unsigned() && value_->get<unsigned long long>() >
+                                          static_cast<unsigned long long>(max_value)) {
+    fail("expected " + expected + ", got " + describe(*value_));
+  }
+  if (x < min_value || x > max_value) fail("expected " + expected + ", got " + describe(*value_));
+  if (out_) *out_ = x;
+  return static_cast<int>(x);
+}
+
+std::uint64_t Field::unsignedInteger() const {
+  if (!value_->is_number_unsigned()) {
+    fail("expected a non-negative integer, got " + describe(*value_));
+  }
+  const auto x = value_->get<std::uint64_t>();
+  if (out_) *out_ = x;
+  return x;
+}
+
+bool Field::boolean() const {
+  if (!value_->is_boolean()) fail("expected true or false, got " + describe(*value_));
+  if (out_) *out_ = value_->get<bool>();
+  return value_->get<bool>();
+}
+
+std::string Field::string() const {
+  if (!value_->is_string()) fail("expected a string, got " + describe(*value_));
+  if (out_) *out_ = *value_;
+  return value_->get<std::string>();
+}
+
+int Field::choice(const std::vector<std::string>& choices) const {
+  std::string options;
+  for (const std::string& c : choices) options += (options.empty() ? "\"" : ", \"") + c + "\"";
+  if (value_->is_string()) {
+    const std::string text = value_->get<std::string>();
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+      if (choices[i] == text) {
+        if (out_) *out_ = text;
+        return static_cast<int>(i);
+      }
+    }
+  }
+  fail("expected one of " + options + ", got " + describe(*value_));
+}
+
+Vec2 Field::vec2(Bound bound) const {
+  const std::vector<Field> xy = elements(2, 2);
+  return {xy[0].number(bound), xy[1].number(bound)};
+}
+
+std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) const {
+  std::string expected = "an array";
+  if (min_size == max_size) {
+    expected = "an array of " + std::to_string(min_size) + " elements";
+  } else if (max_size != SIZE_MAX) {
+    expected = "an array of " + std::to_string(min_size) + " to " + std::to_string(max_size) +
+               " elements";
+  } else if (min_size > 0) {
+    expected = "an array of at least " + std::to_string(min_size) + " element" +
+               (min_size == 1 ? "" : "s");
+  }
+  if (!value_->is_array()) fail("expected " + expected + ", got " + describe(*value_));
+  const std::size_t n = value_->size();
+  if (n < min_size || n > max_size) {
+    fail("expected " + expected + ", got " + std::to_string(n) + " element" + (n == 1 ? "" : "s"));
+  }
+  if (out_) {
+    *out_ = Json::array();
+    out_->get_ref<Json::array_t&>().resize(n);  // fixed size: element slots keep their address
+  }
+  std::vector<Field> fields;
+  fields.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    fields.emplace_back((*value_)[i], file_, path_ + "[" + std::to_string(i) + "]",
+                        out_ ? &(*out_)[i] : nullptr);
+  }
+  return fields;
+}
+
+ObjectReader Field::object() const { return ObjectReader(*this); }
+
+void Field::keepAsIs() const {
+  if (out_) *out_ = *value_;
+}
+
+ObjectReader::ObjectReader(const Field& field) : field_(field) {
+  if (!field.json().is_object()) field.fail("expected an object, got " + describe(field.json()));
+  if (field_.out() && !field_.out()->is_object()) *field_.out() = Json::object();
+}
+
+bool ObjectReader::has(const std::string& key) const { return field_.json().contains(key); }
+
+Field ObjectReader::required(const std::string& key) {
+  if (auto f = optional(key)) return *f;
+  throw ScenarioError(field_.file(), joinPath(field_.path(), key), "missing required field");
+}
+
+std::optional<Field> ObjectReader::optional(const std::string& key) {
+  read_.insert(key);
+  if (!has(key)) return std::nullopt;
+  Json* slot = field_.out() ? &(*field_.out())[key] : nullptr;  // std::map: address is stable
+  return Field(field_.json().at(key), field_.file(), joinPath(field_.path(), key), slot);
+}
+
+void ObjectReader::recordDefault(const std::string& key, const Json& value) {
+  if (field_.out()) (*field_.out())[key] = value;
+}
+
+double ObjectReader::number(const std::string& key, double fallback, Bound bound) {
+  if (auto f = optional(key)) return f->number(bound);
+  recordDefault(key, fallback);
+  return fallback;
+}
+
+int ObjectReader::integer(const std::string& key, int fallback, int min_value, int max_value) {
+  if (auto f = optional(key)) return f->integer(min_value, max_value);
+  recordDefault(key, fallback);
+  return fallback;
+}
+
+bool ObjectReader::boolean(const std::string& key, bool fallback) {
+  if (auto f = optional(key)) return f->boolean();
+  recordDefault(key, fallback);
+  return fallback;
+}
+
+std::string ObjectReader::string(const std::string& key, const std::string& fallback) {
+  if (auto f = optional(key)) return f->string();
+  recordDefault(key, fallback);
+  return fallback;
+}
+
+int ObjectReader::choice(const std::string& key, const std::vector<std::string>& choices,
+                         int fallback) {
+  if (auto f = optional(key)) return f->choice(choices);
+  recordDefault(key, choices[fallback]);
+  return fallback;
+}
+
+std::string ObjectReader::oneOf(const std::vector<std::string>& keys) {
+  std::string found;
+  for (const std::string& key : keys) {
+    if (!has(key)) continue;
+    if (!found.empty()) {
+      field_.fail("give only one of \"" + found + "\" and \"" + key + "\"");
+    }
+    found = key;
+  }
+  return found;
+}
+
+void ObjectReader::finish() const {
+  for (const auto& [key, value] : field_.json().items()) {
+    if (read_.count(key)) continue;
+    std::string known;
+    for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
+    throw ScenarioError(field_.file(), joinPath(field_.path(), key),
+                        "unknown field (expected one of: " + known + ")");
+  }
+}
+
+}  // namespace canopy::scenarios::internal

@@ -1,0 +1,95 @@
+#pragma once
+// Private to scenarios/: a JSON walker that knows where it is. Every read names the file and the
+// field path in its errors, records what it read (or the default it used) into the effective
+// configuration, and finish() rejects fields nobody read.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/types.h"
+#include "scenarios/error.h"
+
+namespace canopy::scenarios::internal {
+
+// std::map-backed: slots of the effective config keep their address while siblings are added.
+using Json = nlohmann::json;
+
+/// Parses JSON with comments; syntax errors become ScenarioError naming file:line:column.
+Json parseJson(const std::string& text, const std::string& file);
+/// Reads and parses a file; a missing or unreadable file is a ScenarioError.
+Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
+
+/// "a string \"x\"", "the number -3", "an array", ... for messages.
+std::string describe(const Json& value);
+
+/// Constraint on a number, checked after the type.
+enum class Bound { any, positive, non_negative, probability, open_probability, unit_interval };
+
+class ObjectReader;
+
+/// A value at a known place: its file, its field path, and the slot of the effective config it
+/// fills.
+class Field {
+ public:
+  Field(const Json& value, std::string file, std::string path, Json* out)
+      : value_(&value), file_(std::move(file)), path_(std::move(path)), out_(out) {}
+
+  const Json& json() const { return *value_; }
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  Json* out() const { return out_; }  // this value's slot in the effective config (may be null)
+  [[noreturn]] void fail(const std::string& message) const;
+
+  double number(Bound bound = Bound::any) const;
+  int integer(int min_value, int max_value) const;
+  std::uint64_t unsignedInteger() const;
+  bool boolean() const;
+  std::string string() const;
+  /// One of `choices`; returns its index.
+  int choice(const std::vector<std::string>& choices) const;
+  Vec2 vec2(Bound bound = Bound::any) const;
+  /// A JSON array: its elements as Fields (the effective config gets an array of the same size).
+  std::vector<Field> elements(std::size_t min_size = 0, std::size_t max_size = SIZE_MAX) const;
+  ObjectReader object() const;
+  /// Copies the value unchanged into the effective config.
+  void keepAsIs() const;
+
+ private:
+  const Json* value_;
+  std::string file_;
+  std::string path_;
+  Json* out_;
+};
+
+/// Reads the members of one JSON object.
+class ObjectReader {
+ public:
+  ObjectReader(const Field& field);
+  const Field& field() const { return field_; }
+  bool has(const std::string& key) const;
+  /// A member that must be present.
+  Field required(const std::string& key);
+  /// A member that may be absent.
+  std::optional<Field> optional(const std::string& key);
+
+  double number(const std::string& key, double fallback, Bound bound = Bound::any);
+  int integer(const std::string& key, int fallback, int min_value, int max_value);
+  bool boolean(const std::string& key, bool fallback);
+  std::string string(const std::string& key, const std::string& fallback);
+  int choice(const std::string& key, const std::vector<std::string>& choices, int fallback);
+  /// Fails when two of the keys are present; returns the one present, or "" when none.
+  std::string oneOf(const std::vector<std::string>& keys);
+  /// Rejects every member not read. Call once, after all reads.
+  void finish() const;
+
+ private:
+  /// Records a default in the effective config for a member that was absent.
+  void recordDefault(const std::string& key, const Json& value);
+
+  Field field_;
+  std::set<std::string> read_;
+};
+
+}  // namespace canopy::scenarios::internal

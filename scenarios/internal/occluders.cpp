@@ -1,0 +1,192 @@
+// Reading occluder layouts: explicit discs and polygons, Poisson / grid / cluster generators,
+// and includes of layout files.
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "scenarios/forest.h"
+#include "scenarios/internal/sections.h"
+#include "scenarios/loader.h"
+
+namespace canopy::scenarios::internal {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr double kMaxGeneratedTrees = 2e6;  // refuse layouts that would take minutes to build
+constexpr int kMaxIncludeDepth = 16;
+constexpr double kMinPolygonEdge = 0.05;    // m; Box2D welds vertices closer than its linear slop
+
+RadiusRange readRadius(const Field& field) {
+  if (field.json().is_array()) {
+    const std::vector<Field> lohi = field.elements(2, 2);
+    const RadiusRange range{lohi[0].number(Bound::positive), lohi[1].number(Bound::positive)};
+    if (range.hi < range.lo) field.fail("expected [min, max] with max >= min");
+    return range;
+  }
+  const double r = field.number(Bound::positive);
+  return {r, r};
+}
+
+Aabb readRegion(ObjectReader& reader, const Aabb& aoi) {
+  const auto field = reader.optional("region");
+  if (!field) {
+    (*reader.field().out())["region"] = Json{aoi.lo.x(), aoi.lo.y(), aoi.hi.x(), aoi.hi.y()};
+    return aoi;
+  }
+  const std::vector<Field> v = field->elements(4, 4);
+  const Aabb region{Vec2(v[0].number(), v[1].number()), Vec2(v[2].number(), v[3].number())};
+  if (!(region.hi.x() > region.lo.x() && region.hi.y() > region.lo.y())) {
+    field->fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
+  }
+  if (!aoi.contains(region.lo) || !aoi.contains(region.hi)) {
+    field->fail("expected a region inside the AOI");
+  }
+  return region;
+}
+
+std::optional<double> readMinGap(ObjectReader& reader) {
+  if (auto gap = reader.optional("min_gap")) return gap->number(Bound::non_negative);
+  return std::nullopt;
+}
+
+void requireFeasibleCount(const Field& field, double expected_trees) {
+  if (expected_trees > kMaxGeneratedTrees) {
+    std::ostringstream text;
+    text << "expected a layout of at most " << kMaxGeneratedTrees << " trees, this one would make about "
+         << expected_trees;
+    field.fail(text.str());
+  }
+}
+
+void requireCentresInside(const Field& field, const std::vector<world::TreeDef>& trees,
+                          const Aabb& aoi) {
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    if (!aoi.contains(trees[k].centre)) {
+      std::ostringstream text;
+      text << "expected every tree inside the AOI; tree " << k << " of this layout is at ("
+           << trees[k].centre.x() << ", " << trees[k].centre.y() << ")";
+      field.fail(text.str());
+    }
+  }
+}
+
+world::TreeDef readPolygon(ObjectReader& reader) {
+  const Field list = reader.required("vertices");
+  std::vector<Vec2> vertices;
+  for (const Field& v : list.elements(3, 8)) vertices.push_back(v.vec2());
+  if (!world::isStrictlyConvex(vertices)) {
+    list.fail("expected the vertices of a convex polygon in order, with no three in a line");
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if ((vertices[(i + 1) % vertices.size()] - vertices[i]).norm() < kMinPolygonEdge) {
+      list.fail("expected polygon edges of at least 0.05 m");
+    }
+  }
+  return world::TreeDef::polygon(std::move(vertices));
+}
+
+void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& aoi,
+                   std::vector<world::TreeDef>& out) {
+  const Field& field = reader.field();
+  if (type == "disc") {
+    const Field centre_field = reader.required("centre");
+    const Vec2 centre = centre_field.vec2();
+    const double radius = reader.required("radius").number(Bound::positive);
+    out.push_back(world::TreeDef::disc(centre, radius));
+    requireCentresInside(centre_field, {out.back()}, aoi);
+  } else if (type == "polygon") {
+    out.push_back(readPolygon(reader));
+    requireCentresInside(field, {out.back()}, aoi);
+  } else if (type == "poisson") {
+    PoissonForestDef def;
+    def.region = readRegion(reader, aoi);
+    def.lambda = reader.required("lambda").number(Bound::non_negative);
+    def.radius = readRadius(reader.required("radius"));
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    def.min_gap = readMinGap(reader);
+    requireFeasibleCount(field, def.lambda * def.region.area());
+    const auto trees = poissonForest(def);
+    out.insert(out.end(), trees.begin(), trees.end());
+  } else if (type == "grid") {
+    GridForestDef def;
+    def.origin = reader.required("origin").vec2();
+    def.spacing = reader.required("spacing").vec2(Bound::non_negative);
+    def.rows = reader.integer("rows", 1, 1, 100000);
+    def.cols = reader.integer("cols", 1, 1, 100000);
+    def.angle = reader.number("angle", 0.0);
+    def.radius = readRadius(reader.required("radius"));
+    def.jitter = reader.number("jitter", 0.0, Bound::non_negative);
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    requireFeasibleCount(field, static_cast<double>(def.rows) * def.cols);
+    const auto trees = gridForest(def);
+    requireCentresInside(field, trees, aoi);
+    out.insert(out.end(), trees.begin(), trees.end());
+  } else if (type == "cluster") {
+    ClusterForestDef def;
+    def.region = readRegion(reader, aoi);
+    def.parent_lambda = reader.required("parent_lambda").number(Bound::non_negative);
+    def.mean_trees = reader.required("mean_trees").number(Bound::non_negative);
+    def.spread = reader.required("spread").number(Bound::positive);
+    def.radius = readRadius(reader.required("radius"));
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    def.min_gap = readMinGap(reader);
+    const double margin = 5.0 * def.spread;
+    const double dilated_area = (def.region.width() + 2 * margin) * (def.region.height() + 2 * margin);
+    requireFeasibleCount(field, def.parent_lambda * def.mean_trees * dilated_area);
+    const auto trees = clusterForest(def);
+    out.insert(out.end(), trees.begin(), trees.end());
+  }
+}
+
+fs::path resolveInclude(const Field& field, const std::string& name) {
+  const fs::path relative = fs::path(field.file()).parent_path() / name;
+  std::error_code error;
+  if (fs::path(name).is_absolute() && fs::is_regular_file(name, error)) return name;
+  if (fs::is_regular_file(relative, error)) return relative;
+  if (fs::is_regular_file(libraryDir() / name, error)) return libraryDir() / name;
+  field.fail("cannot find the layout file '" + name + "' (looked beside this file and in the "
+             "scenario library)");
+}
+
+}  // namespace
+
+void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
+                   Json& effective, std::vector<std::string>& include_stack) {
+  for (const Field& element : list.elements()) {
+    Json element_out = Json::object();
+    const Field item(element.json(), element.file(), element.path(), &element_out);
+    ObjectReader reader = item.object();
+    if (reader.has("include")) {
+      const Field name_field = reader.required("include");
+      const fs::path path = resolveInclude(name_field, name_field.string());
+      const std::string canonical = fs::weakly_canonical(path).string();
+      if (std::find(include_stack.begin(), include_stack.end(), canonical) != include_stack.end()) {
+        name_field.fail("include cycle: '" + path.string() + "' is already being read");
+      }
+      if (static_cast<int>(include_stack.size()) > kMaxIncludeDepth) {
+        name_field.fail("includes nested more than 16 deep");
+      }
+      reader.finish();
+      const Json document = readJsonFile(path.string(), element.file());
+      const bool wrapped = document.is_object();
+      if (wrapped) {
+        ObjectReader layout = Field(document, path.string(), "", nullptr).object();
+        layout.optional("description");
+        layout.required("occluders");
+        layout.finish();
+      }
+      const Json& inner = wrapped ? document.at("occluders") : document;
+      include_stack.push_back(canonical);
+      readOccluders(Field(inner, path.string(), wrapped ? "occluders" : "", nullptr), aoi, trees,
+                    effective, include_stack);
+      include_stack.pop_back();
+      continue;
+    }
+    static const std::vector<std::string> kTypes{"disc", "polygon", "poisson", "grid", "cluster"};
+    readGenerator(kTypes[reader.required("type").choice(kTypes)], reader, aoi, trees);
+    reader.finish();
+    effective.push_back(element_out);
+  }
+}
+
+}  // namespace canopy::scenarios::internal

@@ -1,0 +1,155 @@
+#include "scenarios/loader.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "scenarios/internal/sections.h"
+
+namespace canopy::scenarios {
+namespace fs = std::filesystem;
+using internal::Field;
+using internal::Json;
+using internal::ObjectReader;
+
+namespace {
+
+Aabb readAoi(ObjectReader& root) {
+  const Field field = root.required("aoi");
+  const std::vector<Field> v = field.elements(4, 4);
+  const Aabb aoi{Vec2(v[0].number(), v[1].number()), Vec2(v[2].number(), v[3].number())};
+  if (!(aoi.hi.x() > aoi.lo.x() && aoi.hi.y() > aoi.lo.y())) {
+    field.fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
+  }
+  return aoi;
+}
+
+void readClock(ObjectReader& root, ScenarioSpec& spec) {
+  const auto field = root.optional("clock");
+  if (!field) {
+    root.field().out()->operator[]("clock") = Json{{"dt", spec.dt}, {"duration", spec.duration}};
+    return;
+  }
+  ObjectReader clock = field->object();
+  spec.dt = clock.number("dt", spec.dt, internal::Bound::positive);
+  spec.duration = clock.number("duration", spec.duration, internal::Bound::positive);
+  clock.finish();
+  if (spec.duration < spec.dt) {
+    throw ScenarioError(field->file(), field->path() + ".duration",
+                        "expected a duration of at least one step (dt = " +
+                            std::to_string(spec.dt) + " s)");
+  }
+  if (spec.duration / spec.dt > 1e7) {
+    throw ScenarioError(field->file(), field->path() + ".duration",
+                        "expected at most 10 million steps of dt");
+  }
+}
+
+// Labels: "tree" first, then the targets' labels in order of first appearance, then clutter's.
+void resolveLabels(const std::vector<std::string>& target_labels, const std::string& clutter_label,
+                   ScenarioSpec& spec) {
+  spec.labels = {"tree"};
+  auto idOf = [&spec](const std::string& label) {
+    const auto it = std::find(spec.labels.begin(), spec.labels.end(), label);
+    if (it != spec.labels.end()) return static_cast<sensing::LabelId>(it - spec.labels.begin());
+    spec.labels.push_back(label);
+    return static_cast<sensing::LabelId>(spec.labels.size() - 1);
+  };
+  for (std::size_t t = 0; t < spec.targets.size(); ++t) spec.targets[t].label = idOf(target_labels[t]);
+  spec.sensing.clutter_label = idOf(clutter_label);
+}
+
+ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOptions& options) {
+  for (const std::string& assignment : options.overrides) internal::applyOverride(document, assignment);
+
+  ScenarioSpec spec;
+  spec.file = file;
+  Json effective = Json::object();
+  ObjectReader root = Field(document, file, "", &effective).object();
+
+  spec.name = root.string("name", fs::path(file).stem().string());
+  spec.description = root.string("description", "");
+  if (options.seed) {
+    spec.seed = *options.seed;
+    effective["seed"] = spec.seed;
+    root.optional("seed");  // accepted, replaced by the command line
+  } else if (auto seed = root.optional("seed")) {
+    spec.seed = seed->unsignedInteger();
+  } else {
+    effective["seed"] = spec.seed;
+  }
+  spec.aoi = readAoi(root);
+  readClock(root, spec);
+  const std::string clutter_label = internal::readSensing(root, spec);
+  internal::readUavs(root, spec);
+  const std::vector<std::string> target_labels = internal::readTargets(root, spec);
+
+  Json occluders_effective = Json::array();
+  if (auto list = root.optional("occluders")) {
+    std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
+    internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
+  }
+  effective["occluders"] = occluders_effective;
+
+  resolveLabels(target_labels, clutter_label, spec);
+  internal::readTracking(root, spec);
+  internal::readFusion(root, spec);
+  internal::readPlanner(root, spec);
+  internal::readAnalysis(root, spec);
+  root.finish();
+
+  spec.effective_config = effective.dump(2);
+  return spec;
+}
+
+}  // namespace
+
+ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
+                              const LoadOptions& options) {
+  return loadDocument(internal::parseJson(text, file), file, options);
+}
+
+ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options) {
+  const fs::path path = resolveScenario(scenario);
+  return loadDocument(internal::readJsonFile(path.string()), path.string(), options);
+}
+
+fs::path libraryDir() {
+  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) return dir;
+  return fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library";
+}
+
+std::vector<std::string> libraryScenarios() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(libraryDir(), error)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".json") {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+fs::path resolveScenario(const std::string& scenario) {
+  std::error_code error;
+  if (fs::is_regular_file(scenario, error)) return scenario;
+  for (const fs::path& candidate : {libraryDir() / scenario, libraryDir() / (scenario + ".json")}) {
+    if (fs::is_regular_file(candidate, error)) return candidate;
+  }
+  throw ScenarioError(scenario, "", "no such scenario file, and no built-in scenario of that name "
+                                    "(see `canopy list`)");
+}
+
+std::vector<world::TreeDef> loadLayout(const std::string& path) {
+  Json document = internal::readJsonFile(path);
+  Json list = document.is_object() && document.contains("occluders") ? document["occluders"] : document;
+  std::vector<world::TreeDef> trees;
+  Json effective = Json::array();
+  std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(path)).string()};
+  const Aabb everywhere{Vec2::Constant(-1e9), Vec2::Constant(1e9)};
+  internal::readOccluders(Field(list, path, "occluders", nullptr), everywhere, trees, effective,
+                          include_stack);
+  return trees;
+}
+
+}  // namespace canopy::scenarios

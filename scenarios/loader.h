@@ -1,0 +1,39 @@
+#pragma once
+// Loading a scenario: JSON (comments allowed) → --set overrides → validation → ScenarioSpec.
+// Every problem is a ScenarioError naming the file, the field path and what was expected.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scenarios/spec.h"
+
+namespace canopy::scenarios {
+
+struct LoadOptions {
+  std::vector<std::string> overrides;  // "dotted.path=value", value parsed as JSON or else a string
+  std::optional<std::uint64_t> seed;   // replaces the file's seed
+};
+
+/// scenario: a path to a file, or the name of a file in the scenario library (with or without
+/// ".json").
+ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options = {});
+
+/// Loads from text; `file` names it in errors and anchors relative includes.
+ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
+                              const LoadOptions& options = {});
+
+/// The directory of built-in scenarios: $CANOPY_LIBRARY_DIR, or scenarios/library in the source
+/// tree canopy was built from.
+std::filesystem::path libraryDir();
+/// Names of the built-in scenarios, sorted.
+std::vector<std::string> libraryScenarios();
+/// A path for `scenario` (existing file, or library name); a ScenarioError when neither exists.
+std::filesystem::path resolveScenario(const std::string& scenario);
+
+/// The occluders a layout file describes (the same grammar as a scenario's "occluders" list),
+/// generated: for tools and tests.
+std::vector<world::TreeDef> loadLayout(const std::string& path);
+
+}  // namespace canopy::scenarios

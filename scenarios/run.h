@@ -1,0 +1,30 @@
+#pragma once
+// `canopy run`: a scenario to manifest.json, record.jsonl and summary.json in one directory.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "scenarios/simulation.h"
+#include "scenarios/spec.h"
+
+namespace canopy::scenarios {
+
+struct RunOptions {
+  std::filesystem::path out_dir;                   // created if missing
+  std::string command_line;                        // recorded in the manifest
+  std::function<void(const Simulation&)> on_step;  // e.g. the renderer; may be empty
+};
+
+struct RunResult {
+  int steps = 0;
+  double wall_seconds = 0.0;
+  std::string summary_json;
+};
+
+/// Runs the scenario to its end and writes the outputs; throws std::runtime_error on I/O failure.
+RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options);
+
+/// manifest.json's content: version, scenario, hash of the effective config, seed, config.
+std::string manifestJson(const ScenarioSpec& spec, const std::string& command_line);
+
+}  // namespace canopy::scenarios

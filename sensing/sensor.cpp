@@ -1,0 +1,67 @@
+#include "sensing/sensor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace canopy::sensing {
+
+Footprint footprintOf(const world::WorldSnapshot& truth, int uav, const SensorDef& sensor) {
+  const world::UavState& state = truth.uavs[uav];
+  return Footprint::place(sensor.footprint, state.position, state.yaw);
+}
+
+void sense(const world::World& world, const world::WorldSnapshot& truth, int uav,
+           const SensorDef& sensor, const SensingConfig& config,
+           std::span<const LabelId> target_labels, RandomStream& rng, SenseScratch& scratch,
+           Scan& out) {
+  out.clear();
+  out.uav = uav;
+  const Vec2 p_i = truth.uavs[uav].position;
+  out.sensor_position = p_i;
+  const Footprint footprint = footprintOf(truth, uav, sensor);
+
+  scratch.candidates.clear();
+  world.queryAabb(footprint.bounds(), scratch.candidates);  // sorted: UAVs, targets, trees
+
+  // Targets: V_{i,k} = {t : χ_t ∈ φ_i ∧ χ_t ∉ W} (eq. 3), then detection and noise (eq. 2).
+  for (const world::BodyRef& ref : scratch.candidates) {
+    if (ref.kind != world::BodyKind::target) continue;
+    const Vec2& chi = truth.targets[ref.index].position;
+    if (!footprint.contains(chi)) continue;
+    out.in_footprint.push_back(ref.index);
+    if (isOccluded(world, p_i, chi, config.occlusion_model)) continue;
+    out.visible.push_back(ref.index);
+    if (!rng.bernoulli(config.p_detect)) continue;
+    const Mat2 R_truth = rangeBearingCovariance(chi, p_i, sensor.quality);
+    const Vec2 z = chi + rng.gaussian(config.truth_noise_scale * R_truth);
+    out.observations.push_back(
+        {target_labels[ref.index], z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0,
+         ref.index});
+  }
+
+  // Clutter: Poisson count, uniform over the footprint.
+  const int clutter = rng.poisson(config.clutter_rate);
+  for (int c = 0; c < clutter; ++c) {
+    const double u = rng.uniform();
+    const Vec2 z = footprint.pointFromUnitSquare(u, rng.uniform());
+    out.observations.push_back(
+        {config.clutter_label, z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0, -1});
+  }
+
+  // Trees (SOO): observed when the crown's centre is in φ_i; exempt from occlusion.
+  const double radius_variance = config.tree_radius_sigma * config.tree_radius_sigma;
+  for (const world::BodyRef& ref : scratch.candidates) {
+    if (ref.kind != world::BodyKind::tree) continue;
+    const world::TreeDef& tree = world.trees()[ref.index];
+    if (!footprint.contains(tree.centre)) continue;
+    const Mat2 R_truth = rangeBearingCovariance(tree.centre, p_i, sensor.quality);
+    const Vec2 z = tree.centre + rng.gaussian(config.truth_noise_scale * R_truth);
+    const double radius =
+        std::max(0.0, tree.radius + config.tree_radius_sigma * std::sqrt(config.truth_noise_scale) *
+                                        rng.normal());
+    out.observations.push_back({kTreeLabel, z, rangeBearingCovariance(z, p_i, sensor.quality),
+                                radius, radius_variance, ref.index});
+  }
+}
+
+}  // namespace canopy::sensing

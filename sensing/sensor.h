@@ -1,0 +1,48 @@
+#pragma once
+// One UAV's scan: footprint ∩ bodies (Box2D AABB query), visibility, noisy labelled observations.
+#include <span>
+#include <vector>
+
+#include "core/random.h"
+#include "sensing/footprint.h"
+#include "sensing/noise.h"
+#include "sensing/observation.h"
+#include "sensing/visibility.h"
+#include "world/snapshot.h"
+#include "world/world.h"
+
+namespace canopy::sensing {
+
+/// Team-wide sensing settings (algorithms.md §3).
+struct SensingConfig {
+  OcclusionModel occlusion_model = OcclusionModel::canopy;
+  double p_detect = 1.0;           // probability that a visible target is detected
+  double clutter_rate = 0.0;       // expected false detections per scan (Poisson)
+  LabelId clutter_label = 1;       // label given to clutter
+  double truth_noise_scale = 1.0;  // noise is drawn from N(0, scale · R)
+  double tree_radius_sigma = 0.1;  // m, σ of the measured crown radius
+};
+
+/// One UAV's camera.
+struct SensorDef {
+  FootprintDef footprint;
+  SensorQuality quality;
+};
+
+/// Buffers reused from scan to scan so that sensing does not allocate in steady state.
+struct SenseScratch {
+  std::vector<world::BodyRef> candidates;
+};
+
+/// Scans for UAV `uav` at the snapshot's step and writes the result into `out` (cleared first).
+/// target_labels[t] is target t's label. All draws come from `rng` (the UAV's sensing stream),
+/// in a fixed order: per visible target (ascending) detection then noise; clutter; per tree.
+void sense(const world::World& world, const world::WorldSnapshot& truth, int uav,
+           const SensorDef& sensor, const SensingConfig& config,
+           std::span<const LabelId> target_labels, RandomStream& rng, SenseScratch& scratch,
+           Scan& out);
+
+/// The footprint of UAV `uav` at the snapshot.
+Footprint footprintOf(const world::WorldSnapshot& truth, int uav, const SensorDef& sensor);
+
+}  // namespace canopy::sensing

@@ -1,0 +1,131 @@
+#include "world/tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace canopy::world {
+namespace {
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+}  // namespace
+
+TreeDef TreeDef::disc(const Vec2& centre, double radius) {
+  TreeDef tree;
+  tree.shape = TreeShape::disc;
+  tree.centre = centre;
+  tree.radius = radius;
+  return tree;
+}
+
+double signedArea(const std::vector<Vec2>& vertices) {
+  double twice_area = 0.0;  // shoelace formula
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    twice_area += cross(vertices[i], vertices[(i + 1) % vertices.size()]);
+  }
+  return 0.5 * twice_area;
+}
+
+bool isStrictlyConvex(const std::vector<Vec2>& vertices) {
+  const std::size_t n = vertices.size();
+  if (n < 3) return false;
+  int sign = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 e1 = vertices[(i + 1) % n] - vertices[i];
+    const Vec2 e2 = vertices[(i + 2) % n] - vertices[(i + 1) % n];
+    const double turn = cross(e1, e2);
+    if (turn == 0.0) return false;
+    const int s = turn > 0.0 ? 1 : -1;
+    if (sign != 0 && s != sign) return false;
+    sign = s;
+  }
+  // Turning the same way at every vertex could still wind twice; the angles must sum to 2π.
+  double total_turn = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 e1 = vertices[(i + 1) % n] - vertices[i];
+    const Vec2 e2 = vertices[(i + 2) % n] - vertices[(i + 1) % n];
+    total_turn += std::atan2(cross(e1, e2), e1.dot(e2));
+  }
+  return std::abs(std::abs(total_turn) - 2.0 * std::numbers::pi) < 1e-6;
+}
+
+TreeDef TreeDef::polygon(std::vector<Vec2> vertices) {
+  if (signedArea(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
+  const double area = signedArea(vertices);
+  Vec2 centroid = Vec2::Zero();  // c = Σ (v_i + v_{i+1}) cross(v_i, v_{i+1}) / (6 A)
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Vec2& a = vertices[i];
+    const Vec2& b = vertices[(i + 1) % vertices.size()];
+    centroid += (a + b) * cross(a, b);
+  }
+  TreeDef tree;
+  tree.shape = TreeShape::polygon;
+  tree.centre = centroid / (6.0 * area);
+  tree.radius = std::sqrt(area / std::numbers::pi);  // disc of equal area
+  tree.vertices = std::move(vertices);
+  return tree;
+}
+
+bool strictlyInside(const TreeDef& tree, const Vec2& p) {
+  if (tree.shape == TreeShape::disc) return (p - tree.centre).squaredNorm() < tree.radius * tree.radius;
+  const std::size_t n = tree.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = tree.vertices[i];
+    const Vec2& b = tree.vertices[(i + 1) % n];
+    if (cross(b - a, p - a) <= 0.0) return false;  // on or right of a CCW edge: not inside
+  }
+  return true;
+}
+
+double segmentEntry(const TreeDef& tree, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  if (tree.shape == TreeShape::disc) {
+    // |a + s d − c|² = r²  →  (d·d) s² + 2 (d·f) s + (f·f − r²) = 0 with f = a − c.
+    const Vec2 f = a - tree.centre;
+    const double r2 = tree.radius * tree.radius;
+    const double c = f.squaredNorm() - r2;
+    if (c < 0.0) return 0.0;  // a strictly inside
+    const double dd = d.squaredNorm();
+    if (dd == 0.0) return -1.0;
+    const double bq = d.dot(f);
+    const double disc = bq * bq - dd * c;
+    if (disc <= 0.0) return -1.0;  // misses or only touches the rim
+    const double s = (-bq - std::sqrt(disc)) / dd;
+    return (s >= 0.0 && s < 1.0) ? s : -1.0;
+  }
+  // Cyrus–Beck clipping against the edges' half-planes cross(e, x − v) > 0.
+  double s_in = 0.0, s_out = 1.0;
+  const std::size_t n = tree.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& v = tree.vertices[i];
+    const Vec2 e = tree.vertices[(i + 1) % n] - v;
+    const double start = cross(e, a - v);  // > 0 inside this half-plane
+    const double rate = cross(e, d);
+    if (rate == 0.0) {
+      if (start <= 0.0) return -1.0;  // parallel and outside (or on) this edge
+      continue;
+    }
+    const double s = -start / rate;  // where the segment meets the edge's line
+    if (rate > 0.0) {
+      s_in = std::max(s_in, s);
+    } else {
+      s_out = std::min(s_out, s);
+    }
+    if (s_in >= s_out) return -1.0;
+  }
+  return s_in;
+}
+
+Aabb bounds(const TreeDef& tree) {
+  if (tree.shape == TreeShape::disc) {
+    const Vec2 r(tree.radius, tree.radius);
+    return {tree.centre - r, tree.centre + r};
+  }
+  Aabb box{tree.vertices.front(), tree.vertices.front()};
+  for (const Vec2& v : tree.vertices) {
+    box.lo = box.lo.cwiseMin(v);
+    box.hi = box.hi.cwiseMax(v);
+  }
+  return box;
+}
+
+}  // namespace canopy::world

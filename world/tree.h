@@ -1,0 +1,41 @@
+#pragma once
+// Tree occluders (SOO): a crown that hides what is under it. Exact geometry in double; Box2D
+// only supplies candidates.
+#include <vector>
+
+#include "core/types.h"
+
+namespace canopy::world {
+
+enum class TreeShape { disc, polygon };
+
+/// One tree crown: a disc (centre, radius) or a convex polygon (counter-clockwise vertices).
+struct TreeDef {
+  TreeShape shape = TreeShape::disc;
+  Vec2 centre = Vec2::Zero();  // m; for a polygon, its area centroid
+  double radius = 1.0;         // m; for a polygon, the radius of the disc of equal area
+  std::vector<Vec2> vertices;  // polygon only, counter-clockwise, convex, 3..8 vertices (m)
+
+  static TreeDef disc(const Vec2& centre, double radius);
+  /// vertices: convex, either orientation; stored counter-clockwise with centroid and radius set.
+  static TreeDef polygon(std::vector<Vec2> vertices);
+};
+
+/// True when p is strictly inside the crown (a point on its rim is not hidden).
+bool strictlyInside(const TreeDef& tree, const Vec2& p);
+
+/// The fraction s ∈ [0, 1] of the segment a → b at which it first enters the crown's interior,
+/// or a negative number when the segment does not cross the interior (touching the rim does not
+/// count). s = 0 when a is inside.
+double segmentEntry(const TreeDef& tree, const Vec2& a, const Vec2& b);
+
+/// The smallest axis-aligned box holding the crown.
+Aabb bounds(const TreeDef& tree);
+
+/// Signed area of a polygon (positive when counter-clockwise).
+double signedArea(const std::vector<Vec2>& vertices);
+
+/// True when the polygon is strictly convex (no three collinear vertices) in either orientation.
+bool isStrictlyConvex(const std::vector<Vec2>& vertices);
+
+}  // namespace canopy::world

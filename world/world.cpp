@@ -1,0 +1,273 @@
+#include "world/world.h"
+
+#include <box2d/box2d.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/angles.h"
+
+namespace canopy::world {
+namespace {
+
+constexpr float kUavBodyRadius = 0.25f;     // m, only gives the body a broad-phase box
+constexpr float kTargetBodyRadius = 0.05f;  // m, likewise
+// Keep each Box2D sub-step well inside its per-step motion limits (b2_maxTranslation = 2 m,
+// b2_maxRotation = π/2), beyond which Box2D silently scales velocities down.
+constexpr double kMaxSubstepTranslation = 0.5 * b2_maxTranslation;  // m
+constexpr double kMaxSubstepRotation = 0.5 * b2_maxRotation;        // rad
+
+// A fixture's user data encodes our id: (index << 2) | (kind + 1), never 0.
+uintptr_t encode(BodyKind kind, int index) {
+  return (static_cast<uintptr_t>(index) << 2) | (static_cast<uintptr_t>(kind) + 1);
+}
+BodyRef decode(uintptr_t data) {
+  return {static_cast<BodyKind>((data & 3u) - 1), static_cast<int>(data >> 2)};
+}
+
+b2Vec2 toB2(const Vec2& v) { return {static_cast<float>(v.x()), static_cast<float>(v.y())}; }
+Vec2 fromB2(const b2Vec2& v) { return {v.x, v.y}; }
+
+b2FixtureDef nonCollidingFixture(const b2Shape* shape, BodyKind kind, int index) {
+  b2FixtureDef fixture;
+  fixture.shape = shape;
+  fixture.density = 0.0f;
+  fixture.isSensor = true;
+  fixture.filter.maskBits = 0;  // nothing collides
+  fixture.userData.pointer = encode(kind, index);
+  return fixture;
+}
+
+// Collects every fixture whose broad-phase box overlaps the query box.
+class CollectCallback final : public b2QueryCallback {
+ public:
+  explicit CollectCallback(std::vector<BodyRef>& out) : out_(out) {}
+  bool ReportFixture(b2Fixture* fixture) override {
+    out_.push_back(decode(fixture->GetUserData().pointer));
+    return true;
+  }
+
+ private:
+  std::vector<BodyRef>& out_;
+};
+
+// Stops at the first tree that strictly contains the point.
+class PointInTreeCallback final : public b2QueryCallback {
+ public:
+  PointInTreeCallback(const std::vector<TreeDef>& trees, const Vec2& p) : trees_(trees), p_(p) {}
+  bool ReportFixture(b2Fixture* fixture) override {
+    const BodyRef ref = decode(fixture->GetUserData().pointer);
+    if (ref.kind == BodyKind::tree && strictlyInside(trees_[ref.index], p_)) {
+      hit = ref.index;
+      return false;
+    }
+    return true;
+  }
+  std::optional<int> hit;
+
+ private:
+  const std::vector<TreeDef>& trees_;
+  Vec2 p_;
+};
+
+// Broad-phase ray cast: candidates along the segment, exact entry fraction in double; the ray is
+// clipped at the nearest entry found so far.
+class FirstTreeOnSegment {
+ public:
+  FirstTreeOnSegment(const b2BroadPhase& broad_phase, const std::vector<TreeDef>& trees,
+                     const Vec2& a, const Vec2& b)
+      : broad_phase_(broad_phase), trees_(trees), a_(a), b_(b) {}
+  float RayCastCallback(const b2RayCastInput& input, int32 proxy_id) {
+    const auto* proxy = static_cast<const b2FixtureProxy*>(broad_phase_.GetUserData(proxy_id));
+    const BodyRef ref = decode(proxy->fixture->GetUserData().pointer);
+    if (ref.kind != BodyKind::tree) return input.maxFraction;
+    const double s = segmentEntry(trees_[ref.index], a_, b_);
+    if (s >= 0.0 && s < best_fraction) {
+      best_fraction = s;
+      hit = ref.index;
+    }
+    // Keep searching up to (slightly past) the best entry; broad-phase boxes are float.
+    return hit ? std::min(1.0f, static_cast<float>(best_fraction) + 1e-4f) : input.maxFraction;
+  }
+  std::optional<int> hit;
+  double best_fraction = 2.0;
+
+ private:
+  const b2BroadPhase& broad_phase_;
+  const std::vector<TreeDef>& trees_;
+  Vec2 a_, b_;
+};
+
+}  // namespace
+
+struct World::Box2d {
+  b2World world{b2Vec2(0.0f, 0.0f)};
+  std::vector<b2Body*> uavs;
+  std::vector<b2Body*> targets;
+  b2Body* forest = nullptr;  // one static body holding every tree as a fixture
+};
+
+World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()) {
+  b2World& w = b2_->world;
+  w.SetAllowSleeping(false);
+  w.SetContinuousPhysics(false);
+
+  b2CircleShape uav_shape;
+  uav_shape.m_radius = kUavBodyRadius;
+  for (int i = 0; i < static_cast<int>(def_.uavs.size()); ++i) {
+    b2BodyDef body;
+    body.type = b2_kinematicBody;
+    body.position = toB2(def_.uavs[i].start);
+    body.angle = static_cast<float>(def_.uavs[i].yaw);
+    b2Body* b = w.CreateBody(&body);
+    const b2FixtureDef fixture = nonCollidingFixture(&uav_shape, BodyKind::uav, i);
+    b->CreateFixture(&fixture);
+    b2_->uavs.push_back(b);
+  }
+
+  b2CircleShape target_shape;
+  target_shape.m_radius = kTargetBodyRadius;
+  for (int t = 0; t < static_cast<int>(def_.targets.size()); ++t) {
+    b2BodyDef body;
+    body.type = b2_kinematicBody;
+    body.position = toB2(def_.targets[t].path.positionAt(0.0));
+    b2Body* b = w.CreateBody(&body);
+    const b2FixtureDef fixture = nonCollidingFixture(&target_shape, BodyKind::target, t);
+    b->CreateFixture(&fixture);
+    b2_->targets.push_back(b);
+  }
+
+  b2BodyDef forest_def;
+  forest_def.type = b2_staticBody;
+  b2_->forest = w.CreateBody(&forest_def);
+  for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
+    const TreeDef& tree = def_.trees[k];
+    if (tree.shape == TreeShape::disc) {
+      b2CircleShape circle;
+      circle.m_p = toB2(tree.centre);
+      circle.m_radius = static_cast<float>(tree.radius);
+      const b2FixtureDef fixture = nonCollidingFixture(&circle, BodyKind::tree, k);
+      b2_->forest->CreateFixture(&fixture);
+    } else {
+      std::vector<b2Vec2> vertices;
+      for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
+      b2PolygonShape polygon;
+      polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+      const b2FixtureDef fixture = nonCollidingFixture(&polygon, BodyKind::tree, k);
+      b2_->forest->CreateFixture(&fixture);
+    }
+  }
+
+  commands_.assign(def_.uavs.size(), Vec2::Zero());
+  uav_velocity_.assign(def_.uavs.size(), Vec2::Zero());
+  target_velocity_.assign(def_.targets.size(), Vec2::Zero());
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+void World::commandUav(int uav, const Vec2& velocity) {
+  const double v_max = def_.uavs[uav].v_max;
+  const double speed = velocity.norm();
+  commands_[uav] = speed > v_max ? Vec2(velocity * (v_max / speed)) : velocity;  // |v| ≤ v_max
+}
+
+void World::step(double dt) {
+  double max_translation = 0.0;  // m over this step, any body
+  double max_rotation = 0.0;     // rad over this step, any UAV
+
+  for (std::size_t t = 0; t < b2_->targets.size(); ++t) {
+    b2Body* body = b2_->targets[t];
+    // Aim at the scripted position at t + dt from where the body actually is, so that float
+    // rounding never accumulates: the target passes its waypoints at the scripted times.
+    const Vec2 goal = def_.targets[t].path.positionAt(time_ + dt);
+    const Vec2 v = (goal - fromB2(body->GetPosition())) / dt;
+    body->SetLinearVelocity(toB2(v));
+    target_velocity_[t] = v;
+    max_translation = std::max(max_translation, v.norm() * dt);
+  }
+
+  for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
+    b2Body* body = b2_->uavs[i];
+    const Vec2& v = commands_[i];
+    body->SetLinearVelocity(toB2(v));
+    uav_velocity_[i] = v;
+    double omega = 0.0;  // rad/s
+    if (def_.uavs[i].yaw_mode == YawMode::velocity && v.squaredNorm() > 1e-12) {
+      const double heading = std::atan2(v.y(), v.x());
+      omega = wrapAngle(heading - body->GetAngle()) / dt;
+    }
+    body->SetAngularVelocity(static_cast<float>(omega));
+    max_translation = std::max(max_translation, v.norm() * dt);
+    max_rotation = std::max(max_rotation, std::abs(omega) * dt);
+  }
+
+  const int substeps = std::max({1, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
+                                 static_cast<int>(std::ceil(max_rotation / kMaxSubstepRotation))});
+  const float h = static_cast<float>(dt / substeps);
+  for (int s = 0; s < substeps; ++s) b2_->world.Step(h, 1, 1);
+
+  time_ += dt;
+  ++step_;
+}
+
+WorldSnapshot World::snapshot() const {
+  WorldSnapshot snap;
+  snap.step = step_;
+  snap.time = time_;
+  snap.uavs.reserve(b2_->uavs.size());
+  for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
+    const b2Body* body = b2_->uavs[i];
+    snap.uavs.push_back({fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle())});
+  }
+  snap.targets.reserve(b2_->targets.size());
+  for (std::size_t t = 0; t < b2_->targets.size(); ++t) {
+    snap.targets.push_back({fromB2(b2_->targets[t]->GetPosition()), target_velocity_[t]});
+  }
+  return snap;
+}
+
+void World::queryAabb(const Aabb& box, std::vector<BodyRef>& out) const {
+  const std::size_t first = out.size();
+  CollectCallback callback(out);
+  b2AABB query;
+  query.lowerBound = toB2(box.lo);
+  query.upperBound = toB2(box.hi);
+  b2_->world.QueryAABB(&callback, query);
+  // The broad-phase order depends on the tree's history; sort so callers see a stable order.
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+            [](const BodyRef& x, const BodyRef& y) {
+              return x.kind != y.kind ? x.kind < y.kind : x.index < y.index;
+            });
+}
+
+bool World::insideOccluder(const Vec2& p) const {
+  PointInTreeCallback callback(def_.trees, p);
+  b2AABB query;
+  query.lowerBound = toB2(p);
+  query.upperBound = toB2(p);
+  b2_->world.QueryAABB(&callback, query);
+  return callback.hit.has_value();
+}
+
+std::optional<int> World::firstOccluderOnSegment(const Vec2& a, const Vec2& b) const {
+  if ((b - a).squaredNorm() < 1e-12) {  // Box2D's ray cast needs a non-zero length
+    PointInTreeCallback callback(def_.trees, a);
+    b2AABB query;
+    query.lowerBound = toB2(a);
+    query.upperBound = toB2(a);
+    b2_->world.QueryAABB(&callback, query);
+    return callback.hit;
+  }
+  const b2BroadPhase& broad_phase = b2_->world.GetContactManager().m_broadPhase;
+  FirstTreeOnSegment callback(broad_phase, def_.trees, a, b);
+  b2RayCastInput input;
+  input.p1 = toB2(a);
+  input.p2 = toB2(b);
+  input.maxFraction = 1.0f;
+  broad_phase.RayCast(&callback, input);
+  return callback.hit;
+}
+
+}  // namespace canopy::world

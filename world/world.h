@@ -1,0 +1,66 @@
+#pragma once
+// The Box2D world: UAVs and targets as kinematic bodies, trees as fixtures of one static body.
+// The only code in canopy that includes Box2D; nothing here collides, Box2D serves as the
+// integrator and the spatial database (broad-phase AABB queries and ray casts).
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/types.h"
+#include "world/defs.h"
+#include "world/snapshot.h"
+
+namespace canopy::world {
+
+enum class BodyKind { uav, target, tree };
+
+/// Our own id of a body: its kind and its index in the WorldDef's list.
+struct BodyRef {
+  BodyKind kind = BodyKind::target;
+  int index = 0;
+  friend bool operator==(const BodyRef&, const BodyRef&) = default;
+};
+
+class World {
+ public:
+  explicit World(WorldDef def);
+  ~World();
+  World(World&&) noexcept;
+  World& operator=(World&&) noexcept;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Sets UAV uav's velocity command for the next steps, clamped to |v| ≤ v_max (m/s).
+  void commandUav(int uav, const Vec2& velocity);
+  const Vec2& commandedVelocity(int uav) const { return commands_[uav]; }
+
+  /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
+  /// commanded velocity. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits.
+  void step(double dt);
+
+  WorldSnapshot snapshot() const;
+  double time() const { return time_; }
+  int stepIndex() const { return step_; }
+  const WorldDef& def() const { return def_; }
+  const std::vector<TreeDef>& trees() const { return def_.trees; }
+
+  /// Bodies whose Box2D fixture bounds overlap box (a superset: callers test exact geometry).
+  /// Appends to out, in a deterministic order.
+  void queryAabb(const Aabb& box, std::vector<BodyRef>& out) const;
+  /// True when p is strictly inside some tree crown.
+  bool insideOccluder(const Vec2& p) const;
+  /// The tree the segment a → b enters first (nearest a), or none.
+  std::optional<int> firstOccluderOnSegment(const Vec2& a, const Vec2& b) const;
+
+ private:
+  struct Box2d;  // Box2D objects, hidden from the header
+  WorldDef def_;
+  std::unique_ptr<Box2d> b2_;
+  std::vector<Vec2> commands_;     // clamped UAV velocity commands (m/s)
+  std::vector<Vec2> uav_velocity_;     // last applied (m/s)
+  std::vector<Vec2> target_velocity_;  // last applied (m/s)
+  double time_ = 0.0;
+  int step_ = 0;
+};
+
+}  // namespace canopy::world
