@@ -1,0 +1,70 @@
+#include "agents/occlusion_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace canopy::agents {
+namespace {
+constexpr int kMaxCells = 1 << 20;  // bounds the index's memory for sparse, wide maps
+}
+
+OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move(trees)) {
+  if (trees_.empty()) return;
+  bounds_ = world::bounds(trees_.front());
+  double max_extent = 0.0;
+  for (const world::TreeDef& tree : trees_) {
+    const Aabb box = world::bounds(tree);
+    bounds_.lo = bounds_.lo.cwiseMin(box.lo);
+    bounds_.hi = bounds_.hi.cwiseMax(box.hi);
+    max_extent = std::max({max_extent, box.width(), box.height()});
+  }
+  // Cells about one crown wide keep a lookup to a handful of trees.
+  cell_ = std::max({max_extent, 1e-3, std::sqrt(bounds_.area() / kMaxCells)});
+  cols_ = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell_)));
+  rows_ = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell_)));
+
+  // Counting sort of (cell, tree) pairs into CSR arrays: each tree goes into every cell its box
+  // touches.
+  auto forEachCell = [this](const Aabb& box, auto&& visit) {
+    const int c0 = std::clamp(static_cast<int>((box.lo.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
+    const int c1 = std::clamp(static_cast<int>((box.hi.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
+    const int r0 = std::clamp(static_cast<int>((box.lo.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
+    const int r1 = std::clamp(static_cast<int>((box.hi.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) visit(r * cols_ + c);
+    }
+  };
+  cell_start_.assign(static_cast<std::size_t>(cols_) * rows_ + 1, 0);
+  for (const world::TreeDef& tree : trees_) {
+    forEachCell(world::bounds(tree), [this](int cell) { ++cell_start_[cell + 1]; });
+  }
+  for (std::size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  cell_trees_.resize(cell_start_.back());
+  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (int k = 0; k < static_cast<int>(trees_.size()); ++k) {
+    forEachCell(world::bounds(trees_[k]), [&](int cell) { cell_trees_[fill[cell]++] = k; });
+  }
+}
+
+OcclusionMap OcclusionMap::fromEstimates(const std::vector<TreeEstimate>& trees, double min_radius) {
+  std::vector<world::TreeDef> discs;
+  discs.reserve(trees.size());
+  for (const TreeEstimate& tree : trees) {
+    const auto& x = tree.belief.x;  // (cx, cy, r)
+    discs.push_back(world::TreeDef::disc(Vec2(x(0), x(1)), std::max(min_radius, x(2))));
+  }
+  return OcclusionMap(std::move(discs));
+}
+
+bool OcclusionMap::occludes(const Vec2& p) const {
+  if (trees_.empty() || !bounds_.contains(p)) return false;
+  const int c = std::min(static_cast<int>((p.x() - bounds_.lo.x()) / cell_), cols_ - 1);
+  const int r = std::min(static_cast<int>((p.y() - bounds_.lo.y()) / cell_), rows_ - 1);
+  const int cell = r * cols_ + c;
+  for (int i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
+    if (world::strictlyInside(trees_[cell_trees_[i]], p)) return true;
+  }
+  return false;
+}
+
+}  // namespace canopy::agents

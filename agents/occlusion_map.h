@@ -1,0 +1,34 @@
+#pragma once
+// An occlusion map for planning: a set of tree crowns with a uniform-grid index, so that
+// "is this point under a crown?" costs O(1) however many trees there are. Built from the true
+// trees (a-priori map) or from an agent's fused tree tracks (dynamic map Ŵ_i).
+#include <vector>
+
+#include "agents/belief.h"
+#include "core/types.h"
+#include "world/tree.h"
+
+namespace canopy::agents {
+
+class OcclusionMap {
+ public:
+  OcclusionMap() = default;
+  explicit OcclusionMap(std::vector<world::TreeDef> trees);
+  /// Discs at the estimated centres with the estimated radii (never below min_radius).
+  static OcclusionMap fromEstimates(const std::vector<TreeEstimate>& trees, double min_radius);
+
+  /// True when p is strictly inside some crown of the map.
+  bool occludes(const Vec2& p) const;
+  const std::vector<world::TreeDef>& trees() const { return trees_; }
+  bool empty() const { return trees_.empty(); }
+
+ private:
+  std::vector<world::TreeDef> trees_;
+  Aabb bounds_;
+  double cell_ = 1.0;                    // m, grid cell size
+  int cols_ = 0, rows_ = 0;
+  std::vector<int> cell_start_;          // CSR: trees of cell c are cell_trees_[start[c], start[c+1])
+  std::vector<int> cell_trees_;
+};
+
+}  // namespace canopy::agents

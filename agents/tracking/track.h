@@ -1,0 +1,37 @@
+#pragma once
+// Track value types (Stone Soup's vocabulary): a track is a labelled Gaussian with a global key
+// and a little bookkeeping for confirmation and deletion. Targets use the NCV state
+// (px, py, vx, vy); trees the static state (cx, cy, r).
+#include "agents/belief.h"
+#include "agents/gaussian.h"
+#include "sensing/observation.h"
+
+namespace canopy::agents::tracking {
+
+enum class TrackStatus { tentative, confirmed };
+
+template <int N>
+struct Track {
+  TrackKey key;                       // global key; {-1, t} for tracks pre-seeded from the scenario
+  sensing::LabelId label = 1;
+  Gaussian<N> prior;                  // this step's prediction, before the local update
+  Gaussian<N> posterior;              // after the local update; fusion overwrites it in place
+  TrackStatus status = TrackStatus::tentative;
+  int scans = 0;                      // scans since birth (the birth scan counts)
+  int hits = 0;                       // scans with at least one gated measurement
+  int expected_misses = 0;            // consecutive misses while expected visible
+  bool detected = false;              // this scan: at least one measurement in the gate
+};
+
+using TargetTrack = Track<4>;
+using TreeTrack = Track<3>;
+
+/// Numerical trouble and approximations, counted rather than aborting (MuJoCo's habit).
+struct TrackingDiagnostics {
+  long approximated_clusters = 0;     // clusters with more joint events than max_hypotheses
+  long non_positive_covariances = 0;  // updates that needed repair to stay positive definite
+  long births = 0;
+  long deletions = 0;
+};
+
+}  // namespace canopy::agents::tracking
