@@ -7,6 +7,7 @@ Simulation::Simulation(const ScenarioSpec& spec)
   const std::size_t n = spec.uavs.size();
   for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec.seed, "sensing", i);
   scans_.resize(n);
+  beliefs_.resize(n);
 }
 
 void Simulation::commandScriptedUavs() {

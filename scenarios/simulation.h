@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "agents/belief.h"
 #include "core/random.h"
 #include "scenarios/spec.h"
 #include "sensing/sensor.h"
@@ -27,6 +28,8 @@ class Simulation {
   const world::World& world() const { return world_; }
   const world::WorldSnapshot& truth() const { return truth_; }
   const std::vector<sensing::Scan>& scans() const { return scans_; }
+  /// Each UAV agent's fused tracks, occlusion map and plan (empty until agents are wired in).
+  const std::vector<agents::AgentBelief>& beliefs() const { return beliefs_; }
 
  private:
   void commandScriptedUavs();
@@ -38,6 +41,7 @@ class Simulation {
   sensing::SenseScratch scratch_;
   world::WorldSnapshot truth_;
   std::vector<sensing::Scan> scans_;
+  std::vector<agents::AgentBelief> beliefs_;
   int next_step_ = 0;
 };
 
