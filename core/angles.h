@@ -17,7 +17,8 @@ inline double wrapAngle(double a) {
 /// Wraps an angle to [0, 2π).
 inline double wrapAnglePositive(double a) {
   a = std::fmod(a, kTwoPi);
-  return a < 0.0 ? a + kTwoPi : a;
+  if (a < 0.0) a += kTwoPi;
+  return a < kTwoPi ? a : 0.0;  // −1e-18 + 2π rounds to 2π
 }
 
 }  // namespace canopy

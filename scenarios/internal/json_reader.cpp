@@ -58,6 +58,12 @@ Json parseJson(const std::string& text, const std::string& file) {
       detail = detail.substr(colon + 2);
     }
     throw ScenarioError(file, where, "invalid JSON: " + detail);
+  } catch (const Json::exception& e) {
+    // e.g. out_of_range.406 "number overflow parsing '1e999'": JSON has no infinities.
+    std::string detail = e.what();
+    const auto bracket = detail.find("] ");
+    if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
+    throw ScenarioError(file, "", "invalid JSON: " + detail + " (numbers must be finite)");
   }
 }
 
@@ -250,6 +256,9 @@ std::string ObjectReader::oneOf(const std::vector<std::string>& keys) {
     }
     found = key;
   }
+  read_.insert(keys.begin(), keys.end());  // all alternatives are known fields
+  // None given: a misspelt alternative is the likeliest cause, so report stray fields first.
+  if (found.empty()) finish();
   return found;
 }
 

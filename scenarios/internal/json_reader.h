@@ -79,7 +79,8 @@ class ObjectReader {
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key, const std::string& fallback);
   int choice(const std::string& key, const std::vector<std::string>& choices, int fallback);
-  /// Fails when two of the keys are present; returns the one present, or "" when none.
+  /// Fails when two of the keys are present; returns the one present, or "" when none (after
+  /// rejecting any unknown member, which is likely a misspelt alternative).
   std::string oneOf(const std::vector<std::string>& keys);
   /// Rejects every member not read. Call once, after all reads.
   void finish() const;

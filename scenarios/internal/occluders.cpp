@@ -52,8 +52,8 @@ std::optional<double> readMinGap(ObjectReader& reader) {
 void requireFeasibleCount(const Field& field, double expected_trees) {
   if (expected_trees > kMaxGeneratedTrees) {
     std::ostringstream text;
-    text << "expected a layout of at most " << kMaxGeneratedTrees << " trees, this one would make about "
-         << expected_trees;
+    text << "expected a layout of at most " << static_cast<long>(kMaxGeneratedTrees)
+         << " trees, this one would make about " << static_cast<long>(expected_trees);
     field.fail(text.str());
   }
 }

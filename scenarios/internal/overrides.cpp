@@ -18,6 +18,8 @@ void applyOverride(Json& document, const std::string& assignment) {
     value = Json::parse(text);  // numbers, booleans, null, arrays, objects, "quoted strings"
   } catch (const Json::parse_error&) {
     value = text;  // a bare word: a string (e.g. planner.algorithm=sma)
+  } catch (const Json::exception& e) {
+    throw ScenarioError("--set", assignment, "expected a finite value: " + std::string(e.what()));
   }
 
   Json* node = &document;
