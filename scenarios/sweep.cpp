@@ -1,0 +1,214 @@
+#include "scenarios/sweep.h"
+
+#include <atomic>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "core/random.h"
+#include "scenarios/internal/json_reader.h"
+
+namespace canopy::scenarios {
+namespace fs = std::filesystem;
+using internal::Field;
+using internal::Json;
+using internal::ObjectReader;
+
+namespace {
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Temp file + rename: a reader never sees a half-written file, even if we are killed.
+void writeAtomically(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  const fs::path temp = path.string() + ".tmp";
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + temp.string());
+  }
+  fs::rename(temp, path);
+}
+
+// "planner.horizon" = 5 → "horizon-5", "planner.algorithm" = "sma" → "algorithm-sma"; characters unsafe in a directory name become '_'.
+std::string slug(const std::string& path, const std::string& value) {
+  const bool quoted = value.size() >= 2 && value.front() == '"' && value.back() == '"';
+  std::string text = path.substr(path.rfind('.') + 1) + "-" + (quoted ? value.substr(1, value.size() - 2) : value);
+  for (char& c : text) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+  }
+  return text;
+}
+
+}  // namespace
+
+SweepSpec loadSweepText(const std::string& text, const std::string& file) {
+  Json document = internal::parseJson(text, file);
+  Json effective = Json::object();
+  ObjectReader root = Field(document, file, "", &effective).object();
+  SweepSpec sweep;
+  sweep.name = root.string("name", fs::path(file).stem().string());
+  const std::string scenario = root.required("scenario").string();
+  // A file beside the sweep, else a path or library name as given; stored resolved so that
+  // DIR/sweep.json reloads from anywhere.
+  const fs::path beside = fs::path(file).parent_path() / scenario;
+  std::error_code error;
+  sweep.scenario = fs::is_regular_file(beside, error) ? fs::absolute(beside).lexically_normal().string()
+                   : fs::is_regular_file(scenario, error) ? fs::absolute(scenario).lexically_normal().string()
+                                                         : scenario;
+  try {
+    resolveScenario(sweep.scenario);
+  } catch (const ScenarioError&) {
+    root.required("scenario").fail("expected a scenario file or a built-in scenario name, got \"" +
+                                   scenario + "\"");
+  }
+  effective["scenario"] = sweep.scenario;
+  sweep.trials = root.integer("trials", 1, 1, 1000000);
+  if (auto seed = root.optional("seed")) sweep.seed = seed->unsignedInteger();
+  if (auto set = root.optional("set")) {
+    ObjectReader fixed = set->object();
+    for (const auto& [key, value] : set->json().items()) {
+      fixed.optional(key)->keepAsIs();
+      sweep.fixed.push_back(key + "=" + value.dump());
+    }
+    fixed.finish();
+  }
+  if (auto axes = root.optional("axes")) {
+    for (const Field& element : axes->elements()) {
+      ObjectReader axis_reader = element.object();
+      SweepAxis axis;
+      axis.path = axis_reader.required("path").string();
+      for (const Field& value : axis_reader.required("values").elements(1)) {
+        value.keepAsIs();
+        axis.values.push_back(value.json().dump());
+      }
+      axis_reader.finish();
+      sweep.axes.push_back(std::move(axis));
+    }
+  }
+  root.finish();
+  effective["seed"] = sweep.seed;
+  sweep.effective_json = effective.dump(2);
+  return sweep;
+}
+
+SweepSpec loadSweep(const std::string& path) {
+  return loadSweepText(internal::readJsonFile(path).dump(), path);
+}
+
+std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
+  std::vector<SweepConfig> configs{{"", sweep.fixed}};
+  for (const SweepAxis& axis : sweep.axes) {
+    std::vector<SweepConfig> next;
+    for (const SweepConfig& config : configs) {
+      for (const std::string& value : axis.values) {
+        SweepConfig point = config;
+        point.id += (point.id.empty() ? "" : "_") + slug(axis.path, value);
+        point.overrides.push_back(axis.path + "=" + value);
+        next.push_back(std::move(point));
+      }
+    }
+    configs = std::move(next);
+  }
+  if (configs.size() == 1 && configs.front().id.empty()) configs.front().id = "base";
+  return configs;
+}
+
+std::uint64_t trialSeed(std::uint64_t sweep_seed, int index) {
+  return RandomStream(sweep_seed, "trial-seed", static_cast<std::uint64_t>(index)).nextU64();
+}
+
+fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "trial_%04d.json", index);
+  return out_dir / "trials" / config_id / name;
+}
+
+int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
+  const fs::path manifest = options.out_dir / "sweep.json";
+  if (fs::exists(manifest) && readText(manifest) != sweep.effective_json + "\n") {
+    throw ScenarioError(manifest.string(), "", "this directory holds a different sweep; choose another --out");
+  }
+  fs::create_directories(options.out_dir);
+  writeAtomically(manifest, sweep.effective_json + "\n");
+
+  const std::vector<SweepConfig> configs = configurations(sweep);
+  std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
+  for (const SweepConfig& config : configs) specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
+
+  struct Job {
+    int config, trial;
+  };
+  std::vector<Job> todo;
+  SweepProgress progress;
+  progress.total = static_cast<int>(configs.size()) * sweep.trials;
+  for (int c = 0; c < static_cast<int>(configs.size()); ++c) {
+    for (int t = 0; t < sweep.trials; ++t) {
+      if (fs::exists(trialPath(options.out_dir, configs[c].id, t))) {
+        ++progress.resumed;
+      } else {
+        todo.push_back({c, t});
+      }
+    }
+  }
+  progress.done = progress.resumed;
+  if (options.on_progress) options.on_progress(progress);
+
+  std::atomic<std::size_t> next{0};
+  std::mutex progress_mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (std::size_t j = next++; j < todo.size(); j = next++) {
+      try {
+        ScenarioSpec spec = specs[todo[j].config];
+        spec.seed = trialSeed(sweep.seed, todo[j].trial);
+        const TrialResult trial = runTrial(spec, configs[todo[j].config].id);
+        writeAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial), trialToJson(trial) + "\n");
+      } catch (...) {
+        const std::lock_guard lock(progress_mutex);
+        if (!failure) failure = std::current_exception();
+        next = todo.size();  // stop handing out work
+        return;
+      }
+      const std::lock_guard lock(progress_mutex);
+      ++progress.done;
+      if (options.on_progress) options.on_progress(progress);
+    }
+  };
+  std::vector<std::jthread> pool;
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
+  for (int w = 0; w < jobs; ++w) pool.emplace_back(worker);
+  pool.clear();  // joins
+  if (failure) std::rethrow_exception(failure);
+  return static_cast<int>(todo.size());
+}
+
+SweepResults loadSweepResults(const fs::path& out_dir) {
+  SweepResults results;
+  const fs::path manifest = out_dir / "sweep.json";
+  if (!fs::is_regular_file(manifest)) {
+    throw ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
+  }
+  results.sweep = loadSweepText(readText(manifest), manifest.string());
+  results.configs = configurations(results.sweep);
+  for (const SweepConfig& config : results.configs) {
+    std::vector<TrialResult> trials;
+    for (int t = 0; t < results.sweep.trials; ++t) {
+      const fs::path path = trialPath(out_dir, config.id, t);
+      if (fs::is_regular_file(path)) trials.push_back(trialFromJson(readText(path), path.string()));
+    }
+    results.trials.push_back(std::move(trials));
+  }
+  return results;
+}
+
+}  // namespace canopy::scenarios

@@ -1,0 +1,74 @@
+#pragma once
+// Monte Carlo sweeps: a base scenario, axes of --set values, and a number of trials per
+// configuration. Trials run on a thread pool, each result is written atomically, and a sweep
+// killed at any moment resumes without losing or redoing a finished trial. Results do not
+// depend on the number of threads.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scenarios/loader.h"
+#include "scenarios/trial.h"
+
+namespace canopy::scenarios {
+
+struct SweepAxis {
+  std::string path;                 // a --set path, e.g. "planner.horizon"
+  std::vector<std::string> values;  // each a JSON value as text
+};
+
+struct SweepSpec {
+  std::string name;
+  std::string scenario;             // base scenario: a path (resolved beside the sweep file) or a library name
+  int trials = 1;                   // per configuration
+  std::uint64_t seed = 1;           // trial i of every configuration gets trialSeed(seed, i)
+  std::vector<std::string> fixed;   // "path=value" overrides applied to every configuration
+  std::vector<SweepAxis> axes;      // the Cartesian product of their values
+  std::string effective_json;       // the sweep as read, for DIR/sweep.json
+};
+
+/// One point of the Cartesian product.
+struct SweepConfig {
+  std::string id;                       // e.g. "algorithm-sma_horizon-5" (a directory name)
+  std::vector<std::string> overrides;   // fixed, then this point's axis values
+};
+
+/// Reads and validates a sweep file (ScenarioError: file, field, expectation).
+SweepSpec loadSweep(const std::string& path);
+SweepSpec loadSweepText(const std::string& text, const std::string& file);
+
+std::vector<SweepConfig> configurations(const SweepSpec& sweep);
+/// The seed of trial `index` (the same in every configuration: common random numbers).
+std::uint64_t trialSeed(std::uint64_t sweep_seed, int index);
+
+struct SweepProgress {
+  int done = 0;         // finished trials, including those found on disk
+  int total = 0;
+  int resumed = 0;      // found on disk at start
+};
+
+struct SweepOptions {
+  std::filesystem::path out_dir;
+  int jobs = 1;
+  std::function<void(const SweepProgress&)> on_progress;  // called from worker threads, serialised
+};
+
+/// Runs every missing trial; returns the number it ran. Every configuration is loaded (and so
+/// validated) before the first trial starts.
+int runSweep(const SweepSpec& sweep, const SweepOptions& options);
+
+/// Where trial `index` of configuration `config_id` lives under a sweep directory.
+std::filesystem::path trialPath(const std::filesystem::path& out_dir, const std::string& config_id,
+                                int index);
+
+/// Every finished trial under a sweep directory, grouped by configuration in sweep order.
+struct SweepResults {
+  SweepSpec sweep;
+  std::vector<SweepConfig> configs;
+  std::vector<std::vector<TrialResult>> trials;  // [config][trial]
+};
+SweepResults loadSweepResults(const std::filesystem::path& out_dir);
+
+}  // namespace canopy::scenarios

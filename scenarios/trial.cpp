@@ -1,0 +1,111 @@
+#include "scenarios/trial.h"
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "scenarios/error.h"
+
+namespace canopy::scenarios {
+namespace {
+using Json = nlohmann::json;
+constexpr int kMaxMaskTargets = 64;
+}  // namespace
+
+TrialCollector::TrialCollector(const ScenarioSpec& spec) {
+  result_.scenario = spec.name;
+  result_.seed = spec.seed;
+  result_.dt = spec.dt;
+  result_.uavs = static_cast<int>(spec.uavs.size());
+  result_.targets = static_cast<int>(spec.targets.size());
+  result_.trees = static_cast<int>(spec.trees.size());
+  result_.tree_first_seen.assign(spec.trees.size(), -1);
+  masks_ = result_.targets <= kMaxMaskTargets;
+}
+
+void TrialCollector::add(const Simulation& sim) {
+  const int k = sim.truth().step;
+  std::vector<TargetBits> visible(result_.uavs, 0), in_footprint(result_.uavs, 0);
+  for (const sensing::Scan& scan : sim.scans()) {
+    if (masks_) {
+      for (const int t : scan.visible) visible[scan.uav] |= TargetBits{1} << t;
+      for (const int t : scan.in_footprint) in_footprint[scan.uav] |= TargetBits{1} << t;
+    }
+    for (const sensing::Observation& o : scan.observations) {
+      if (o.label == sensing::kTreeLabel && result_.tree_first_seen[o.truth] < 0) {
+        result_.tree_first_seen[o.truth] = k;
+      }
+    }
+  }
+  TargetBits occluded = 0;
+  if (masks_) {
+    for (int t = 0; t < result_.targets; ++t) {
+      if (sim.world().insideOccluder(sim.truth().targets[t].position)) occluded |= TargetBits{1} << t;
+    }
+  }
+  result_.visible.push_back(std::move(visible));
+  result_.in_footprint.push_back(std::move(in_footprint));
+  result_.occluded.push_back(occluded);
+}
+
+TrialResult runTrial(const ScenarioSpec& spec, const std::string& config_id) {
+  const auto start = std::chrono::steady_clock::now();
+  Simulation sim(spec);
+  TrialCollector collector(spec);
+  while (!sim.done()) {
+    sim.tick();
+    collector.add(sim);
+  }
+  TrialResult result = collector.take();
+  result.config_id = config_id;
+  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::string trialToJson(const TrialResult& trial) {
+  Json j;
+  j["scenario"] = trial.scenario;
+  j["config_id"] = trial.config_id;
+  j["seed"] = trial.seed;
+  j["dt"] = trial.dt;
+  j["uavs"] = trial.uavs;
+  j["targets"] = trial.targets;
+  j["trees"] = trial.trees;
+  j["visible"] = trial.visible;
+  j["in_footprint"] = trial.in_footprint;
+  j["occluded"] = trial.occluded;
+  j["tree_first_seen"] = trial.tree_first_seen;
+  return j.dump();
+}
+
+TrialResult trialFromJson(const std::string& text, const std::string& file) {
+  TrialResult trial;
+  try {
+    const Json j = Json::parse(text);
+    trial.scenario = j.at("scenario").get<std::string>();
+    trial.config_id = j.at("config_id").get<std::string>();
+    trial.seed = j.at("seed").get<std::uint64_t>();
+    trial.dt = j.at("dt").get<double>();
+    trial.uavs = j.at("uavs").get<int>();
+    trial.targets = j.at("targets").get<int>();
+    trial.trees = j.at("trees").get<int>();
+    trial.visible = j.at("visible").get<std::vector<std::vector<TargetBits>>>();
+    trial.in_footprint = j.at("in_footprint").get<std::vector<std::vector<TargetBits>>>();
+    trial.occluded = j.at("occluded").get<std::vector<TargetBits>>();
+    trial.tree_first_seen = j.at("tree_first_seen").get<std::vector<int>>();
+  } catch (const Json::exception& e) {
+    throw ScenarioError(file, "", std::string("not a trial result: ") + e.what());
+  }
+  const std::size_t steps = trial.occluded.size();
+  if (trial.visible.size() != steps || trial.in_footprint.size() != steps) {
+    throw ScenarioError(file, "", "not a trial result: per-step arrays differ in length");
+  }
+  for (std::size_t k = 0; k < steps; ++k) {
+    if (trial.visible[k].size() != static_cast<std::size_t>(trial.uavs) ||
+        trial.in_footprint[k].size() != static_cast<std::size_t>(trial.uavs)) {
+      throw ScenarioError(file, "step " + std::to_string(k), "not a trial result: expected one set per UAV");
+    }
+  }
+  return trial;
+}
+
+}  // namespace canopy::scenarios

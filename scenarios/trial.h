@@ -1,0 +1,53 @@
+#pragma once
+// One Monte Carlo trial: a scenario run to its end, kept as the compact per-step facts the
+// behaviour analysis needs (no record.jsonl).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scenarios/simulation.h"
+#include "scenarios/spec.h"
+
+namespace canopy::scenarios {
+
+/// Per-step sets of targets are bit masks (bit t ⇔ target t); trials with more than 64 targets
+/// keep no masks.
+using TargetBits = std::uint64_t;
+
+struct TrialResult {
+  std::string scenario;
+  std::string config_id;                        // the sweep configuration it belongs to
+  std::uint64_t seed = 0;
+  double dt = 0.0;                              // s
+  int uavs = 0, targets = 0, trees = 0;
+  std::vector<std::vector<TargetBits>> visible;       // [k][i]: V_{i,k}
+  std::vector<std::vector<TargetBits>> in_footprint;  // [k][i]: targets whose truth lies in φ_{i,k}
+  std::vector<TargetBits> occluded;                   // [k]: targets strictly under a crown
+  std::vector<int> tree_first_seen;             // per tree: first step a footprint held its centre, −1 never
+  double wall_seconds = 0.0;                    // not part of the result's identity
+
+  int steps() const { return static_cast<int>(occluded.size()); }
+};
+
+/// Accumulates a TrialResult step by step from a running Simulation.
+class TrialCollector {
+ public:
+  explicit TrialCollector(const ScenarioSpec& spec);
+  void add(const Simulation& sim);
+  TrialResult take() { return std::move(result_); }
+
+ private:
+  TrialResult result_;
+  bool masks_ = true;
+};
+
+/// Runs `spec` (its seed included) to the end and collects the trial.
+TrialResult runTrial(const ScenarioSpec& spec, const std::string& config_id);
+
+/// JSON text of a trial, and back. The text is deterministic (wall time excluded), so identical
+/// trials give identical files.
+std::string trialToJson(const TrialResult& trial);
+/// Throws ScenarioError naming `file` when the text is not a trial.
+TrialResult trialFromJson(const std::string& text, const std::string& file);
+
+}  // namespace canopy::scenarios

@@ -1,0 +1,129 @@
+#include "scenarios/sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "scenarios/error.h"
+
+namespace canopy::scenarios {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr const char* kSweep = R"({
+  "name": "small",
+  "scenario": "demo",
+  "trials": 3,
+  "seed": 7,
+  "set": {"clock.duration": 4.0},
+  "axes": [{"path": "sensing.p_detect", "values": [1.0, 0.5]},
+           {"path": "sensing.occlusion_model", "values": ["canopy", "line_of_sight"]}]
+})";
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every trial file of a sweep directory, by relative path.
+std::map<std::string, std::string> trialFiles(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
+    if (entry.is_regular_file()) files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
+  }
+  return files;
+}
+
+fs::path freshDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("canopy_sweep_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(Sweep, ConfigurationsAreTheCartesianProductInAxisOrder) {
+  const SweepSpec sweep = loadSweepText(kSweep, "small.json");
+  const std::vector<SweepConfig> configs = configurations(sweep);
+  ASSERT_EQ(configs.size(), 4u);
+  EXPECT_EQ(configs[0].id, "p_detect-1.0_occlusion_model-canopy");
+  EXPECT_EQ(configs[3].overrides,
+            (std::vector<std::string>{"clock.duration=4.0", "sensing.p_detect=0.5",
+                                      "sensing.occlusion_model=\"line_of_sight\""}));
+}
+
+TEST(Sweep, TrialSeedsDependOnTheIndexOnly) {
+  EXPECT_EQ(trialSeed(7, 2), trialSeed(7, 2));
+  EXPECT_NE(trialSeed(7, 2), trialSeed(7, 3));
+  EXPECT_NE(trialSeed(7, 2), trialSeed(8, 2));
+}
+
+TEST(Sweep, ResultsDoNotDependOnTheNumberOfThreads) {
+  const SweepSpec sweep = loadSweepText(kSweep, "small.json");
+  const fs::path one = freshDir("jobs1"), two = freshDir("jobs2");
+  EXPECT_EQ(runSweep(sweep, {one, 1, {}}), 12);
+  EXPECT_EQ(runSweep(sweep, {two, 2, {}}), 12);
+  const auto a = trialFiles(one), b = trialFiles(two);
+  EXPECT_EQ(a.size(), 12u);
+  EXPECT_EQ(a, b);
+}
+
+TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
+  const SweepSpec sweep = loadSweepText(kSweep, "small.json");
+  const fs::path whole = freshDir("whole"), resumed = freshDir("resumed");
+  runSweep(sweep, {whole, 2, {}});
+  runSweep(sweep, {resumed, 2, {}});
+  // Interrupt by hand: two finished trials vanish and a half-written temp file is left behind.
+  const auto files = trialFiles(resumed);
+  auto it = files.begin();
+  fs::remove(resumed / it->first);
+  std::ofstream(resumed / (it->first + ".tmp")) << "{\"scenario\": \"dem";
+  fs::remove(resumed / (++it)->first);
+  int last_resumed = -1;
+  EXPECT_EQ(runSweep(sweep, {resumed, 2, [&](const SweepProgress& p) { last_resumed = p.resumed; }}), 2);
+  EXPECT_EQ(last_resumed, 10);
+  EXPECT_EQ(trialFiles(resumed), trialFiles(whole));
+  EXPECT_EQ(runSweep(sweep, {resumed, 2, {}}), 0);  // nothing left to do
+}
+
+TEST(Sweep, RefusesADirectoryHoldingAnotherSweep) {
+  const fs::path dir = freshDir("other");
+  runSweep(loadSweepText(kSweep, "small.json"), {dir, 1, {}});
+  std::string changed = kSweep;
+  changed.replace(changed.find("\"trials\": 3"), 11, "\"trials\": 4");
+  EXPECT_THROW(runSweep(loadSweepText(changed, "small.json"), {dir, 1, {}}), ScenarioError);
+}
+
+TEST(Sweep, LoadsBackEveryTrialGroupedByConfiguration) {
+  const fs::path dir = freshDir("load");
+  runSweep(loadSweepText(kSweep, "small.json"), {dir, 2, {}});
+  const SweepResults results = loadSweepResults(dir);
+  ASSERT_EQ(results.trials.size(), 4u);
+  for (const auto& trials : results.trials) {
+    ASSERT_EQ(trials.size(), 3u);
+    EXPECT_EQ(trials[0].steps(), 21);  // 4 s of 0.2 s, plus the initial state
+    EXPECT_EQ(trials[0].uavs, 2);
+  }
+  EXPECT_EQ(results.trials[0][1].seed, trialSeed(7, 1));
+}
+
+TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
+  EXPECT_THROW(loadSweepText(R"({"scenario": "no_such_scenario"})", "s.json"), ScenarioError);
+  EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "trials": 0})", "s.json"), ScenarioError);
+  EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "axes": [{"path": "x"}]})", "s.json"), ScenarioError);
+  const fs::path dir = freshDir("bad");
+  const SweepSpec bad = loadSweepText(R"({"scenario": "demo", "axes": [{"path": "planner.horizon", "values": [0]}]})", "s.json");
+  try {
+    runSweep(bad, {dir, 1, {}});
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.field(), "planner.horizon");
+  }
+  EXPECT_FALSE(fs::exists(dir / "trials"));
+}
+
+}  // namespace
+}  // namespace canopy::scenarios
