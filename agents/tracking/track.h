@@ -18,7 +18,7 @@ struct Track {
   Gaussian<N> posterior;              // after the local update; fusion overwrites it in place
   TrackStatus status = TrackStatus::tentative;
   int scans = 0;                      // scans since birth (the birth scan counts)
-  int hits = 0;                       // scans with at least one gated measurement
+  int hits = 0;                       // scans in which Σ_j β_tj ≥ ½ (see Tracker::update)
   int expected_misses = 0;            // consecutive misses while expected visible
   bool detected = false;              // this scan: at least one measurement in the gate
 };

@@ -1,0 +1,19 @@
+#pragma once
+// What the fusion step did and what went wrong, counted rather than aborting (MuJoCo's habit).
+// Totals since the TeamFusion was made; targets and trees together.
+
+namespace canopy::agents::fusion {
+
+struct FusionDiagnostics {
+  long steps = 0;               // fuse() calls
+  long messages = 0;            // consensus messages sent (exchanges × directed links)
+  long lost_messages = 0;       // of which lost (comm_drop)
+  long remembered_matches = 0;  // neighbour pairs kept together because they share a key
+  long new_matches = 0;         // neighbour pairs joined by the gated Hungarian assignment
+  long refused_matches = 0;     // assigned pairs refused: one agent would hold two of a cluster
+  long adoptions = 0;           // tracks copied to a neighbour that lacked them
+  long rekeys = 0;              // clusters given a fresh key because another one kept theirs
+  long numerical_failures = 0;  // covariances or fused information not positive definite
+};
+
+}  // namespace canopy::agents::fusion

@@ -1,0 +1,266 @@
+#include "agents/fusion/information_consensus.h"
+
+#include <utility>
+
+#include "agents/fusion/small_cholesky.h"
+
+namespace canopy::agents::fusion {
+namespace {
+
+/// Information pair of a Gaussian: Ω = P⁻¹ and q = P⁻¹x, by Cholesky solves (no explicit
+/// inverse). False when P is not positive definite or not finite.
+template <int N>
+bool toInformation(const Gaussian<N>& g, Eigen::Ref<Eigen::Matrix<double, N, N>> omega,
+                   Eigen::Ref<Eigen::Matrix<double, N, 1>> q) {
+  if (!g.x.allFinite()) return false;
+  const SmallCholesky<N> cholesky(g.P);
+  if (!cholesky.ok()) return false;
+  omega = cholesky.inverse();  // Ω = P⁻¹ (N×N)
+  q = cholesky.solve(g.x);     // q = P⁻¹ x (N)
+  return true;
+}
+
+/// The Gaussian of an information pair: P = Ω⁻¹, x = Ω⁻¹q. False when Ω is not positive
+/// definite (then g is left as it was).
+template <int N>
+bool fromInformation(const Eigen::Matrix<double, N, N>& omega, const Eigen::Matrix<double, N, 1>& q,
+                     Gaussian<N>& g) {
+  if (!q.allFinite()) return false;
+  const SmallCholesky<N> cholesky(0.5 * (omega + omega.transpose()));
+  if (!cholesky.ok()) return false;
+  g.P = cholesky.inverse();  // P = Ω⁻¹ (N×N)
+  g.x = cholesky.solve(q);   // x = Ω⁻¹ q (N)
+  return true;
+}
+
+}  // namespace
+
+template <int N>
+void InformationConsensus<N>::run(std::span<TrackList* const> lists, const Clusters& clusters,
+                                  const CommGraph& graph, const FusionConfig& config,
+                                  FusionDiagnostics& diagnostics) {
+  slot_of_.assign(static_cast<std::size_t>(graph.agents()), -1);
+  const int rounds = config.rounds > 0 ? config.rounds : 0;
+  for (int c = 0; c < clusters.size(); ++c) {
+    const std::span<const ClusterMember> members = clusters.of(c);
+    if (members.size() < 2) continue;  // nothing to fuse with
+    usable_.assign(members.size(), 1);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      slot_of_[members[k].agent] = static_cast<int>(k);
+    }
+    switch (config.method) {
+      case FusionMethod::ci:
+        runCi(lists, members, graph, rounds, diagnostics);
+        break;
+      case FusionMethod::hcmci:
+        runHcmci(lists, members, graph, rounds, diagnostics);
+        break;
+      case FusionMethod::observer_average:
+        runObserverAverage(lists, members, graph, diagnostics);
+        break;
+    }
+    for (const ClusterMember& member : members) slot_of_[member.agent] = -1;
+  }
+}
+
+template <int N>
+void InformationConsensus<N>::exclude(std::span<const ClusterMember> members, int k) {
+  usable_[k] = 0;
+  slot_of_[members[k].agent] = -1;
+}
+
+template <int N>
+void InformationConsensus<N>::linkHolders(std::span<const ClusterMember> members,
+                                          const CommGraph& graph) {
+  const int count = static_cast<int>(members.size());
+  holder_links_.clear();
+  holder_link_start_.resize(members.size() + 1);
+  own_weight_.resize(members.size());
+  for (int k = 0; k < count; ++k) {
+    holder_link_start_[k] = static_cast<int>(holder_links_.size());
+    const int i = members[k].agent;
+    own_weight_[k] = graph.selfWeight(i);  // π_ii ...
+    if (!usable_[k]) continue;
+    const std::span<const int> neighbours = graph.neighbours(i);
+    const std::span<const double> weights = graph.weights(i);
+    for (std::size_t e = 0; e < neighbours.size(); ++e) {
+      const int s = slot_of_[neighbours[e]];
+      if (s >= 0) {
+        holder_links_.push_back({s, graph.firstLink(i) + static_cast<int>(e), weights[e]});
+      } else {
+        own_weight_[k] += weights[e];  // ... plus π_ij of every neighbour without the track
+      }
+    }
+  }
+  holder_link_start_[count] = static_cast<int>(holder_links_.size());
+}
+
+template <int N>
+template <typename Block>
+void InformationConsensus<N>::mix(std::span<const ClusterMember> members, const CommGraph& graph,
+                                  int rounds, std::vector<Block>& current,
+                                  std::vector<Block>& next) {
+  const int count = static_cast<int>(members.size());
+  next.resize(current.size());
+  for (int round = 0; round < rounds; ++round) {
+    for (int k = 0; k < count; ++k) {
+      if (!usable_[k]) {
+        next[k] = current[k];
+        continue;
+      }
+      double own_weight = own_weight_[k];
+      Block sum = Block::Zero();
+      for (int l = holder_link_start_[k]; l < holder_link_start_[k + 1]; ++l) {
+        const HolderLink& link = holder_links_[l];
+        if (graph.delivered(round, link.link)) {
+          sum.noalias() += link.weight * current[link.sender];  // Σ_j π_ij y_j
+        } else {
+          own_weight += link.weight;  // a lost message's weight stays with the receiver
+        }
+      }
+      sum.noalias() += own_weight * current[k];
+      next[k] = sum;
+    }
+    std::swap(current, next);
+  }
+}
+
+template <int N>
+void InformationConsensus<N>::runCi(std::span<TrackList* const> lists,
+                                    std::span<const ClusterMember> members, const CommGraph& graph,
+                                    int rounds, FusionDiagnostics& diagnostics) {
+  const int count = static_cast<int>(members.size());
+  info_.resize(members.size());
+  for (int k = 0; k < count; ++k) {
+    const Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    if (!toInformation<N>(posterior, info_[k].template leftCols<N>(), info_[k].col(N))) {
+      exclude(members, k);
+      ++diagnostics.numerical_failures;
+    }
+  }
+  linkHolders(members, graph);
+  // Ω_i ← Σ_j π_ij Ω_j, q_i ← Σ_j π_ij q_j, L rounds (Battistelli & Chisci 2014).
+  mix(members, graph, rounds, info_, info_next_);
+  for (int k = 0; k < count; ++k) {
+    if (!usable_[k]) continue;
+    Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    const Mat omega = info_[k].template leftCols<N>();
+    const Vec q = info_[k].col(N);
+    if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
+  }
+}
+
+template <int N>
+void InformationConsensus<N>::runHcmci(std::span<TrackList* const> lists,
+                                       std::span<const ClusterMember> members,
+                                       const CommGraph& graph, int rounds,
+                                       FusionDiagnostics& diagnostics) {
+  const int count = static_cast<int>(members.size());
+  hybrid_.resize(members.size());
+  for (int k = 0; k < count; ++k) {
+    const tracking::Track<N>& track = (*lists[members[k].agent])[members[k].track];
+    Hybrid& y = hybrid_[k];
+    Mat omega_post;
+    Vec q_post;
+    const bool ok = toInformation<N>(track.prior, y.template leftCols<N>(), y.col(N)) &&
+                    toInformation<N>(track.posterior, omega_post, q_post);
+    if (!ok) {
+      exclude(members, k);
+      ++diagnostics.numerical_failures;
+      continue;
+    }
+    if (members[k].adopted) {
+      y.template rightCols<N + 1>().setZero();  // an adopted copy brings no measurement
+    } else {
+      y.template block<N, N>(0, N + 1) = omega_post - y.template leftCols<N>();  // δΩ = Ω − Ω⁻
+      y.col(2 * N + 1) = q_post - y.col(N);                                      // δq = q − q⁻
+    }
+  }
+  linkHolders(members, graph);
+  holderComponents(members);
+  // Consensus on prior information and on novel information, L rounds each (Battistelli,
+  // Chisci, Mugnai, Farina & Graziano 2015).
+  mix(members, graph, rounds, hybrid_, hybrid_next_);
+  for (int k = 0; k < count; ++k) {
+    if (!usable_[k]) continue;
+    const Hybrid& y = hybrid_[k];
+    const double omega_scale = holders_[k];  // ω
+    // Ω = Ω⁻ + ω δΩ, q = q⁻ + ω δq (Battistelli, Chisci, Mugnai, Farina & Graziano 2015).
+    const Mat omega = y.template leftCols<N>() + omega_scale * y.template block<N, N>(0, N + 1);
+    const Vec q = y.col(N) + omega_scale * y.col(2 * N + 1);
+    Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
+  }
+}
+
+template <int N>
+void InformationConsensus<N>::runObserverAverage(std::span<TrackList* const> lists,
+                                                 std::span<const ClusterMember> members,
+                                                 const CommGraph& graph,
+                                                 FusionDiagnostics& diagnostics) {
+  const int count = static_cast<int>(members.size());
+  info_.resize(members.size());
+  observed_.assign(members.size(), 0);
+  for (int k = 0; k < count; ++k) {
+    const tracking::Track<N>& track = (*lists[members[k].agent])[members[k].track];
+    observed_[k] = track.detected && !members[k].adopted ? 1 : 0;
+    if (!toInformation<N>(track.posterior, info_[k].template leftCols<N>(), info_[k].col(N))) {
+      exclude(members, k);
+      ++diagnostics.numerical_failures;
+    }
+  }
+  for (int k = 0; k < count; ++k) {
+    if (!usable_[k]) continue;
+    const int i = members[k].agent;
+    Info sum = Info::Zero();
+    int observers = 0;
+    if (observed_[k]) {
+      sum += info_[k];
+      ++observers;
+    }
+    const std::span<const int> neighbours = graph.neighbours(i);
+    for (std::size_t e = 0; e < neighbours.size(); ++e) {
+      const int s = slot_of_[neighbours[e]];
+      if (s < 0 || !observed_[s] || !graph.delivered(0, graph.firstLink(i) + static_cast<int>(e))) {
+        continue;
+      }
+      sum += info_[s];
+      ++observers;
+    }
+    if (observers == 0) continue;  // nobody heard saw it: keep the local posterior
+    // (Ω, q) = mean over the observers heard (the reference simulator's rule).
+    sum /= static_cast<double>(observers);
+    const Mat omega = sum.template leftCols<N>();
+    const Vec q = sum.col(N);
+    Gaussian<N>& posterior = (*lists[i])[members[k].track].posterior;
+    if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
+  }
+}
+
+template <int N>
+void InformationConsensus<N>::holderComponents(std::span<const ClusterMember> members) {
+  const int count = static_cast<int>(members.size());
+  holders_.assign(members.size(), 0);
+  for (int seed = 0; seed < count; ++seed) {
+    if (!usable_[seed] || holders_[seed] != 0) continue;
+    // Flood the usable members reachable from `seed` (marked −1), then write the count.
+    stack_.assign(1, seed);
+    holders_[seed] = -1;
+    for (std::size_t top = 0; top < stack_.size(); ++top) {
+      const int k = stack_[top];
+      for (int l = holder_link_start_[k]; l < holder_link_start_[k + 1]; ++l) {
+        const int s = holder_links_[l].sender;
+        if (holders_[s] == 0) {
+          holders_[s] = -1;
+          stack_.push_back(s);
+        }
+      }
+    }
+    for (const int k : stack_) holders_[k] = static_cast<int>(stack_.size());
+  }
+}
+
+template class InformationConsensus<3>;
+template class InformationConsensus<4>;
+
+}  // namespace canopy::agents::fusion

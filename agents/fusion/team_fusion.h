@@ -1,0 +1,88 @@
+#pragma once
+// The team's fusion step (algorithms.md §5): once per simulation step, after every agent's local
+// tracking update, on all agents' track lists at once. Messages are simulated, so the one object
+// that sees every list plays the network; each agent still uses only what its neighbours sent.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "agents/config.h"
+#include "agents/fusion/comm_graph.h"
+#include "agents/fusion/fusion_diagnostics.h"
+#include "agents/fusion/information_consensus.h"
+#include "agents/fusion/track_association.h"
+#include "agents/tracking/track.h"
+#include "core/random.h"
+#include "core/types.h"
+
+namespace canopy::agents::fusion {
+
+/// One agent's part in a fusion step: its track lists, read and rewritten in place, and its
+/// position. The lists must outlive the fuse() call; nothing keeps them after it.
+struct AgentTracks {
+  std::vector<tracking::TargetTrack>* targets = nullptr;  // OOI tracks (null: none, takes no part)
+  std::vector<tracking::TreeTrack>* trees = nullptr;      // SOO tracks, its map Ŵ_i (null: none)
+  Vec2 position = Vec2::Zero();                           // m, UAV ground position (comm_range)
+};
+
+/// Distributed fusion of the whole team, targets (Track<4>) and trees (Track<3>) alike.
+///
+/// fuse(agents), with agents[i] agent i (size = the team size given at construction):
+/// 1. Graph: UAVs within config.comm_range (m) of each other are neighbours (all pairs when
+///    infinite), with Metropolis weights π_ij = 1 / (1 + max(deg_i, deg_j)). For each of the
+///    L = config.rounds consensus exchanges (one for observer_average) every directed message is
+///    lost with probability config.comm_drop, drawn from agent i's own stream for the messages it
+///    receives ("fusion.loss", index i). A lost message's weight goes to the receiver's own value
+///    (see InformationConsensus). The association exchange is taken as reliable.
+/// 2. Association (TrackAssociation): neighbours' tracks are matched by label and position
+///    (χ²₂ gate config.association_gate, Hungarian assignment, tracks sharing a key kept together
+///    while gated); matched tracks take the smallest key; a confirmed track a neighbour lacks is
+///    copied into the neighbour's list (appended), so it reaches one more hop every step.
+/// 3. Consensus (InformationConsensus) by config.method: every track's posterior is overwritten
+///    by the fused one. Track::prior, status and the counters are left alone, except that
+///    adopted copies are confirmed, with detected = false.
+///
+/// Postconditions: within one connected part of the network no two clusters share a key, so no
+/// list holds two tracks with one key; tracks never change label, and lists only grow (fusion
+/// deletes nothing: deletion stays with the tracker). Tracks of agents out of range of everyone
+/// are untouched. The result depends only on the inputs, the seed and the number of fuse() calls
+/// so far (the loss streams advance), never on timing.
+///
+/// Memory: scratch buffers are members, cleared and refilled every step, so a steady team
+/// allocates nothing per step once warmed up (except to append adopted tracks). Not thread-safe;
+/// one TeamFusion per simulated team.
+class TeamFusion {
+ public:
+  /// config: validated at load time (rounds ≥ 0, comm_range > 0, comm_drop in [0, 1),
+  /// association_gate > 0 and finite). agents: team size N ≥ 0. seed: the trial's seed.
+  TeamFusion(const FusionConfig& config, int agents, std::uint64_t seed);
+
+  /// Runs one fusion step on every agent's lists. agents.size() must equal the team size
+  /// (checked: a mismatch is a programming error and aborts).
+  void fuse(std::span<const AgentTracks> agents);
+
+  /// Totals since construction.
+  const FusionDiagnostics& diagnostics() const { return diagnostics_; }
+  /// The graph of the last step (neighbours, weights, losses), for recording and tests.
+  const CommGraph& graph() const { return graph_; }
+  const FusionConfig& config() const { return config_; }
+
+ private:
+  FusionConfig config_;
+  int agents_ = 0;
+  std::vector<RandomStream> loss_streams_;  // per agent: losses of the messages it receives
+  KeyMint mint_;
+  CommGraph graph_;
+  FusionDiagnostics diagnostics_;
+  std::vector<Vec2> positions_;
+  std::vector<std::vector<tracking::TargetTrack>*> target_lists_;
+  std::vector<std::vector<tracking::TreeTrack>*> tree_lists_;
+  TrackAssociation<4> target_association_;
+  TrackAssociation<3> tree_association_;
+  InformationConsensus<4> target_consensus_;
+  InformationConsensus<3> tree_consensus_;
+  Clusters target_clusters_;
+  Clusters tree_clusters_;
+};
+
+}  // namespace canopy::agents::fusion

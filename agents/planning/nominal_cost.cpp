@@ -1,0 +1,328 @@
+#include "agents/planning/nominal_cost.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+
+namespace canopy::agents::planning {
+namespace {
+
+constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is kept (as the world)
+constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
+constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in reach_
+
+/// R(z, p) of sensing/noise.h (paper eq. 2) without trigonometry: cos ρ and sin ρ are the
+/// components of the unit bearing (z − p)/|z − p|; ρ = 0 when z = p, as atan2(0, 0) gives.
+Mat2 noiseCovariance(const Vec2& z, const Vec2& p, const sensing::SensorQuality& q) {
+  const Vec2 offset = z - p;
+  const double r = offset.norm();
+  const double d = std::max(q.r0, r);                               // d = max(r0, |z − p_i|)
+  const double c = r > 0.0 ? offset.x() / r : 1.0;                  // cos ρ
+  const double s = r > 0.0 ? offset.y() / r : 0.0;                  // sin ρ
+  const double range_var = q.alpha * 0.1 * d;                       // α · 0.1 d
+  const double bearing_var = q.alpha * 0.1 * std::numbers::pi * d;  // α · 0.1 π d
+  Mat2 R;                                                           // G diag(range, bearing) Gᵀ
+  R(0, 0) = c * c * range_var + s * s * bearing_var;
+  R(1, 1) = s * s * range_var + c * c * bearing_var;
+  R(0, 1) = R(1, 0) = c * s * (range_var - bearing_var);
+  return R;
+}
+
+/// P⁻ = F P Fᵀ + Q with F = [[I, Δ I], [0, I]] (NCV), written by 2x2 blocks.
+void predict(Mat4& P, const Mat4& Q, double dt) {
+  const Mat2 Ppv = P.topRightCorner<2, 2>();
+  const Mat2 Pvv = P.bottomRightCorner<2, 2>();
+  const Mat2 Ppv_new = Ppv + dt * Pvv;  // P_pv + Δ P_vv
+  // P_pp + Δ(P_pv + P_vp) + Δ² P_vv
+  P.topLeftCorner<2, 2>() += dt * (Ppv + Ppv.transpose()) + (dt * dt) * Pvv;
+  P.topRightCorner<2, 2>() = Ppv_new;
+  P.bottomLeftCorner<2, 2>() = Ppv_new.transpose();
+  P += Q;
+}
+
+/// One position measurement of covariance R, Kalman form of the information update:
+/// P ← P − C S⁻¹ Cᵀ = (P⁻¹ + Hᵀ R⁻¹ H)⁻¹, C = P Hᵀ = [c0 c1], S = H P Hᵀ + R.
+/// S is solved by its LDLᵀ factors, S = L D Lᵀ with L = [[1, 0], [l, 1]], D = diag(d0, d1):
+///   C S⁻¹ Cᵀ = (C L⁻ᵀ) D⁻¹ (C L⁻ᵀ)ᵀ = c0 c0ᵀ/d0 + g gᵀ/d1,  g = c1 − l c0,
+/// two rank-one downdates. Each term is an outer product of a vector with itself, so P stays
+/// exactly symmetric (the symmetrisation is built in).
+void measurementUpdate(Mat4& P, const Mat2& R) {
+  const Vec4 c0 = P.col(0);
+  const Vec4 c1 = P.col(1);
+  const double d0 = P(0, 0) + R(0, 0);                            // S₀₀
+  const double l = (P(1, 0) + R(1, 0)) / d0;                      // S₁₀ / d0
+  const double d1 = P(1, 1) + R(1, 1) - l * (P(0, 1) + R(0, 1));  // S₁₁ − l S₀₁
+  const Vec4 g = c1 - l * c0;
+  P -= (c0 * c0.transpose()) * (1.0 / d0) + (g * g.transpose()) * (1.0 / d1);
+}
+
+sensing::Footprint placeFootprint(const sensing::FootprintDef& def, const Vec2& centre, double c,
+                                  double s) {
+  sensing::Footprint f;  // Footprint::place with cos ψ, sin ψ already known
+  f.shape = def.shape;
+  f.centre = centre;
+  f.cos_yaw = c;
+  f.sin_yaw = s;
+  f.half = 0.5 * def.size;
+  f.radius = def.radius;
+  return f;
+}
+
+/// The largest distance from the UAV's ground point to a point of its footprint (m).
+double circumradius(const sensing::FootprintDef& def) {
+  return def.shape == sensing::FootprintShape::disc ? def.radius : 0.5 * def.size.norm();
+}
+
+}  // namespace
+
+CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
+  CostSettings s;
+  s.horizon = config.horizon;
+  s.period = config.plan_period;
+  s.discount = config.discount;
+  s.full_trace = config.full_trace;
+  s.terminal_penalty = config.terminal_penalty;
+  s.terminal_penalty_weight = config.terminal_penalty_weight;
+  s.sigma_a = sigma_a;
+  return s;
+}
+
+void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
+                      sensing::Footprint* footprints) const {
+  Vec2 p = uav.position;
+  double c = uav.cos_yaw, s = uav.sin_yaw;
+  const double v_max_sq = uav.v_max * uav.v_max;
+  for (int m = 0; m < horizon_; ++m) {
+    Vec2 a = actions[m];
+    double speed_sq = a.squaredNorm();
+    if (speed_sq > v_max_sq) {  // the world clamps |a| to v_max
+      a *= uav.v_max / std::sqrt(speed_sq);
+      speed_sq = v_max_sq;
+    }
+    p += a * period_;  // p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
+    if (uav.yaw_follows && speed_sq > kHoverSpeedSquared) {
+      const double speed = std::sqrt(speed_sq);
+      c = a.x() / speed;  // ψ = atan2(a_y, a_x), kept as (cos ψ, sin ψ)
+      s = a.y() / speed;
+    }
+    positions[m] = p;
+    footprints[m] = placeFootprint(uav.footprint, p, c, s);
+  }
+}
+
+double NominalCost::stageTrace(const Mat4& P) const {
+  return full_trace_ ? P.trace() : P(0, 0) + P(1, 1);  // tr(P) or tr(P_pos)
+}
+
+void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> free_agents,
+                          std::span<const Plan> assumed) {
+  const CostSettings& s = problem.settings;
+  const int H = horizon_ = s.horizon;
+  const double dt = period_ = s.period;
+  full_trace_ = s.full_trace;
+  terminal_ = s.terminal_penalty;
+  weight_ = s.terminal_penalty_weight;
+  const int n_uavs = static_cast<int>(problem.uavs.size());
+  const int n_targets = static_cast<int>(problem.targets.size());
+  if (H < 1 || static_cast<int>(free_agents.size()) > kMaxFreeAgents ||
+      static_cast<int>(assumed.size()) != n_uavs) {
+    std::fprintf(
+        stderr, "NominalCost::prepare: H = %d (≥ 1), %zu free UAVs (≤ %d), %zu plans for %d UAVs\n",
+        H, free_agents.size(), kMaxFreeAgents, assumed.size(), n_uavs);
+    std::abort();
+  }
+
+  // Q(Δ) = σ_a² [[Δ⁴/4 I, Δ³/2 I], [Δ³/2 I, Δ² I]] (per axis, paper eq. 4).
+  const double q = s.sigma_a * s.sigma_a;
+  Q_.setZero();
+  for (int k = 0; k < 2; ++k) {
+    Q_(k, k) = q * dt * dt * dt * dt / 4.0;
+    Q_(k, k + 2) = Q_(k + 2, k) = q * dt * dt * dt / 2.0;
+    Q_(k + 2, k + 2) = q * dt * dt;
+  }
+  discount_.resize(H);
+  for (int m = 0; m < H; ++m) discount_[m] = std::pow(s.discount, m);  // γ^{m−1}, m = 1..H
+
+  auto moverOf = [](const UavState& u) {
+    const bool follows = u.yaw_mode == world::YawMode::velocity;
+    return Mover{u.position, std::cos(u.yaw), std::sin(u.yaw), follows,
+                 u.v_max,    u.footprint,     u.quality};
+  };
+  std::vector<char> is_free(n_uavs, 0);
+  free_.clear();
+  free_index_.assign(free_agents.begin(), free_agents.end());
+  for (const int i : free_agents) {
+    is_free[i] = 1;
+    free_.push_back(moverOf(problem.uavs[i]));
+  }
+
+  // The fixed UAVs' paths and footprints over the horizon.
+  all_final_.assign(n_uavs, Vec2::Zero());
+  std::vector<int> fixed;
+  std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * H);
+  std::vector<sensing::Footprint> fixed_fp(fixed_pos.size());
+  std::vector<Vec2> actions(H);
+  for (int i = 0; i < n_uavs; ++i) {
+    if (is_free[i]) continue;
+    fixed.push_back(i);
+    for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
+    fly(moverOf(problem.uavs[i]), actions, &fixed_pos[i * H], &fixed_fp[i * H]);
+    all_final_[i] = fixed_pos[i * H + H - 1];
+  }
+
+  const std::size_t cells = static_cast<std::size_t>(n_targets) * H;
+  z_.resize(cells);
+  occluded_.assign(cells, 0);
+  fixed_seen_.assign(cells, 0);
+  fixed_R_.assign(cells, Mat2::Zero());
+  reach_.assign(cells, 0);
+  start_.assign(n_targets, H + 1);
+  P_start_.resize(n_targets);
+  cost_start_.assign(n_targets, 0.0);
+  seen_final_.assign(n_targets, 0);
+
+  for (int j = 0; j < n_targets; ++j) {
+    Vec4 x = problem.targets[j].x;
+    const Mat4& P0 = problem.targets[j].P;
+    Mat4 P = 0.5 * (P0 + P0.transpose());  // symmetric, so the recursion keeps it exactly so
+    double cost = 0.0;
+    bool started = false;
+    for (int m = 1; m <= H; ++m) {
+      const std::size_t k = static_cast<std::size_t>(j) * H + m - 1;
+      x.head<2>() += dt * x.tail<2>();  // ξ_{j,m} = F(Δ) ξ_{j,m−1}, no noise
+      const Vec2 z = x.head<2>();
+      z_[k] = z;
+      occluded_[k] = problem.map != nullptr && problem.map->occludes(z);
+      if (!occluded_[k]) {
+        Mat2 information = Mat2::Zero();  // Σ R_i⁻¹ over the fixed UAVs that see z
+        int seen = 0;
+        for (const int i : fixed) {
+          const std::size_t im = static_cast<std::size_t>(i) * H + m - 1;
+          if (!fixed_fp[im].contains(z)) continue;
+          const Mat2 R = noiseCovariance(z, fixed_pos[im], problem.uavs[i].quality);
+          if (seen++ == 0) fixed_R_[k] = R;
+          information += R.llt().solve(Mat2::Identity());
+        }
+        if (seen > 1) fixed_R_[k] = information.llt().solve(Mat2::Identity());  // R_fix
+        fixed_seen_[k] = seen > 0;
+        for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
+          // |p_{f,m} − p_{f,0}| ≤ m·v_max·Δ, and a footprint holds points within its circumradius.
+          const double reach = m * free_[f].v_max * dt + circumradius(free_[f].footprint);
+          if ((z - free_[f].position).norm() <= reach + kReachSlack) reach_[k] |= 1ULL << f;
+        }
+      }
+      if (!started && reach_[k] != 0) {
+        started = true;
+        start_[j] = m;
+        P_start_[j] = P;
+        cost_start_[j] = cost;
+      }
+      if (started) continue;
+      predict(P, Q_, dt);
+      if (fixed_seen_[k]) measurementUpdate(P, fixed_R_[k]);
+      cost += discount_[m - 1] * stageTrace(P);
+      if (m == H) seen_final_[j] = fixed_seen_[k];
+    }
+    if (!started) {
+      P_start_[j] = P;
+      cost_start_[j] = cost;
+    }
+  }
+
+  free_pos_.resize(free_.size() * H);
+  free_fp_.resize(free_.size() * H);
+  trace_final_.assign(n_targets, 0.0);
+  in_view_final_.assign(n_targets, 0);
+  uncovered_.assign(n_targets, 0);
+  charged_.assign(n_uavs, 0.0);
+}
+
+double NominalCost::evaluate(std::span<const Vec2> actions) {
+  const int H = horizon_;
+  for (std::size_t f = 0; f < free_.size(); ++f) {
+    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * H], &free_fp_[f * H]);
+    all_final_[free_index_[f]] = free_pos_[f * H + H - 1];
+  }
+
+  double J = 0.0;
+  const int n_targets = static_cast<int>(start_.size());
+  for (int j = 0; j < n_targets; ++j) {
+    Mat4 P = P_start_[j];
+    J += cost_start_[j];
+    bool seen_final = seen_final_[j];
+    for (int m = start_[j]; m <= H; ++m) {
+      const std::size_t k = static_cast<std::size_t>(j) * H + m - 1;
+      predict(P, Q_, period_);  // P⁻_{j,m}
+      bool seen = false;
+      if (!occluded_[k]) {  // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map}
+        if (fixed_seen_[k]) {
+          measurementUpdate(P, fixed_R_[k]);
+          seen = true;
+        }
+        for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
+          const int f = std::countr_zero(bits);
+          const std::size_t fm = static_cast<std::size_t>(f) * H + m - 1;
+          if (!free_fp_[fm].contains(z_[k])) continue;
+          measurementUpdate(P, noiseCovariance(z_[k], free_pos_[fm], free_[f].quality));
+          seen = true;
+        }
+      }
+      J += discount_[m - 1] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
+      if (m == H) seen_final = seen;
+    }
+    trace_final_[j] = P(0, 0) + P(1, 1);  // tr(P_{j,H}[pos])
+    in_view_final_[j] = seen_final;
+  }
+  if (!terminal_ || charged_.empty()) return J;
+
+  // Terminal penalty: tracks in no footprint and not occluded at m = H, by decreasing
+  // tr(P_{j,H}[pos]) (ties: lower index first; stable insertion sort).
+  int count = 0;
+  for (int j = 0; j < n_targets; ++j) {
+    if (in_view_final_[j] || occluded_[static_cast<std::size_t>(j) * H + H - 1]) continue;
+    int slot = count++;
+    for (; slot > 0 && trace_final_[uncovered_[slot - 1]] < trace_final_[j]; --slot) {
+      uncovered_[slot] = uncovered_[slot - 1];
+    }
+    uncovered_[slot] = j;
+  }
+  std::fill(charged_.begin(), charged_.end(), 0.0);
+  for (int c = 0; c < count; ++c) {
+    const int j = uncovered_[c];
+    const Vec2& z = z_[static_cast<std::size_t>(j) * H + H - 1];
+    int best = 0;
+    double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
+    for (int i = 0; i < static_cast<int>(charged_.size()); ++i) {
+      const double distance = (all_final_[i] - z).norm();  // |p_{i,H} − z_{j,H}|
+      if (charged_[i] + distance < best_total) {
+        best = i;
+        best_total = charged_[i] + distance;
+        best_distance = distance;
+      }
+    }
+    J += weight_ * best_total * trace_final_[j];  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
+    charged_[best] += best_distance;              // D_i += |p_{i,H} − z_{j,H}|
+  }
+  return J;
+}
+
+double nominalCost(const PlanningProblem& problem, std::span<const Plan> plans) {
+  const int H = problem.settings.horizon;
+  std::vector<int> everyone(problem.uavs.size());
+  std::vector<Vec2> actions;
+  actions.reserve(everyone.size() * H);
+  for (std::size_t i = 0; i < everyone.size(); ++i) {
+    everyone[i] = static_cast<int>(i);
+    for (int m = 0; m < H; ++m) actions.push_back(plans[i].action(m));
+  }
+  NominalCost cost;
+  cost.prepare(problem, everyone, plans);
+  return cost.evaluate(actions);
+}
+
+}  // namespace canopy::agents::planning

@@ -1,0 +1,121 @@
+#pragma once
+// The NBO cost of a joint plan (algorithms.md §6; paper eqs. 5–6), evaluated on nominal target
+// trajectories. Built once per planning call (prepare), then evaluated many times by the swarm
+// without allocating.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "agents/config.h"
+#include "agents/gaussian.h"
+#include "agents/occlusion_map.h"
+#include "agents/planning/plan.h"
+#include "agents/planning/uav_state.h"
+#include "core/types.h"
+#include "sensing/footprint.h"
+
+namespace canopy::agents::planning {
+
+/// The cost's settings, from the scenario's `planner` section and the tracker's σ_a.
+struct CostSettings {
+  int horizon = 5;                       // H planning steps
+  double period = 1.0;                   // s, Δ between planning steps
+  double discount = 1.0;                 // γ (dimensionless)
+  bool full_trace = false;               // tr(P) instead of tr(P_pos) in the stage cost
+  bool terminal_penalty = true;          // Miller et al. 2009 penalty at m = H
+  double terminal_penalty_weight = 0.5;  // w, 1/m
+  double sigma_a = 1.0;                  // m/s², NCV process-noise intensity σ_a
+
+  static CostSettings from(const PlannerConfig& config, double sigma_a);
+};
+
+/// One agent's planning problem at an epoch: its belief, the team's UAVs, its map.
+struct PlanningProblem {
+  std::span<const TargetGaussian> targets;  // the agent's fused OOI tracks ξ_j (m, m/s), P_j
+  std::span<const UavState> uavs;           // every UAV of the team, by index i
+  const OcclusionMap* map = nullptr;  // the planner's occlusion map; nullptr: nothing occludes
+  CostSettings settings;
+};
+
+/// J(a) = Σ_{m=1..H} γ^{m−1} Σ_j tr(P_{j,m}) + terminal penalty, as a function of the actions of
+/// the "free" UAVs; the other UAVs follow fixed plans given to prepare().
+///
+/// The covariance recursion is the information update
+///   P_{j,m} = (P⁻_{j,m}⁻¹ + Σ_{i∈V_{j,m}} Hᵀ R_i⁻¹ H)⁻¹,  P⁻_{j,m} = F P_{j,m−1} Fᵀ + Q(Δ),
+/// evaluated in its exact Kalman form, one measurement at a time: for each i ∈ V_{j,m},
+///   P ← P − C S⁻¹ Cᵀ,  C = P Hᵀ (4x2),  S = H P Hᵀ + R_i (2x2, solved by its LDLᵀ factors).
+/// The two agree by the matrix inversion lemma, and sequential processing equals the summed
+/// information because the nominal measurements are independent given the state. The fixed UAVs'
+/// measurements at (j, m) are fused beforehand into one, R_fix = (Σ R_i⁻¹)⁻¹.
+///
+/// Precomputed per call: nominal trajectories z_{j,m} = H F(Δ)^m ξ_j, occlusion flags, the fixed
+/// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
+/// track's recursion up to the first step a free UAV could see it. A commanded speed above v_max
+/// is clamped, as the world does.
+class NominalCost {
+ public:
+  /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
+  /// plan per UAV; the plans of the others are read from it (a missing step repeats the last
+  /// action, an empty plan hovers), the entries of free UAVs are ignored.
+  void prepare(const PlanningProblem& problem, std::span<const int> free_agents,
+               std::span<const Plan> assumed);
+
+  /// actions: a_{f,m} for each free UAV f (in prepare's order) and m = 1..H, agent-major
+  /// (size = free count · H), m/s. Returns J (m², or mixed units with full_trace).
+  double evaluate(std::span<const Vec2> actions);
+
+  int horizon() const { return horizon_; }
+  int freeCount() const { return static_cast<int>(free_.size()); }
+
+ private:
+  struct Mover {                      // a UAV's kinematics and camera, as the cost moves it
+    Vec2 position;                    // m, p_{i,0}
+    double cos_yaw, sin_yaw;          // ψ now
+    bool yaw_follows;                 // ψ follows the direction of a_{i,m} (kept while hovering)
+    double v_max;                     // m/s
+    sensing::FootprintDef footprint;  // φ relative to the UAV (m)
+    sensing::SensorQuality quality;   // α, r0 (m) of R
+  };
+  // Moves a UAV through H actions: fills H positions (m) and footprints.
+  void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
+           sensing::Footprint* footprints) const;
+  double stageTrace(const Mat4& P) const;
+
+  int horizon_ = 0;               // H
+  double period_ = 1.0;           // s, Δ
+  bool full_trace_ = false;       // stage cost on tr(P) rather than tr(P_pos)
+  bool terminal_ = true;          // add the terminal penalty
+  double weight_ = 0.5;           // 1/m, w
+  Mat4 Q_ = Mat4::Zero();         // Q(Δ) of the NCV model
+  std::vector<double> discount_;  // γ^{m−1}, m = 1..H
+  std::vector<Mover> free_;       // the free UAVs, in prepare's order
+  std::vector<Vec2> all_final_;   // m, p_{i,H} of every UAV (free ones filled per call)
+  std::vector<int> free_index_;   // UAV index of each free UAV
+
+  // Per track j and step m, at [j·H + m − 1].
+  std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
+  std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown of the map
+  std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}
+  std::vector<Mat2> fixed_R_;             // m², R_fix at (j, m) when fixed_seen_
+  std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
+
+  // Per track: the recursion before the first step a free UAV could see it.
+  std::vector<int> start_;                // first such m (H + 1: none)
+  std::vector<Mat4> P_start_;             // P_{j,start−1}
+  std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
+  std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
+
+  // Scratch reused by evaluate().
+  std::vector<Vec2> free_pos_;               // m, p_{f,m}, free-major
+  std::vector<sensing::Footprint> free_fp_;  // φ_f(p_{f,m}), free-major
+  std::vector<double> trace_final_;          // m², tr(P_{j,H}[pos])
+  std::vector<std::uint8_t> in_view_final_;  // some footprint holds z_{j,H} (not occluded)
+  std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
+  std::vector<double> charged_;              // m, D_i
+};
+
+/// The cost of a complete joint plan (one plan per UAV) — prepares and evaluates once. For tests,
+/// records and reports; the planner itself reuses one NominalCost.
+double nominalCost(const PlanningProblem& problem, std::span<const Plan> plans);
+
+}  // namespace canopy::agents::planning

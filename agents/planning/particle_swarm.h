@@ -1,0 +1,64 @@
+#pragma once
+// A global-best particle swarm over a box with periodic boundaries (algorithms.md §6). Generic: it
+// minimises any batch cost over a flat vector, so it can be tested on standard functions.
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "agents/config.h"
+#include "core/random.h"
+
+namespace canopy::agents::planning {
+
+struct SwarmOptions {
+  int particles = 100;        // swarm size
+  double inertia = 0.9;       // w
+  double c1 = 0.5;            // cognitive weight (towards the particle's own best)
+  double c2 = 0.3;            // social weight (towards the swarm's best)
+  double ftol = 5e-4;         // a change of the best cost below ftol·(1 + |best|) is a stall
+  int stall_iterations = 50;  // stop after this many stalls in a row
+  int max_iterations = 1000;  // hard cap on velocity/position updates
+
+  /// particles = particles_per_step · H, the rest copied.
+  static SwarmOptions from(const PsoConfig& config, int horizon);
+};
+
+struct SwarmResult {
+  std::vector<double> best;  // the best position found (size = dimension)
+  double best_cost = 0.0;
+  int iterations = 0;         // velocity/position updates performed
+  long long evaluations = 0;  // cost evaluations, the initial swarm included
+  bool stalled = false;       // stopped by the ftol criterion (false: max_iterations reached)
+};
+
+/// positions: particle-major, particles × dimension; costs: one per particle, to be written.
+using BatchCost = std::function<void(std::span<const double> positions, std::span<double> costs)>;
+
+/// Synchronous global-best PSO:
+///   v ← w v + c1 r1 δ(x_best,own − x) + c2 r2 δ(x_best,swarm − x),  x ← wrap(x + v),
+/// r1, r2 ~ U[0, 1) per particle and coordinate. A coordinate that leaves [lo, hi] re-enters from
+/// the opposite bound (periodic), and δ is the shortest periodic displacement (remainder by
+/// hi − lo), so the box is a torus for the attraction too: a minimum near a bound pulls particles
+/// from both sides of it rather than across the whole box. Initial positions are uniform in the
+/// box, initial velocities uniform in ±kInitialVelocityFraction·(hi − lo). Draw order (fixed, so a
+/// stream gives one result): per particle, per coordinate, position then velocity; per iteration,
+/// per particle, per coordinate, r1 then r2.
+class ParticleSwarm {
+ public:
+  static constexpr double kInitialVelocityFraction = 0.5;
+
+  /// warm_start: empty, or a position (size = dimension) given to particle 0 instead of its draw.
+  /// Buffers are kept between calls; the cost is called once per iteration with the whole swarm.
+  SwarmResult minimise(const BatchCost& cost, std::span<const double> lo,
+                       std::span<const double> hi, const SwarmOptions& options, RandomStream& rng,
+                       std::span<const double> warm_start = {});
+
+ private:
+  std::vector<double> x_, v_, own_best_, own_best_cost_, cost_;
+};
+
+/// x wrapped periodically into the closed interval [lo, hi]: above hi it re-enters at lo, below lo
+/// at hi.
+double wrapPeriodic(double x, double lo, double hi);
+
+}  // namespace canopy::agents::planning

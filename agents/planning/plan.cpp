@@ -1,0 +1,39 @@
+#include "agents/planning/plan.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace canopy::agents::planning {
+
+Vec2 Plan::action(int m) const {
+  if (velocities.empty()) return Vec2::Zero();
+  return velocities[std::min<std::size_t>(std::max(m, 0), velocities.size() - 1)];
+}
+
+Plan shiftedPlan(const Plan& plan, int steps, int horizon) {
+  Plan shifted;
+  shifted.velocities.reserve(horizon);
+  for (int m = 0; m < horizon; ++m) shifted.velocities.push_back(plan.action(m + steps));
+  return shifted;
+}
+
+Plan hoverPlan(int horizon) {
+  Plan plan;
+  plan.velocities.assign(horizon, Vec2::Zero());
+  return plan;
+}
+
+std::vector<Vec2> plannedPath(const UavState& uav, const Plan& plan, double period) {
+  std::vector<Vec2> path;
+  path.reserve(plan.velocities.size());
+  Vec2 p = uav.position;
+  for (Vec2 a : plan.velocities) {
+    const double speed = a.norm();
+    if (speed > uav.v_max) a *= uav.v_max / speed;  // |a| ≤ v_max
+    p += a * period;                                // p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
+    path.push_back(p);
+  }
+  return path;
+}
+
+}  // namespace canopy::agents::planning

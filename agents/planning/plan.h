@@ -1,0 +1,34 @@
+#pragma once
+// A plan: H velocity commands, one per planning step Δ (receding horizon, algorithms.md §1).
+#include <span>
+#include <vector>
+
+#include "agents/planning/uav_state.h"
+#include "core/types.h"
+
+namespace canopy::agents::planning {
+
+struct Plan {
+  std::vector<Vec2> velocities;  // m/s, a_{i,1..H}; only the first is applied
+  double cost = 0.0;  // m² (J of the joint plan it was chosen with, on the planner's belief)
+
+  /// The command to apply now: the first action, or hover for an empty plan.
+  Vec2 command() const { return velocities.empty() ? Vec2::Zero() : velocities.front(); }
+  /// Action m (0-based) with the intention rule: a missing step repeats the last action; an empty
+  /// plan hovers.
+  Vec2 action(int m) const;
+};
+
+/// The intention a plan leaves `steps` epochs later (paper eq. 7): the plan shifted by `steps`,
+/// padded to `horizon` actions by repeating its last action; an empty plan gives hovering. The
+/// result's cost is 0 (it was not optimised).
+Plan shiftedPlan(const Plan& plan, int steps, int horizon);
+
+/// A plan of `horizon` zero velocities.
+Plan hoverPlan(int horizon);
+
+/// The ground points p_{i,1..H} the plan visits from `uav`'s position, p_{i,m} = p_{i,m−1} +
+/// a_{i,m}·Δ, with each action clamped to v_max as the world does (m).
+std::vector<Vec2> plannedPath(const UavState& uav, const Plan& plan, double period);
+
+}  // namespace canopy::agents::planning

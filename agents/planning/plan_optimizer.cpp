@@ -1,0 +1,67 @@
+#include "agents/planning/plan_optimizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/angles.h"
+
+namespace canopy::agents::planning {
+
+void PlanOptimizer::decode(std::span<const double> x) {
+  for (std::size_t k = 0; k < actions_.size(); ++k) {
+    const double speed = x[2 * k], heading = x[2 * k + 1];
+    actions_[k] = speed * Vec2(std::cos(heading), std::sin(heading));  // a = s (cos θ, sin θ)
+  }
+}
+
+PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConfig& pso,
+                                   std::span<const int> free_agents, std::span<const Plan> assumed,
+                                   std::span<const Plan> warm_start, RandomStream& rng) {
+  const int H = problem.settings.horizon;
+  const std::size_t n_free = free_agents.size();
+  cost_.prepare(problem, free_agents, assumed);
+  actions_.resize(n_free * H);
+  lo_.assign(2 * n_free * H, 0.0);
+  hi_.resize(lo_.size());
+  for (std::size_t f = 0; f < n_free; ++f) {
+    for (int m = 0; m < H; ++m) {
+      const std::size_t k = 2 * (f * H + m);
+      hi_[k] = problem.uavs[free_agents[f]].v_max;
+      hi_[k + 1] = kTwoPi;
+    }
+  }
+  warm_.clear();
+  if (pso.warm_start && warm_start.size() == n_free) {
+    for (std::size_t f = 0; f < n_free; ++f) {
+      for (int m = 0; m < H; ++m) {
+        const Vec2 a = warm_start[f].action(m);
+        const double speed = a.norm();
+        warm_.push_back(std::min(speed, problem.uavs[free_agents[f]].v_max));
+        warm_.push_back(speed > 0.0 ? wrapAnglePositive(std::atan2(a.y(), a.x())) : 0.0);
+      }
+    }
+  }
+
+  const BatchCost batch = [this](std::span<const double> positions, std::span<double> costs) {
+    const std::size_t dim = 2 * actions_.size();
+    for (std::size_t p = 0; p < costs.size(); ++p) {
+      decode(positions.subspan(p * dim, dim));
+      costs[p] = cost_.evaluate(actions_);
+    }
+  };
+  const SwarmResult best = swarm_.minimise(batch, lo_, hi_, SwarmOptions::from(pso, H), rng, warm_);
+
+  decode(best.best);
+  PlanSearch search;
+  search.cost = best.best_cost;
+  search.iterations = best.iterations;
+  search.evaluations = best.evaluations;
+  search.plans.resize(n_free);
+  for (std::size_t f = 0; f < n_free; ++f) {
+    search.plans[f].velocities.assign(actions_.begin() + f * H, actions_.begin() + (f + 1) * H);
+    search.plans[f].cost = best.best_cost;
+  }
+  return search;
+}
+
+}  // namespace canopy::agents::planning

@@ -1,0 +1,43 @@
+#pragma once
+// NBO for a set of UAVs: the particle swarm over their speeds and headings, the cost over the
+// joint plan with every other UAV held to a given plan (algorithms.md §6).
+#include <span>
+#include <vector>
+
+#include "agents/config.h"
+#include "agents/planning/nominal_cost.h"
+#include "agents/planning/particle_swarm.h"
+#include "agents/planning/plan.h"
+#include "core/random.h"
+
+namespace canopy::agents::planning {
+
+struct PlanSearch {
+  std::vector<Plan> plans;    // one per free UAV, in the order given; each carries `cost`
+  double cost = 0.0;          // J of the best joint plan found
+  int iterations = 0;         // swarm iterations
+  long long evaluations = 0;  // cost evaluations
+};
+
+/// Decision variables, per free UAV f and step m (agent-major): x[2(f·H + m)] = speed ∈ [0,
+/// v_max_f] (m/s), x[2(f·H + m) + 1] = heading ∈ [0, 2π] (rad); a_{f,m} = speed · (cos heading, sin
+/// heading). Keeps its buffers between calls; one instance per thread.
+class PlanOptimizer {
+ public:
+  /// free_agents: the UAVs to optimise (SMA: the planning agent; Dec-POMDP: all). assumed: one
+  /// plan per UAV, used for the others. warm_start: empty, or one plan per free UAV (the previous
+  /// plan already shifted), used when pso.warm_start is on.
+  PlanSearch optimise(const PlanningProblem& problem, const PsoConfig& pso,
+                      std::span<const int> free_agents, std::span<const Plan> assumed,
+                      std::span<const Plan> warm_start, RandomStream& rng);
+
+ private:
+  void decode(std::span<const double> x);  // x → actions_
+
+  NominalCost cost_;
+  ParticleSwarm swarm_;
+  std::vector<double> lo_, hi_, warm_;
+  std::vector<Vec2> actions_;  // m/s, the free UAVs' actions of one particle
+};
+
+}  // namespace canopy::agents::planning

@@ -1,0 +1,150 @@
+#include "agents/planning/team_planner.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+
+namespace canopy::agents::planning {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+[[noreturn]] void fail(const char* what) {
+  std::fprintf(stderr, "TeamPlanner: %s\n", what);
+  std::abort();
+}
+
+}  // namespace
+
+TeamPlanner::TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed)
+    : config_(config), settings_(CostSettings::from(config, sigma_a)), seed_(seed) {}
+
+TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
+                           std::span<const AgentView> views) {
+  const int n = static_cast<int>(uavs.size());
+  if (static_cast<int>(views.size()) != n) fail("one view per UAV expected");
+  if (rng_.empty()) {
+    for (int i = 0; i < n; ++i) rng_.emplace_back(seed_, "pso", static_cast<std::uint64_t>(i));
+    published_.assign(n, IntentionMessage{});
+    last_joint_.assign(n, {});
+    last_joint_epoch_.assign(n, -1);
+    order_ = config_.order;
+    if (order_.empty()) {
+      order_.resize(n);
+      std::iota(order_.begin(), order_.end(), 0);
+    }
+    std::vector<char> seen(n, 0);
+    if (static_cast<int>(order_.size()) != n) fail("the order must list every UAV once");
+    for (const int i : order_) {
+      if (i < 0 || i >= n || seen[i]++) fail("the order must list every UAV once");
+    }
+  }
+  if (static_cast<int>(rng_.size()) != n) fail("the team size changed between epochs");
+
+  TeamPlan out;
+  out.epoch = epoch;
+  out.plans.assign(n, hoverPlan(settings_.horizon));
+  out.reports.resize(n);
+  for (int i = 0; i < n; ++i) {
+    out.reports[i].agent = i;
+    out.reports[i].plan = out.plans[i];
+  }
+  switch (config_.algorithm) {
+    case PlannerAlgorithm::none:
+      break;
+    case PlannerAlgorithm::sma:
+      planSequential(out, uavs, views);
+      break;
+    case PlannerAlgorithm::dec_pomdp:
+      for (const int i : order_) planJoint(out, i, uavs, views[i]);
+      break;
+    case PlannerAlgorithm::centralized:
+      planJoint(out, order_.front(), uavs, views[order_.front()]);
+      break;
+  }
+  return out;
+}
+
+void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
+                                 std::span<const AgentView> views) {
+  const int n = static_cast<int>(uavs.size());
+  const int H = settings_.horizon;
+  // Before anyone plans, every agent is represented by its intention.
+  std::vector<Plan> joint(n);
+  std::vector<int> joint_epoch(n, -1);
+  for (int i = 0; i < n; ++i) {
+    const IntentionMessage& last = published_[i];
+    joint[i] = last.epoch < 0 ? hoverPlan(H) : shiftedPlan(last.plan, out.epoch - last.epoch, H);
+    joint_epoch[i] = last.epoch;
+  }
+  for (const int i : order_) {
+    const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
+    const std::span<const Plan> warm =
+        published_[i].epoch < 0 ? std::span<const Plan>() : std::span<const Plan>(&joint[i], 1);
+    const int self[] = {i};
+    const Clock::time_point start = Clock::now();
+    PlanSearch search = optimizer_.optimise(problem, config_.pso, self, joint, warm, rng_[i]);
+    const double seconds = secondsSince(start);
+
+    joint[i] = search.plans.front();
+    joint_epoch[i] = out.epoch;
+    out.plans[i] = joint[i];
+    out.reports[i] = AgentPlanReport{i,
+                                     joint[i],
+                                     joint,
+                                     joint_epoch,
+                                     search.cost,
+                                     seconds,
+                                     search.iterations,
+                                     search.evaluations};
+    out.messages.push_back(IntentionMessage{i, i, out.epoch, joint[i]});
+    published_[i] = out.messages.back();
+  }
+}
+
+void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs,
+                            const AgentView& view) {
+  const int n = static_cast<int>(uavs.size());
+  const int H = settings_.horizon;
+  std::vector<int> everyone(n);
+  std::iota(everyone.begin(), everyone.end(), 0);
+  const std::vector<Plan> unused(n);  // every UAV is free: no plan is held fixed
+  std::vector<Plan> warm;
+  if (last_joint_epoch_[planner] >= 0) {
+    for (const Plan& previous : last_joint_[planner]) {
+      warm.push_back(shiftedPlan(previous, out.epoch - last_joint_epoch_[planner], H));
+    }
+  }
+  const PlanningProblem problem{view.tracks, uavs, view.map, settings_};
+  const Clock::time_point start = Clock::now();
+  PlanSearch search =
+      optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng_[planner]);
+  const double seconds = secondsSince(start);
+  last_joint_[planner] = search.plans;
+  last_joint_epoch_[planner] = out.epoch;
+
+  const std::vector<int> joint_epoch(n, out.epoch);
+  const bool centralised = config_.algorithm == PlannerAlgorithm::centralized;
+  for (int i = 0; i < n; ++i) {
+    if (!centralised && i != planner) continue;
+    out.plans[i] = search.plans[i];
+    const bool own = i == planner;
+    out.reports[i] = AgentPlanReport{i,
+                                     search.plans[i],
+                                     search.plans,
+                                     joint_epoch,
+                                     search.cost,
+                                     own ? seconds : 0.0,
+                                     own ? search.iterations : 0,
+                                     own ? search.evaluations : 0};
+    if (centralised)
+      out.messages.push_back(IntentionMessage{planner, i, out.epoch, search.plans[i]});
+  }
+}
+
+}  // namespace canopy::agents::planning

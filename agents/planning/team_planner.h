@@ -1,0 +1,91 @@
+#pragma once
+// The team's planning epoch (algorithms.md §6): SMA-NBO (sequential, intentions passed in
+// `order`), Dec-POMDP NBO (every agent optimises the joint plan on its own belief) or centralised
+// (the first agent in `order` plans for all). The entry point the simulation calls.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "agents/config.h"
+#include "agents/gaussian.h"
+#include "agents/occlusion_map.h"
+#include "agents/planning/nominal_cost.h"
+#include "agents/planning/plan.h"
+#include "agents/planning/plan_optimizer.h"
+#include "agents/planning/uav_state.h"
+#include "core/random.h"
+
+namespace canopy::agents::planning {
+
+/// What one agent plans on: its own belief and its own map.
+struct AgentView {
+  std::span<const TargetGaussian> tracks;  // its fused OOI tracks ξ_j (m, m/s), P_j
+  const OcclusionMap* map = nullptr;       // its planning map (a-priori, Ŵ_i, or nullptr: none)
+};
+
+/// A plan as published to the team.
+struct IntentionMessage {
+  int from = -1;   // the agent that published it
+  int agent = -1;  // the UAV whose actions it holds (= from, except for centralised planning)
+  int epoch = -1;  // the planning epoch it was published in
+  Plan plan;
+};
+
+/// What one agent did in one epoch: the record of who saw what.
+struct AgentPlanReport {
+  int agent = -1;
+  Plan plan;                     // the plan it applies; plan.command() is its command now
+  std::vector<Plan> joint;       // the joint plan (one per UAV) its choice was evaluated in
+  std::vector<int> joint_epoch;  // per UAV: the epoch the plan used for it was made in (this
+                                 // epoch: a new plan; earlier: a shifted intention; −1: hover)
+  double cost = 0.0;             // J of `joint` on the agent's own belief (m²)
+  double seconds = 0.0;          // s, wall time of its optimisation (steady_clock, reporting only)
+  int iterations = 0;            // swarm iterations (0: it did not optimise)
+  long long evaluations = 0;     // cost evaluations
+};
+
+struct TeamPlan {
+  int epoch = -1;
+  std::vector<Plan> plans;                 // per UAV: the plan it applies
+  std::vector<IntentionMessage> messages;  // published this epoch, in publication order
+  std::vector<AgentPlanReport> reports;    // per UAV, by index
+};
+
+/// Keeps what persists between epochs: the published intentions, each agent's previous joint plan
+/// (warm starts of Dec-POMDP and centralised planning) and one "pso" RandomStream per agent, so
+/// a sequence of calls is bit-for-bit reproducible for a seed. Wall time is measured for the
+/// report only and never feeds back into a decision.
+class TeamPlanner {
+ public:
+  /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index).
+  TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed);
+
+  /// One planning epoch (epochs increase by one per plan_period). uavs and views: one per UAV,
+  /// by index, the same team size at every call. With algorithm `none` every UAV hovers.
+  /// SMA-NBO: agents plan in `order`; agent i optimises its own H actions against the new plans
+  /// of the agents before it and the intentions of those after it (their latest plan shifted by
+  /// the epochs elapsed, a missing step repeating the last action; hover without a plan), then
+  /// publishes {i, i, epoch, plan}. Dec-POMDP: each agent optimises all N·H actions on its own
+  /// view and applies its own; no messages. Centralised: the first agent in `order` optimises the
+  /// joint plan on its view and publishes each UAV's part ({leader, i, epoch, plan_i}).
+  TeamPlan plan(int epoch, std::span<const UavState> uavs, std::span<const AgentView> views);
+
+  const PlannerConfig& config() const { return config_; }
+
+ private:
+  void planSequential(TeamPlan& out, std::span<const UavState> uavs,
+                      std::span<const AgentView> views);
+  void planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs, const AgentView& view);
+
+  PlannerConfig config_;
+  CostSettings settings_;
+  std::uint64_t seed_;
+  std::vector<int> order_;                     // planning order (UAV indices)
+  std::vector<RandomStream> rng_;              // per agent, purpose "pso"
+  std::vector<IntentionMessage> published_;    // per agent: its latest message (epoch −1: none)
+  std::vector<std::vector<Plan>> last_joint_;  // per agent: its previous joint plan (or empty)
+  std::vector<int> last_joint_epoch_;          // per agent: the epoch of last_joint_
+  PlanOptimizer optimizer_;
+};
+
+}  // namespace canopy::agents::planning

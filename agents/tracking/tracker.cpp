@@ -1,0 +1,155 @@
+#include "agents/tracking/tracker.h"
+
+#include <algorithm>
+
+#include "agents/tracking/measurement_model.h"
+#include "agents/tracking/motion_model.h"
+
+namespace canopy::agents::tracking {
+namespace {
+
+// Σ_j β_tj from which a scan counts as a hit for confirmation.
+constexpr double kHitProbability = 0.5;
+
+// Expected visible: the predicted position lies in the own footprint and, for targets, is not
+// under a crown of the own occlusion map. A tree's centre lies inside its own crown, and sensing
+// exempts trees from occlusion, so trees only need the footprint.
+template <int N>
+bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
+                     const OcclusionMap& map) {
+  const Vec2 position = track.prior.x.template head<2>();
+  if (!footprint.contains(position)) return false;
+  if constexpr (N == 3) {
+    return true;
+  } else {
+    return !map.occludes(position);
+  }
+}
+
+}  // namespace
+
+Tracker::Tracker(int agent, const TrackingConfig& config) : agent_(agent), config_(config) {}
+
+void Tracker::preseed(int target, sensing::LabelId label, const Vec4& state) {
+  TargetTrack track;
+  track.key = {-1, target};
+  track.label = label;
+  track.posterior.x = state;
+  track.posterior.P = config_.preseed_variance.asDiagonal();
+  track.prior = track.posterior;
+  track.status = TrackStatus::confirmed;
+  targets_.push_back(track);
+}
+
+void Tracker::predict(double dt) {
+  for (TargetTrack& track : targets_) {
+    track.prior = predictNcv(track.posterior, dt, config_.sigma_a);
+    track.posterior = track.prior;
+  }
+  for (TreeTrack& track : trees_) {
+    track.prior = predictStatic(track.posterior);
+    track.posterior = track.prior;
+  }
+}
+
+void Tracker::update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
+                     const OcclusionMap& own_map) {
+  labels_.clear();
+  for (const TargetTrack& track : targets_) {
+    if (track.label != sensing::kTreeLabel) labels_.push_back(track.label);
+  }
+  for (const sensing::Observation& o : scan.observations) {
+    if (o.label != sensing::kTreeLabel) labels_.push_back(o.label);
+  }
+  std::sort(labels_.begin(), labels_.end());
+  labels_.erase(std::unique(labels_.begin(), labels_.end()), labels_.end());
+  for (const sensing::LabelId label : labels_) {
+    updateLabel(targets_, label, scan, own_footprint, own_map);
+  }
+  updateLabel(trees_, sensing::kTreeLabel, scan, own_footprint, own_map);
+  confirmOrDrop(targets_);
+  confirmOrDrop(trees_);
+}
+
+template <int N>
+void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
+                          const sensing::Scan& scan, const sensing::Footprint& own_footprint,
+                          const OcclusionMap& own_map) {
+  using Model = MeasurementModel<N>;
+  track_ids_.clear();
+  for (int k = 0; k < static_cast<int>(tracks.size()); ++k) {
+    if (tracks[k].label == label) track_ids_.push_back(k);
+  }
+  obs_ids_.clear();
+  for (int l = 0; l < static_cast<int>(scan.observations.size()); ++l) {
+    const sensing::Observation& o = scan.observations[l];
+    if (o.label == label && Model::valid(o)) obs_ids_.push_back(l);
+  }
+  claimed_.resize(obs_ids_.size());
+  jpdaf_.step<N>(tracks, track_ids_, scan.observations, obs_ids_, config_, claimed_, diagnostics_);
+
+  for (int k = 0; k < static_cast<int>(track_ids_.size()); ++k) {
+    Track<N>& track = tracks[track_ids_[k]];
+    ++track.scans;
+    // A hit is a scan in which the track more likely than not received one of the measurements,
+    // not merely gated one: a track born (from clutter, say) beside an established track shares
+    // the target's next measurements with it but mostly loses them, so it is dropped instead of
+    // confirmed as a duplicate.
+    if (jpdaf_.detectionProbability(k) >= kHitProbability) ++track.hits;
+    if (track.detected) {
+      track.expected_misses = 0;
+    } else if (expectedVisible(track, own_footprint, own_map)) {
+      ++track.expected_misses;
+    }
+  }
+
+  // Births: one tentative track per measurement in no track's birth gate (kBirthGateProbability).
+  for (int l = 0; l < static_cast<int>(obs_ids_.size()); ++l) {
+    if (claimed_[l]) continue;
+    Track<N> track;
+    track.key = {agent_, next_serial_++};
+    track.label = label;
+    track.posterior = Model::birth(scan.observations[obs_ids_[l]], config_);
+    track.prior = track.posterior;
+    track.scans = 1;
+    track.hits = 1;
+    track.detected = true;
+    tracks.push_back(track);
+    ++diagnostics_.births;
+  }
+}
+
+template <int N>
+void Tracker::confirmOrDrop(std::vector<Track<N>>& tracks) {
+  for (Track<N>& track : tracks) {
+    if (track.status == TrackStatus::tentative && track.hits >= config_.confirm_hits &&
+        track.scans <= config_.confirm_window) {
+      track.status = TrackStatus::confirmed;
+    }
+  }
+  // Dropped once even a hit in every remaining scan of the window cannot confirm it.
+  const auto dropped = std::erase_if(tracks, [this](const Track<N>& track) {
+    const int remaining = std::max(0, config_.confirm_window - track.scans);
+    return track.status == TrackStatus::tentative && track.hits + remaining < config_.confirm_hits;
+  });
+  diagnostics_.deletions += static_cast<long>(dropped);
+}
+
+void Tracker::deleteStale() {
+  deleteStale(targets_);
+  deleteStale(trees_);
+}
+
+template <int N>
+void Tracker::deleteStale(std::vector<Track<N>>& tracks) {
+  const auto deleted = std::erase_if(tracks, [this](const Track<N>& track) {
+    const Gaussian<N>& g = track.posterior;
+    if (!g.x.allFinite() || !g.P.allFinite()) return true;
+    const double trace_pos = g.P(0, 0) + g.P(1, 1);  // tr(P_pos) (m²)
+    if (trace_pos > config_.delete_trace) return true;
+    return config_.delete_misses > 0 && track.expected_misses >= config_.delete_misses;
+  });
+  diagnostics_.deletions += static_cast<long>(deleted);
+}
+
+}  // namespace canopy::agents::tracking

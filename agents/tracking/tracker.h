@@ -1,0 +1,81 @@
+#pragma once
+// One agent's local tracker over all labels (algorithms.md §4): NCV targets and static trees,
+// a JPDAF per label, track birth, confirmation and deletion. The agent calls, every step:
+//   predict(dt); update(scan, footprint, map); … fusion edits posteriors and keys …; deleteStale().
+#include <cstdint>
+#include <vector>
+
+#include "agents/config.h"
+#include "agents/occlusion_map.h"
+#include "agents/tracking/jpdaf.h"
+#include "agents/tracking/track.h"
+#include "sensing/footprint.h"
+#include "sensing/observation.h"
+
+namespace canopy::agents::tracking {
+
+class Tracker {
+ public:
+  /// agent: this agent's index, the origin of the keys of the tracks it starts.
+  Tracker(int agent, const TrackingConfig& config);
+
+  /// A confirmed track with key {−1, target} for a target the scenario pre-seeds, with mean
+  /// state (m, m, m/s, m/s) and P₀ = diag(config.preseed_variance). The caller checks
+  /// config.preseed; label is a target label (not kTreeLabel).
+  void preseed(int target, sensing::LabelId label, const Vec4& state);
+
+  /// Every track: prior = prediction over dt (s) — NCV for targets, static for trees — and
+  /// posterior = prior.
+  void predict(double dt);
+
+  /// The local JPDAF per label on this scan's observations (observations only associate with
+  /// tracks of their own label; tree observations with tree tracks). Then per track: `detected`,
+  /// scans and hits, and the count of consecutive misses while expected visible (predicted
+  /// position inside own_footprint and, for targets, not occluded in own_map; a tree's crown
+  /// does not hide it). Measurements in no track's birth gate (jpdaf.h: kBirthGateProbability,
+  /// wider than the association gate) are born as tentative tracks. A tentative track is
+  /// confirmed after confirm_hits hits — scans in which Σ_j β_tj ≥ ½, i.e. it more likely than
+  /// not received a measurement — within its first confirm_window scans, and dropped as soon as
+  /// it can no longer be. Observations with non-finite values or a covariance that is
+  /// not positive definite are ignored.
+  void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
+              const OcclusionMap& own_map);
+
+  /// Deletes tracks with tr(P_pos) > delete_trace (or a non-finite posterior) and, when
+  /// delete_misses > 0, tracks missed that many consecutive scans while expected visible.
+  /// Called by the agent after fusion, so it judges the fused posteriors.
+  void deleteStale();
+
+  /// The tracks; fusion edits posteriors and keys in place.
+  std::vector<TargetTrack>& targets() { return targets_; }
+  const std::vector<TargetTrack>& targets() const { return targets_; }
+  std::vector<TreeTrack>& trees() { return trees_; }
+  const std::vector<TreeTrack>& trees() const { return trees_; }
+
+  const TrackingDiagnostics& diagnostics() const { return diagnostics_; }
+  const TrackingConfig& config() const { return config_; }
+  int agent() const { return agent_; }
+
+ private:
+  template <int N>
+  void updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label, const sensing::Scan& scan,
+                   const sensing::Footprint& own_footprint, const OcclusionMap& own_map);
+  template <int N>
+  void confirmOrDrop(std::vector<Track<N>>& tracks);
+  template <int N>
+  void deleteStale(std::vector<Track<N>>& tracks);
+
+  int agent_;
+  TrackingConfig config_;
+  int next_serial_ = 0;
+  std::vector<TargetTrack> targets_;
+  std::vector<TreeTrack> trees_;
+  TrackingDiagnostics diagnostics_;
+
+  Jpdaf jpdaf_;
+  std::vector<sensing::LabelId> labels_;  // target labels present this scan
+  std::vector<int> track_ids_, obs_ids_;
+  std::vector<std::uint8_t> claimed_;
+};
+
+}  // namespace canopy::agents::tracking

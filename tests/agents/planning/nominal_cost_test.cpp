@@ -1,0 +1,269 @@
+#include "agents/planning/nominal_cost.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "sensing/footprint.h"
+#include "sensing/noise.h"
+
+namespace canopy::agents::planning {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Hand-computed cases: one target with P₀ = I₄, σ_a = 1, Δ = 1, α = 0.3, r0 = 2 m, a 20 × 20 m
+// footprint. Per axis, P₀ = [[1, 0], [0, 1]] and
+//   P⁻ = F P₀ Fᵀ + Q = [[1 + 1 + 1/4, 1 + 1/2], [1 + 1/2, 1 + 1]] = [[2.25, 1.5], [1.5, 2]].
+// With the bearing along an axis R is diagonal, so each axis is a scalar Kalman update:
+//   p⁺ = p − p²/(p + r),  c⁺ = c − p c/(p + r),  v⁺ = v − c²/(p + r).
+struct Axis {
+  double p, c, v;  // position variance, position-velocity covariance, velocity variance
+};
+Axis predictAxis(Axis a) {  // F a Fᵀ + Q, Δ = 1, σ_a = 1
+  return {a.p + 2 * a.c + a.v + 0.25, a.c + a.v + 0.5, a.v + 1.0};
+}
+Axis updateAxis(Axis a, double r) {
+  const double s = a.p + r;
+  return {a.p - a.p * a.p / s, a.c - a.p * a.c / s, a.v - a.c * a.c / s};
+}
+
+UavState hoveringUav(Vec2 position) {
+  UavState u;
+  u.position = position;
+  return u;
+}
+
+TargetGaussian target(Vec2 position, Vec2 velocity, double variance = 1.0) {
+  TargetGaussian t;
+  t.x << position, velocity;
+  t.P = variance * Mat4::Identity();
+  return t;
+}
+
+CostSettings settings(int horizon, bool terminal) {
+  CostSettings s;
+  s.horizon = horizon;
+  s.terminal_penalty = terminal;
+  return s;
+}
+
+double cost(const std::vector<TargetGaussian>& targets, const std::vector<UavState>& uavs,
+            const std::vector<Plan>& plans, const CostSettings& s,
+            const OcclusionMap* map = nullptr) {
+  return nominalCost(PlanningProblem{targets, uavs, map, s}, plans);
+}
+
+TEST(NominalCost, TargetInFootprintOneStep) {
+  // z₁ = (1, 0): d = max(2, 1) = 2, ρ = 0, R = diag(0.3·0.1·2, 0.3·0.1·π·2).
+  const double rx = 0.06, ry = 0.06 * kPi;
+  const double expected = 2.25 * rx / (2.25 + rx) + 2.25 * ry / (2.25 + ry);
+  const std::vector<TargetGaussian> targets{target({1, 0}, {0, 0})};
+  const std::vector<UavState> uavs{hoveringUav({0, 0})};
+  const std::vector<Plan> plans{hoverPlan(1)};
+  EXPECT_NEAR(cost(targets, uavs, plans, settings(1, false)), expected, 1e-12);
+  // Seen at m = H: the terminal penalty adds nothing.
+  EXPECT_NEAR(cost(targets, uavs, plans, settings(1, true)), expected, 1e-12);
+}
+
+TEST(NominalCost, MovingTargetInFootprintTwoSteps) {
+  // ξ = (0, 0, 3, 0): z₁ = (3, 0) with d = 3, z₂ = (6, 0) with d = 6; ρ = 0 both times.
+  const double r1x = 0.3 * 0.1 * 3, r1y = r1x * kPi, r2x = 0.3 * 0.1 * 6, r2y = r2x * kPi;
+  const Axis x1 = updateAxis(predictAxis({1, 0, 1}), r1x);
+  const Axis y1 = updateAxis(predictAxis({1, 0, 1}), r1y);
+  const Axis x2 = updateAxis(predictAxis(x1), r2x);
+  const Axis y2 = updateAxis(predictAxis(y1), r2y);
+  const double expected = (x1.p + y1.p) + (x2.p + y2.p);
+  const std::vector<TargetGaussian> targets{target({0, 0}, {3, 0})};
+  const std::vector<UavState> uavs{hoveringUav({0, 0})};
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(2)}, settings(2, true)), expected, 1e-12);
+  // Discount γ = 0.5 weighs the second step by one half.
+  CostSettings discounted = settings(2, true);
+  discounted.discount = 0.5;
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(2)}, discounted), (x1.p + y1.p) + 0.5 * (x2.p + y2.p),
+              1e-12);
+}
+
+TEST(NominalCost, TargetOutsideFootprintAndTerminalPenalty) {
+  // Unobserved: tr(P⁻₁[pos]) = 2·2.25 = 4.5; P⁻₂ per axis: p = 2.25 + 2·1.5 + 2 + 0.25 = 7.5,
+  // so tr = 15. The penalty: w·|p_{1,H} − z_H|·tr = 0.5·30·tr.
+  const std::vector<TargetGaussian> targets{target({30, 0}, {0, 0})};
+  const std::vector<UavState> uavs{hoveringUav({0, 0})};
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, settings(1, false)), 4.5, 1e-12);
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, settings(1, true)), 4.5 + 0.5 * 30 * 4.5, 1e-12);
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(2)}, settings(2, false)), 4.5 + 15.0, 1e-12);
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(2)}, settings(2, true)), 19.5 + 0.5 * 30 * 15.0,
+              1e-12);
+  // Full trace adds the velocity variances: per axis 2 at m = 1.
+  CostSettings full = settings(1, false);
+  full.full_trace = true;
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, full), 4.5 + 4.0, 1e-12);
+}
+
+TEST(NominalCost, OccludedTargetIsNeitherObservedNorPenalised) {
+  const OcclusionMap map({world::TreeDef::disc({1, 0}, 2.0)});
+  const std::vector<TargetGaussian> targets{target({1, 0}, {0, 0})};
+  const std::vector<UavState> uavs{hoveringUav({0, 0})};
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, settings(1, false), &map), 4.5, 1e-12);
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, settings(1, true), &map), 4.5, 1e-12);
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(2)}, settings(2, true), &map), 19.5, 1e-12);
+  // A tree elsewhere changes nothing.
+  const OcclusionMap elsewhere({world::TreeDef::disc({-5, -5}, 2.0)});
+  const double rx = 0.06, ry = 0.06 * kPi;
+  EXPECT_NEAR(cost(targets, uavs, {hoverPlan(1)}, settings(1, false), &elsewhere),
+              2.25 * rx / (2.25 + rx) + 2.25 * ry / (2.25 + ry), 1e-12);
+}
+
+TEST(NominalCost, UavFlyingTowardsTargetSeesItAtTheSecondStep) {
+  // a = (5, 0): p₁ = (5, 0) is 13 m from z = (18, 0) (outside the 10 m half-width), p₂ = (10, 0)
+  // is 8 m away: d = 8, R = diag(0.3·0.8, 0.3·0.8·π). Per axis p⁻₂ = 7.5 (as above).
+  const double rx = 0.24, ry = 0.24 * kPi;
+  const double expected = 4.5 + 7.5 * rx / (7.5 + rx) + 7.5 * ry / (7.5 + ry);
+  Plan east;
+  east.velocities = {Vec2(5, 0), Vec2(5, 0)};
+  const std::vector<TargetGaussian> targets{target({18, 0}, {0, 0})};
+  const std::vector<UavState> uavs{hoveringUav({0, 0})};
+  EXPECT_NEAR(cost(targets, uavs, {east}, settings(2, true)), expected, 1e-12);
+  // 8 m/s is clamped to v_max = 5 m/s, as the world does: the same cost.
+  Plan fast;
+  fast.velocities = {Vec2(8, 0), Vec2(8, 0)};
+  EXPECT_NEAR(cost(targets, uavs, {fast}, settings(2, true)), expected, 1e-12);
+}
+
+TEST(NominalCost, FootprintTurnsWithThePlannedHeadingOnlyWhenYawFollowsVelocity) {
+  // A 30 m (along ψ) × 4 m (across) footprint, a = (0, 5): p₁ = (0, 5), z = (0, 12), 7 m north.
+  // Yaw following velocity: ψ = π/2, z lies along the heading, inside. d = 7, ρ = π/2, so
+  // R = diag(bearing, range) = diag(0.3·0.1·π·7, 0.3·0.1·7). Fixed yaw ψ = 0: 7 m across, outside.
+  UavState uav = hoveringUav({0, 0});
+  uav.footprint.size = Vec2(30, 4);
+  Plan north;
+  north.velocities = {Vec2(0, 5)};
+  const std::vector<TargetGaussian> targets{target({0, 12}, {0, 0})};
+  const double rx = 0.21 * kPi, ry = 0.21;
+  uav.yaw_mode = world::YawMode::velocity;
+  EXPECT_NEAR(cost(targets, {uav}, {north}, settings(1, false)),
+              2.25 * rx / (2.25 + rx) + 2.25 * ry / (2.25 + ry), 1e-12);
+  uav.yaw_mode = world::YawMode::fixed;
+  EXPECT_NEAR(cost(targets, {uav}, {north}, settings(1, false)), 4.5, 1e-12);
+}
+
+TEST(NominalCost, TerminalPenaltyChargesDistancesGreedily) {
+  // H = 1, both targets unseen. T1 (30, 0) with P₀ = 2 I: per axis p⁻ = 2 + 2 + 0.25, tr = 8.5.
+  // T2 (0, 40) with P₀ = I: tr = 4.5. Stage cost 13. T1 goes first (larger trace) to A at (0, 0)
+  // (30 m against B's ≥ 100 m): 0.5·30·8.5, D_A = 30. T2: A costs 30 + 40 = 70.
+  const std::vector<TargetGaussian> targets{target({30, 0}, {0, 0}, 2.0),
+                                            target({0, 40}, {0, 0}, 1.0)};
+  const std::vector<Plan> plans{hoverPlan(1), hoverPlan(1)};
+  // B at (0, 100): 60 < 70, T2 goes to B.
+  EXPECT_NEAR(cost(targets, {hoveringUav({0, 0}), hoveringUav({0, 100})}, plans, settings(1, true)),
+              13.0 + 0.5 * 30 * 8.5 + 0.5 * 60 * 4.5, 1e-9);
+  // B at (0, 120): 80 > 70, T2 goes to A as well, charged its distance to T1 first.
+  EXPECT_NEAR(cost(targets, {hoveringUav({0, 0}), hoveringUav({0, 120})}, plans, settings(1, true)),
+              13.0 + 0.5 * 30 * 8.5 + 0.5 * 70 * 4.5, 1e-9);
+}
+
+// A second, literal implementation: information form with explicit inverses, the sensing
+// library's R and Footprint::place with ψ = atan2 of the velocity.
+double literalCost(const std::vector<TargetGaussian>& targets, const std::vector<UavState>& uavs,
+                   const std::vector<Plan>& plans, const CostSettings& s, const OcclusionMap& map) {
+  const int H = s.horizon;
+  const double dt = s.period, q = s.sigma_a * s.sigma_a;
+  Mat4 F = Mat4::Identity();
+  F(0, 2) = F(1, 3) = dt;
+  Mat4 Q = Mat4::Zero();
+  for (int k = 0; k < 2; ++k) {
+    Q(k, k) = q * std::pow(dt, 4) / 4;
+    Q(k, k + 2) = Q(k + 2, k) = q * std::pow(dt, 3) / 2;
+    Q(k + 2, k + 2) = q * dt * dt;
+  }
+  Mat24 Hobs = Mat24::Zero();
+  Hobs(0, 0) = Hobs(1, 1) = 1;
+  std::vector<std::vector<Vec2>> pos(uavs.size());
+  std::vector<std::vector<sensing::Footprint>> fp(uavs.size());
+  for (std::size_t i = 0; i < uavs.size(); ++i) {
+    Vec2 p = uavs[i].position;
+    double yaw = uavs[i].yaw;
+    for (int m = 0; m < H; ++m) {
+      Vec2 a = plans[i].velocities[m];
+      if (a.norm() > uavs[i].v_max) a *= uavs[i].v_max / a.norm();
+      p += a * dt;
+      if (uavs[i].yaw_mode == world::YawMode::velocity && a.norm() > 1e-6) {
+        yaw = std::atan2(a.y(), a.x());
+      }
+      pos[i].push_back(p);
+      fp[i].push_back(sensing::Footprint::place(uavs[i].footprint, p, yaw));
+    }
+  }
+  double J = 0;
+  for (const TargetGaussian& t : targets) {
+    Vec4 x = t.x;
+    Mat4 P = t.P;
+    for (int m = 0; m < H; ++m) {
+      x = F * x;
+      P = F * P * F.transpose() + Q;
+      Mat4 information = P.inverse();
+      const Vec2 z = x.head<2>();
+      for (std::size_t i = 0; i < uavs.size(); ++i) {
+        if (map.occludes(z) || !fp[i][m].contains(z)) continue;
+        const Mat2 R = sensing::rangeBearingCovariance(z, pos[i][m], uavs[i].quality);
+        information += Hobs.transpose() * R.inverse() * Hobs;
+      }
+      P = information.inverse();
+      J += std::pow(s.discount, m) * (s.full_trace ? P.trace() : P(0, 0) + P(1, 1));
+    }
+  }
+  return J;
+}
+
+TEST(NominalCost, MatchesLiteralInformationFormAndPartialPreparation) {
+  // Three heterogeneous UAVs with overlapping footprints, off-axis bearings, a tree, H = 4.
+  std::vector<UavState> uavs(3);
+  uavs[0].position = Vec2(0, 0);
+  uavs[0].yaw_mode = world::YawMode::velocity;
+  uavs[0].footprint.size = Vec2(24, 12);
+  uavs[1].position = Vec2(8, 5);
+  uavs[1].yaw = 0.4;
+  uavs[1].footprint.shape = sensing::FootprintShape::disc;
+  uavs[1].footprint.radius = 9;
+  uavs[1].quality = {0.5, 1.5};
+  uavs[1].v_max = 3;
+  uavs[2].position = Vec2(-6, 9);
+  uavs[2].yaw = -0.7;
+  std::vector<Plan> plans(3);
+  plans[0].velocities = {Vec2(2, 1), Vec2(3, -1), Vec2(0, 0), Vec2(-1, 2)};
+  plans[1].velocities = {Vec2(-1, 2), Vec2(4, 4), Vec2(1, 0), Vec2(0, -2)};
+  plans[2].velocities = {Vec2(1, -1), Vec2(2, 0.5), Vec2(1, 1), Vec2(-3, 0)};
+  std::vector<TargetGaussian> targets{target({3, 2}, {1, 0.5}), target({-4, 6}, {0.5, -1}, 2.0),
+                                      target({10, -3}, {-1, 1}), target({60, 60}, {0, 0})};
+  targets[1].P(0, 1) = targets[1].P(1, 0) = 0.3;
+  targets[2].P(0, 2) = targets[2].P(2, 0) = 0.4;
+  const OcclusionMap map({world::TreeDef::disc({12, -1}, 2.5)});
+  CostSettings s = settings(4, false);
+  s.discount = 0.9;
+  const PlanningProblem problem{targets, uavs, &map, s};
+  const double expected = literalCost(targets, uavs, plans, s, map);
+  EXPECT_NEAR(nominalCost(problem, plans), expected, 1e-9 * expected);
+
+  // Holding UAVs 0 and 2 fixed (their measurements fused beforehand) gives the same cost.
+  NominalCost partial;
+  const int free_agent[] = {1};
+  partial.prepare(problem, free_agent, plans);
+  EXPECT_NEAR(partial.evaluate(plans[1].velocities), expected, 1e-9 * expected);
+  // With the terminal penalty too (the target at (60, 60) is unseen and charged).
+  CostSettings with_penalty = s;
+  with_penalty.terminal_penalty = true;
+  const PlanningProblem penalised{targets, uavs, &map, with_penalty};
+  const double full_joint = nominalCost(penalised, plans);
+  EXPECT_GT(full_joint, expected + 100.0);
+  partial.prepare(penalised, free_agent, plans);
+  EXPECT_NEAR(partial.evaluate(plans[1].velocities), full_joint, 1e-9 * full_joint);
+  s.full_trace = true;
+  EXPECT_NEAR(nominalCost(PlanningProblem{targets, uavs, &map, s}, plans),
+              literalCost(targets, uavs, plans, s, map), 1e-9 * expected);
+}
+
+}  // namespace
+}  // namespace canopy::agents::planning

@@ -1,0 +1,151 @@
+#include "agents/planning/particle_swarm.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace canopy::agents::planning {
+namespace {
+
+// Calls f on every particle of the batch.
+template <typename F>
+BatchCost batchOf(std::size_t dim, F f) {
+  return [dim, f](std::span<const double> x, std::span<double> costs) {
+    for (std::size_t p = 0; p < costs.size(); ++p) costs[p] = f(x.subspan(p * dim, dim));
+  };
+}
+
+double sphere(std::span<const double> x) {
+  double s = 0;
+  for (const double v : x) s += v * v;
+  return s;
+}
+
+double rosenbrock(std::span<const double> x) {
+  double s = 0;
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+    s += 100 * std::pow(x[i + 1] - x[i] * x[i], 2) + std::pow(1 - x[i], 2);
+  }
+  return s;
+}
+
+// Wrapped distance on the circle [0, 1): the minimum at 0.98 has half its basin across the bound.
+double acrossBoundary(std::span<const double> x) {
+  const double centre[] = {0.98, 0.01};
+  double s = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double d = std::remainder(x[i] - centre[i], 1.0);  // in [−0.5, 0.5]
+    s += d * d;
+  }
+  return s;
+}
+
+SwarmOptions precise(int particles, int max_iterations) {
+  SwarmOptions o;  // the planner's w, c1, c2; a tight stall test so the swarm runs to precision
+  o.particles = particles;
+  o.ftol = 1e-15;
+  o.stall_iterations = 100;
+  o.max_iterations = max_iterations;
+  return o;
+}
+
+TEST(ParticleSwarm, WrapsPeriodicallyIntoTheClosedBox) {
+  EXPECT_DOUBLE_EQ(wrapPeriodic(0.25, 0, 1), 0.25);
+  EXPECT_DOUBLE_EQ(wrapPeriodic(1.0, 0, 1), 1.0);  // the bound itself stays (speed = v_max)
+  EXPECT_DOUBLE_EQ(wrapPeriodic(1.25, 0, 1), 0.25);
+  EXPECT_DOUBLE_EQ(wrapPeriodic(3.5, 0, 1), 0.5);
+  EXPECT_DOUBLE_EQ(wrapPeriodic(-0.25, 0, 1), 0.75);
+  EXPECT_DOUBLE_EQ(wrapPeriodic(-2.5, -1, 1), 1.0 - 1.5);
+}
+
+TEST(ParticleSwarm, FindsTheMinimumOfTheSphere) {
+  const std::vector<double> lo(5, -5.0), hi(5, 5.0);
+  ParticleSwarm swarm;
+  RandomStream rng(1, "test");
+  const SwarmResult r = swarm.minimise(batchOf(5, sphere), lo, hi, precise(50, 3000), rng);
+  for (const double v : r.best) EXPECT_NEAR(v, 0.0, 1e-4);
+  EXPECT_LT(r.best_cost, 1e-8);
+  EXPECT_EQ(r.evaluations, 50LL * (r.iterations + 1));
+}
+
+TEST(ParticleSwarm, FindsTheMinimumOfRosenbrockInTwoToFourDimensions) {
+  for (const int dim : {2, 3, 4}) {
+    const std::vector<double> lo(dim, -2.0), hi(dim, 2.0);
+    ParticleSwarm swarm;
+    RandomStream rng(3, "test", dim);
+    const SwarmResult r =
+        swarm.minimise(batchOf(dim, rosenbrock), lo, hi, precise(40 * dim, 20000), rng);
+    for (const double v : r.best) EXPECT_NEAR(v, 1.0, 1e-3) << "dimension " << dim;
+    EXPECT_LT(r.best_cost, 1e-6) << "dimension " << dim;
+  }
+}
+
+TEST(ParticleSwarm, FindsAMinimumAcrossThePeriodicBoundary) {
+  const std::vector<double> lo(2, 0.0), hi(2, 1.0);
+  ParticleSwarm swarm;
+  RandomStream rng(5, "test");
+  const SwarmResult r = swarm.minimise(batchOf(2, acrossBoundary), lo, hi, precise(30, 3000), rng);
+  EXPECT_NEAR(std::remainder(r.best[0] - 0.98, 1.0), 0.0, 1e-5);
+  EXPECT_NEAR(std::remainder(r.best[1] - 0.01, 1.0), 0.0, 1e-5);
+  for (const double v : r.best) {
+    EXPECT_GE(v, 0.0);
+    EXPECT_LE(v, 1.0);
+  }
+}
+
+TEST(ParticleSwarm, IdenticalSeedsGiveBitwiseIdenticalResults) {
+  const std::vector<double> lo(3, -2.0), hi(3, 2.0);
+  const SwarmOptions options = SwarmOptions::from(PsoConfig{}, 2);  // 40 particles, defaults
+  ParticleSwarm a, b;
+  RandomStream rng_a(11, "pso", 1), rng_b(11, "pso", 1), rng_c(12, "pso", 1);
+  const SwarmResult ra = a.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_a);
+  const SwarmResult rb = b.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_b);
+  EXPECT_EQ(ra.best, rb.best);  // exact equality of every double
+  EXPECT_EQ(ra.best_cost, rb.best_cost);
+  EXPECT_EQ(ra.iterations, rb.iterations);
+  // The same object reused (buffers kept) gives the same answer too; another seed does not.
+  RandomStream rng_a2(11, "pso", 1);
+  EXPECT_EQ(a.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_a2).best, ra.best);
+  EXPECT_NE(a.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_c).best, ra.best);
+}
+
+TEST(ParticleSwarm, StopsOnStallOrCapAndEvaluatesTheWholeSwarmPerCall) {
+  const std::vector<double> lo(2, -1.0), hi(2, 1.0);
+  SwarmOptions options;
+  options.particles = 16;
+  int calls = 0;
+  const BatchCost flat = [&calls](std::span<const double> x, std::span<double> costs) {
+    ++calls;
+    EXPECT_EQ(costs.size(), 16u);
+    EXPECT_EQ(x.size(), 32u);
+    for (double& c : costs) c = 1.0;
+  };
+  ParticleSwarm swarm;
+  RandomStream rng(2, "test");
+  // A flat cost never changes the best: it stalls after exactly stall_iterations iterations.
+  SwarmResult r = swarm.minimise(flat, lo, hi, options, rng);
+  EXPECT_TRUE(r.stalled);
+  EXPECT_EQ(r.iterations, options.stall_iterations);
+  EXPECT_EQ(calls, options.stall_iterations + 1);
+  options.max_iterations = 7;
+  r = swarm.minimise(flat, lo, hi, options, rng);
+  EXPECT_FALSE(r.stalled);
+  EXPECT_EQ(r.iterations, 7);
+}
+
+TEST(ParticleSwarm, WarmStartIsParticleZero) {
+  const std::vector<double> lo(2, -5.0), hi(2, 5.0);
+  const std::vector<double> warm{0.0, 0.0};  // the minimum of the sphere
+  SwarmOptions options;
+  options.particles = 10;
+  options.max_iterations = 0;  // only the initial swarm
+  ParticleSwarm swarm;
+  RandomStream rng(4, "test");
+  const SwarmResult r = swarm.minimise(batchOf(2, sphere), lo, hi, options, rng, warm);
+  EXPECT_EQ(r.best, warm);
+  EXPECT_EQ(r.best_cost, 0.0);
+}
+
+}  // namespace
+}  // namespace canopy::agents::planning

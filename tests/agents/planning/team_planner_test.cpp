@@ -1,0 +1,208 @@
+#include "agents/planning/team_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace canopy::agents::planning {
+namespace {
+
+PlannerConfig config(PlannerAlgorithm algorithm, std::vector<int> order = {}) {
+  PlannerConfig c;
+  c.algorithm = algorithm;
+  c.horizon = 3;
+  c.occlusion_map = OcclusionMapMode::none;
+  c.pso.max_iterations = 40;  // the tests check who saw what, not optimality
+  c.order = std::move(order);
+  return c;
+}
+
+TargetGaussian target(Vec2 position, Vec2 velocity, double variance) {
+  TargetGaussian t;
+  t.x << position, velocity;
+  t.P = variance * Mat4::Identity();
+  return t;
+}
+
+// Three UAVs and four targets; each agent has its own belief (different covariances).
+struct Team {
+  std::vector<UavState> uavs;
+  std::vector<std::vector<TargetGaussian>> beliefs;
+
+  explicit Team(int n) : uavs(n), beliefs(n) {
+    for (int i = 0; i < n; ++i) {
+      uavs[i].position = Vec2(-20.0 + 20.0 * i, 0.0);
+      beliefs[i] = {target({-20, 5}, {1, 0}, 1.0 + 0.1 * i), target({0, -8}, {0, 1}, 1.5),
+                    target({25, 3}, {-1, 0}, 2.0), target({5, 30}, {0, -1}, 1.0 + 0.2 * i)};
+    }
+  }
+  std::vector<AgentView> views() const {
+    std::vector<AgentView> v;
+    for (const auto& b : beliefs) v.push_back(AgentView{b, nullptr});
+    return v;
+  }
+  void apply(const TeamPlan& plan, double dt) {
+    for (std::size_t i = 0; i < uavs.size(); ++i) uavs[i].position += plan.plans[i].command() * dt;
+  }
+  PlanningProblem problem(int agent, const PlannerConfig& c) const {
+    return {beliefs[agent], uavs, nullptr, CostSettings::from(c, 1.0)};
+  }
+};
+
+const IntentionMessage& messageFrom(const TeamPlan& plan, int agent) {
+  for (const IntentionMessage& m : plan.messages) {
+    if (m.from == agent) return m;
+  }
+  ADD_FAILURE() << "no message from " << agent;
+  return plan.messages.front();
+}
+
+TEST(Plan, IntentionShiftsRepeatsTheLastActionAndHoversWhenEmpty) {
+  Plan p;
+  p.velocities = {Vec2(1, 0), Vec2(2, 0), Vec2(3, 0)};
+  const Plan s = shiftedPlan(p, 1, 3);
+  ASSERT_EQ(s.velocities.size(), 3u);
+  EXPECT_EQ(s.velocities[0], Vec2(2, 0));
+  EXPECT_EQ(s.velocities[1], Vec2(3, 0));
+  EXPECT_EQ(s.velocities[2], Vec2(3, 0));  // missing last step repeats the last action
+  EXPECT_EQ(shiftedPlan(Plan{}, 1, 2).velocities, hoverPlan(2).velocities);
+  EXPECT_EQ(p.command(), Vec2(1, 0));
+  EXPECT_EQ(Plan{}.command(), Vec2(0, 0));
+}
+
+// The middle agent of the order sees the first agent's new plan of this epoch and the last
+// agent's intention (its plan of the previous epoch shifted by one step), and its recorded cost
+// is J of exactly that joint plan on its own belief.
+void checkMiddleAgentOfOrder(const std::vector<int>& order) {
+  const PlannerConfig c = config(PlannerAlgorithm::sma, order);
+  const int first = order[0], middle = order[1], last = order[2];
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 42);
+
+  const TeamPlan e0 = planner.plan(0, team.uavs, team.views());
+  ASSERT_EQ(e0.messages.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(e0.messages[k].from, order[k]);  // published in planning order
+    EXPECT_EQ(e0.messages[k].epoch, 0);
+  }
+  // Epoch 0: nobody has an intention yet, so the last agent is assumed to hover.
+  const AgentPlanReport& m0 = e0.reports[middle];
+  EXPECT_EQ(m0.joint[first].velocities, messageFrom(e0, first).plan.velocities);
+  EXPECT_EQ(m0.joint[last].velocities, hoverPlan(3).velocities);
+  EXPECT_EQ(m0.joint_epoch[first], 0);
+  EXPECT_EQ(m0.joint_epoch[last], -1);
+
+  team.apply(e0, c.plan_period);
+  const TeamPlan e1 = planner.plan(1, team.uavs, team.views());
+  const AgentPlanReport& m1 = e1.reports[middle];
+  EXPECT_EQ(m1.joint[first].velocities, messageFrom(e1, first).plan.velocities);
+  EXPECT_EQ(m1.joint[last].velocities, shiftedPlan(messageFrom(e0, last).plan, 1, 3).velocities);
+  EXPECT_EQ(m1.joint[middle].velocities, e1.plans[middle].velocities);
+  EXPECT_EQ(m1.joint_epoch[first], 1);
+  EXPECT_EQ(m1.joint_epoch[middle], 1);
+  EXPECT_EQ(m1.joint_epoch[last], 0);
+  // The first agent saw only intentions, the last only new plans.
+  EXPECT_EQ(e1.reports[first].joint_epoch[middle], 0);
+  EXPECT_EQ(e1.reports[first].joint_epoch[last], 0);
+  EXPECT_EQ(e1.reports[last].joint_epoch[first], 1);
+  EXPECT_EQ(e1.reports[last].joint_epoch[middle], 1);
+  // Its cost is J of that joint plan on its own belief, and differs on another agent's belief.
+  const double own = nominalCost(team.problem(middle, c), m1.joint);
+  EXPECT_NEAR(m1.cost, own, 1e-9 * own);
+  EXPECT_EQ(e1.plans[middle].cost, m1.cost);
+  EXPECT_GT(std::abs(nominalCost(team.problem(last, c), m1.joint) - own), 1e-6);
+  // Each agent applies its own new plan.
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(e1.plans[i].velocities, messageFrom(e1, i).plan.velocities);
+    EXPECT_GT(e1.reports[i].iterations, 0);
+    EXPECT_GE(e1.reports[i].seconds, 0.0);
+  }
+}
+
+TEST(SmaNbo, MiddleAgentSeesNewPlanBeforeItAndIntentionAfterIt) {
+  checkMiddleAgentOfOrder({0, 1, 2});
+}
+
+TEST(SmaNbo, OrderIsTakenFromTheConfig) {
+  checkMiddleAgentOfOrder({2, 0, 1});
+}
+
+TEST(SmaNbo, WarmStartNeverDoesWorseThanTheIntention) {
+  // A static problem: the warm-start particle is the agent's own intention, so the plan found
+  // costs at most what keeping the intention would.
+  const PlannerConfig c = config(PlannerAlgorithm::sma);
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 3);
+  const TeamPlan e0 = planner.plan(0, team.uavs, team.views());
+  const TeamPlan e1 = planner.plan(1, team.uavs, team.views());
+  for (int i = 0; i < 3; ++i) {
+    std::vector<Plan> joint = e1.reports[i].joint;
+    joint[i] = shiftedPlan(e0.plans[i], 1, 3);
+    EXPECT_LE(e1.reports[i].cost, nominalCost(team.problem(i, c), joint) * (1 + 1e-12));
+  }
+}
+
+TEST(DecPomdpNbo, EachAgentOptimisesTheJointPlanAndAppliesItsOwnPart) {
+  const PlannerConfig c = config(PlannerAlgorithm::dec_pomdp);
+  Team team(2);
+  TeamPlanner planner(c, 1.0, 9);
+  const TeamPlan plan = planner.plan(0, team.uavs, team.views());
+  EXPECT_TRUE(plan.messages.empty());  // no communication
+  for (int i = 0; i < 2; ++i) {
+    const AgentPlanReport& r = plan.reports[i];
+    ASSERT_EQ(r.joint.size(), 2u);
+    EXPECT_EQ(plan.plans[i].velocities, r.joint[i].velocities);
+    EXPECT_EQ(r.joint_epoch, std::vector<int>(2, 0));
+    EXPECT_GT(r.iterations, 0);
+    const double own = nominalCost(team.problem(i, c), r.joint);
+    EXPECT_NEAR(r.cost, own, 1e-9 * own);
+  }
+}
+
+TEST(CentralizedNbo, FirstAgentInOrderPlansForAll) {
+  const PlannerConfig c = config(PlannerAlgorithm::centralized, {1, 0});
+  Team team(2);
+  TeamPlanner planner(c, 1.0, 9);
+  const TeamPlan plan = planner.plan(0, team.uavs, team.views());
+  ASSERT_EQ(plan.messages.size(), 2u);
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(plan.messages[i].from, 1);
+    EXPECT_EQ(plan.messages[i].agent, i);
+    EXPECT_EQ(plan.plans[i].velocities, plan.reports[1].joint[i].velocities);
+  }
+  EXPECT_GT(plan.reports[1].iterations, 0);
+  EXPECT_EQ(plan.reports[0].iterations, 0);  // the follower did not optimise
+  const double leader = nominalCost(team.problem(1, c), plan.reports[1].joint);
+  EXPECT_NEAR(plan.reports[1].cost, leader, 1e-9 * leader);
+}
+
+TEST(TeamPlanner, IsBitwiseDeterministicForASeed) {
+  for (const PlannerAlgorithm algorithm : {PlannerAlgorithm::sma, PlannerAlgorithm::dec_pomdp}) {
+    const PlannerConfig c = config(algorithm);
+    std::vector<std::vector<Vec2>> runs[3];
+    const std::uint64_t seeds[3] = {5, 5, 6};
+    for (int run = 0; run < 3; ++run) {
+      Team team(3);
+      TeamPlanner planner(c, 1.0, seeds[run]);
+      for (int epoch = 0; epoch < 3; ++epoch) {
+        const TeamPlan plan = planner.plan(epoch, team.uavs, team.views());
+        for (const Plan& p : plan.plans) runs[run].push_back(p.velocities);
+        team.apply(plan, c.plan_period);
+      }
+    }
+    EXPECT_EQ(runs[0], runs[1]);
+    EXPECT_NE(runs[0], runs[2]);
+  }
+}
+
+TEST(TeamPlanner, NoAlgorithmHovers) {
+  Team team(2);
+  TeamPlanner planner(config(PlannerAlgorithm::none), 1.0, 1);
+  const TeamPlan plan = planner.plan(0, team.uavs, team.views());
+  for (const Plan& p : plan.plans) EXPECT_EQ(p.command(), Vec2::Zero());
+  EXPECT_TRUE(plan.messages.empty());
+}
+
+}  // namespace
+}  // namespace canopy::agents::planning
