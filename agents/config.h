@@ -12,6 +12,10 @@ namespace canopy::agents {
 struct TrackingConfig {
   double sigma_a = 1.0;                // m/s², NCV process-noise intensity σ_a
   double gate_probability = 0.98;      // P_G; the χ²₂ gate is −2 ln(1 − P_G) = 7.824
+  // A measurement starts a track only outside every track's wider birth gate (χ²₂ at this
+  // probability, 18.4 at 0.9999): a target's own measurements that miss its association gate
+  // would otherwise start confirmed duplicates (agents/tracking/jpdaf.h has the measurement).
+  double birth_gate_probability = 0.9999;
   double p_detect = 0.9;               // P_D assumed by the JPDAF
   double clutter_density = 1e-4;       // 1/m², spatial density of false detections λ
   int max_hypotheses = 10000;          // exact joint-event enumeration up to this many events

@@ -45,7 +45,7 @@ RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
 
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
-  Recorder recorder((options.out_dir / "record.jsonl").string());
+  Recorder recorder(options.out_dir.string());
   SummaryBuilder summary(spec);
   while (!sim.done()) {
     sim.tick();

@@ -1,13 +1,48 @@
 #include "scenarios/simulation.h"
 
+#include <cmath>
+
 namespace canopy::scenarios {
+namespace {
+
+agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
+  agents::TeamConfig config;
+  config.tracking = spec.tracking;
+  config.fusion = spec.fusion;
+  config.planner = spec.planner;
+  for (const UavSpec& uav : spec.uavs) {
+    config.uavs.push_back({uav.body.start, uav.body.yaw, uav.body.yaw_mode, uav.body.v_max,
+                           uav.sensor.footprint, uav.sensor.quality});
+  }
+  if (spec.planner.occlusion_map == agents::OcclusionMapMode::a_priori)
+    config.true_trees = spec.trees;
+  config.seed = spec.seed;
+  return config;
+}
+
+}  // namespace
 
 Simulation::Simulation(const ScenarioSpec& spec)
-    : spec_(spec), world_(spec.worldDef()), target_labels_(spec.targetLabels()) {
+    : spec_(spec),
+      world_(spec.worldDef()),
+      team_(teamConfig(spec)),
+      target_labels_(spec.targetLabels()) {
   const std::size_t n = spec.uavs.size();
   for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec.seed, "sensing", i);
   scans_.resize(n);
-  beliefs_.resize(n);
+  footprints_.resize(n);
+  positions_.resize(n);
+  yaws_.resize(n);
+  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec.planner.plan_period / spec.dt)));
+  if (spec.tracking.preseed) {
+    // Paper: every OOI starts with a track of the same P₀ at every agent, centred on the truth.
+    for (std::size_t t = 0; t < spec.targets.size(); ++t) {
+      const world::Path& path = spec.targets[t].path;
+      Vec4 state;
+      state << path.positionAt(0.0), path.velocityAt(0.0);
+      team_.preseed(static_cast<int>(t), spec.targets[t].label, state);
+    }
+  }
 }
 
 void Simulation::commandScriptedUavs() {
@@ -15,20 +50,41 @@ void Simulation::commandScriptedUavs() {
   const double t_next = world_.time() + spec_.dt;
   for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
     const auto& path = spec_.uavs[i].path;
-    const Vec2 command = path ? Vec2((path->positionAt(t_next) - truth_.uavs[i].position) / spec_.dt)
-                              : Vec2::Zero();
+    const Vec2 command =
+        path ? Vec2((path->positionAt(t_next) - positions_[i]) / spec_.dt) : Vec2::Zero();
     world_.commandUav(static_cast<int>(i), command);
   }
 }
 
+void Simulation::commandFromPlan() {
+  // Receding horizon: plan every plan_period from t = 0, apply the first action, hold it.
+  if (truth_.step % steps_per_plan_ != 0) return;
+  plan_ = team_.plan(truth_.step / steps_per_plan_, positions_, yaws_);
+  for (std::size_t i = 0; i < plan_->plans.size(); ++i) {
+    world_.commandUav(static_cast<int>(i), plan_->plans[i].command());
+  }
+}
+
 void Simulation::tick() {
+  const double dt = next_step_ > 0 ? spec_.dt : 0.0;
   if (next_step_ > 0) world_.step(spec_.dt);  // applies the commands set at the previous step
   truth_ = world_.snapshot();
   for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
-    sensing::sense(world_, truth_, static_cast<int>(i), spec_.uavs[i].sensor, spec_.sensing,
-                   target_labels_, sensing_rng_[i], scratch_, scans_[i]);
+    const int uav = static_cast<int>(i);
+    positions_[i] = truth_.uavs[i].position;
+    yaws_[i] = truth_.uavs[i].yaw;
+    footprints_[i] = sensing::footprintOf(truth_, uav, spec_.uavs[i].sensor);
+    sensing::sense(world_, truth_, uav, spec_.uavs[i].sensor, spec_.sensing, target_labels_,
+                   sensing_rng_[i], scratch_, scans_[i]);
   }
-  commandScriptedUavs();
+  team_.track(dt, scans_, footprints_, positions_);
+  plan_.reset();
+  if (spec_.planner.algorithm == agents::PlannerAlgorithm::none) {
+    commandScriptedUavs();
+  } else {
+    commandFromPlan();
+  }
+  beliefs_ = team_.beliefs();
   ++next_step_;
 }
 

@@ -6,7 +6,25 @@
 namespace canopy::scenarios {
 
 SummaryBuilder::SummaryBuilder(const ScenarioSpec& spec)
-    : spec_(spec), targets_(spec.targets.size()), uavs_(spec.uavs.size()) {}
+    : spec_(spec),
+      targets_(spec.targets.size()),
+      uavs_(spec.uavs.size()),
+      ospa_(spec.uavs.size()),
+      plan_seconds_(spec.uavs.size()) {}
+
+namespace {
+double mean(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (const double v : x) sum += v;
+  return x.empty() ? 0.0 : sum / static_cast<double>(x.size());
+}
+double median(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const std::size_t n = x.size();
+  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+}  // namespace
 
 void SummaryBuilder::add(const Simulation& sim) {
   const world::WorldSnapshot& truth = sim.truth();
@@ -32,6 +50,22 @@ void SummaryBuilder::add(const Simulation& sim) {
     targets_[t].steps_in_footprint += in_footprint_of_[t] > 0;
     targets_[t].coverage += in_footprint_of_[t];
   }
+
+  truth_positions_.clear();
+  for (const world::TargetState& target : truth.targets)
+    truth_positions_.push_back(target.position);
+  for (std::size_t i = 0; i < sim.beliefs().size(); ++i) {
+    estimates_.clear();
+    for (const agents::TrackEstimate& track : sim.beliefs()[i].tracks) {
+      estimates_.push_back(track.belief.x.head<2>());
+    }
+    ospa_[i].push_back(ospa_metric_(truth_positions_, estimates_));
+  }
+  if (sim.plan()) {
+    for (const auto& report : sim.plan()->reports)
+      plan_seconds_[report.agent].push_back(report.seconds);
+  }
+  team_ = &sim.team();
   ++steps_;
 }
 
@@ -57,16 +91,52 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   }
   summary["targets"] = targets;
   Json uavs = Json::array();
+  double ospa_sum = 0.0;
+  Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
-    uavs.push_back({{"name", spec_.uavs[i].name},
-                    {"distance_m", uavs_[i].distance},
-                    {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
-                    {"observations", uavs_[i].observations}});
+    Json uav = {{"name", spec_.uavs[i].name},
+                {"distance_m", uavs_[i].distance},
+                {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
+                {"observations", uavs_[i].observations},
+                {"ospa_mean_m", mean(ospa_[i])},
+                {"ospa_m", ospa_[i]}};
+    if (team_) {
+      const auto& tracker = team_->agents()[i].tracker();
+      uav["tracks_at_end"] = tracker.targets().size();
+      uav["trees_in_map_at_end"] = team_->agents()[i].map().trees().size();
+      uav["tracking_diagnostics"] = {
+          {"births", tracker.diagnostics().births},
+          {"deletions", tracker.diagnostics().deletions},
+          {"approximated_clusters", tracker.diagnostics().approximated_clusters},
+          {"non_positive_covariances", tracker.diagnostics().non_positive_covariances}};
+    }
+    uavs.push_back(std::move(uav));
+    ospa_sum += mean(ospa_[i]);
+    if (!plan_seconds_[i].empty()) {
+      plan_timing.push_back(
+          {{"name", spec_.uavs[i].name},
+           {"epochs", plan_seconds_[i].size()},
+           {"mean_s", mean(plan_seconds_[i])},
+           {"median_s", median(plan_seconds_[i])},
+           {"max_s", *std::max_element(plan_seconds_[i].begin(), plan_seconds_[i].end())}});
+    }
   }
   summary["uavs"] = uavs;
-  summary["team"] = {{"mean_visible_fraction",
-                      targets_.empty() ? 0.0 : visible_sum / static_cast<double>(targets_.size())}};
-  summary["timing"] = {{"wall_seconds", wall_seconds}};
+  summary["team"] = {
+      {"mean_visible_fraction",
+       targets_.empty() ? 0.0 : visible_sum / static_cast<double>(targets_.size())},
+      {"ospa_mean_m", uavs_.empty() ? 0.0 : ospa_sum / static_cast<double>(uavs_.size())},
+      {"ospa_cutoff_m", 50.0},
+      {"ospa_order", 2}};
+  if (team_) {
+    const auto& d = team_->fusion().diagnostics();
+    summary["fusion_diagnostics"] = {{"messages", d.messages},
+                                     {"lost_messages", d.lost_messages},
+                                     {"adoptions", d.adoptions},
+                                     {"rekeys", d.rekeys},
+                                     {"numerical_failures", d.numerical_failures}};
+  }
+  summary["timing"] = {{"wall_seconds", wall_seconds}, {"planning", plan_timing}};
   return summary.dump(2);
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/ospa.h"
 #include "scenarios/simulation.h"
 
 namespace canopy::scenarios {
@@ -11,8 +12,8 @@ class SummaryBuilder {
  public:
   explicit SummaryBuilder(const ScenarioSpec& spec);
   void add(const Simulation& sim);
-  /// The summary as pretty JSON; `wall_seconds` goes under "timing" (the only non-deterministic
-  /// field).
+  /// The summary as pretty JSON; wall times go under "timing" (the only non-deterministic
+  /// fields).
   std::string json(double wall_seconds) const;
 
   struct TargetTally {
@@ -21,21 +22,29 @@ class SummaryBuilder {
     long coverage = 0;           // Σ_k number of footprints containing the target
   };
   struct UavTally {
-    double distance = 0.0;       // m flown
-    long visible = 0;            // Σ_k |V_{i,k}|
-    long observations = 0;       // target, clutter and tree detections
+    double distance = 0.0;  // m flown
+    long visible = 0;       // Σ_k |V_{i,k}|
+    long observations = 0;  // target, clutter and tree detections
   };
   const std::vector<TargetTally>& targets() const { return targets_; }
   const std::vector<UavTally>& uavs() const { return uavs_; }
   int steps() const { return steps_; }
+  /// ospa()[i][k]: OSPA (c = 50 m, p = 2) between the true target positions and agent i's
+  /// confirmed track positions at step k (m).
+  const std::vector<std::vector<double>>& ospa() const { return ospa_; }
 
  private:
   const ScenarioSpec& spec_;
   std::vector<TargetTally> targets_;
   std::vector<UavTally> uavs_;
   std::vector<Vec2> last_uav_position_;
-  std::vector<int> visible_by_;      // scratch: per target, UAVs that see it this step
-  std::vector<int> in_footprint_of_; // scratch: per target, footprints holding it this step
+  std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
+  std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
+  Ospa ospa_metric_{50.0, 2.0};
+  std::vector<std::vector<double>> ospa_;          // [agent][k], m
+  std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
+  std::vector<Vec2> truth_positions_, estimates_;  // scratch
+  const agents::Team* team_ = nullptr;             // for the diagnostics at the end
   int steps_ = 0;
 };
 

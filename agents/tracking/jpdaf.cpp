@@ -46,7 +46,7 @@ void Jpdaf::gate(const Vec2& position, const Mat2& P_pos, int track,
                  const TrackingConfig& config, std::span<std::uint8_t> claimed,
                  TrackingDiagnostics& diagnostics) {
   const double gamma = gateThreshold(config.gate_probability);
-  const double gamma_birth = std::max(gamma, gateThreshold(kBirthGateProbability));
+  const double gamma_birth = std::max(gamma, gateThreshold(config.birth_gate_probability));
   const double trace_P = P_pos.trace();
   for (int l = 0; l < static_cast<int>(obs_ids.size()); ++l) {
     const sensing::Observation& o = observations[obs_ids[l]];

@@ -103,7 +103,8 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     }
   }
 
-  // Births: one tentative track per measurement in no track's birth gate (kBirthGateProbability).
+  // Births: one tentative track per measurement in no track's birth gate
+  // (config.birth_gate_probability).
   for (int l = 0; l < static_cast<int>(obs_ids_.size()); ++l) {
     if (claimed_[l]) continue;
     Track<N> track;

@@ -32,12 +32,12 @@ class Tracker {
   /// tracks of their own label; tree observations with tree tracks). Then per track: `detected`,
   /// scans and hits, and the count of consecutive misses while expected visible (predicted
   /// position inside own_footprint and, for targets, not occluded in own_map; a tree's crown
-  /// does not hide it). Measurements in no track's birth gate (jpdaf.h: kBirthGateProbability,
-  /// wider than the association gate) are born as tentative tracks. A tentative track is
-  /// confirmed after confirm_hits hits — scans in which Σ_j β_tj ≥ ½, i.e. it more likely than
-  /// not received a measurement — within its first confirm_window scans, and dropped as soon as
-  /// it can no longer be. Observations with non-finite values or a covariance that is
-  /// not positive definite are ignored.
+  /// does not hide it). Measurements in no track's birth gate
+  /// (TrackingConfig::birth_gate_probability, wider than the association gate) are born as
+  /// tentative tracks. A tentative track is confirmed after confirm_hits hits — scans in which Σ_j
+  /// β_tj ≥ ½, i.e. it more likely than not received a measurement — within its first
+  /// confirm_window scans, and dropped as soon as it can no longer be. Observations with non-finite
+  /// values or a covariance that is not positive definite are ignored.
   void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
               const OcclusionMap& own_map);
 

@@ -56,6 +56,8 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
   agents::TrackingConfig& t = spec.tracking;
   t.sigma_a = reader.number("sigma_a", t.sigma_a, Bound::positive);
   t.gate_probability = reader.number("gate_probability", t.gate_probability, Bound::open_probability);
+  t.birth_gate_probability =
+      reader.number("birth_gate_probability", t.birth_gate_probability, Bound::open_probability);
   t.p_detect = reader.number("p_detect", t.p_detect, Bound::unit_interval);
   t.clutter_density = reader.number("clutter_density", t.clutter_density, Bound::positive);
   t.max_hypotheses = reader.integer("max_hypotheses", t.max_hypotheses, 1, 10000000);

@@ -1,0 +1,38 @@
+#include "agents/agent.h"
+
+namespace canopy::agents {
+
+Agent::Agent(int index, const TrackingConfig& config) : tracker_(index, config) {}
+
+void Agent::trackLocally(double dt, const sensing::Scan& scan,
+                         const sensing::Footprint& footprint) {
+  tracker_.predict(dt);
+  tracker_.update(scan, footprint, map_);
+}
+
+void Agent::finishStep() {
+  tracker_.deleteStale();
+  map_trees_.clear();
+  for (const tracking::TreeTrack& tree : tracker_.trees()) {
+    if (tree.status == tracking::TrackStatus::confirmed)
+      map_trees_.push_back({tree.key, tree.posterior});
+  }
+  map_ = OcclusionMap::fromEstimates(map_trees_, tracker_.config().tree_min_radius);
+  planning_tracks_.clear();
+  for (const tracking::TargetTrack& track : tracker_.targets()) {
+    if (track.status == tracking::TrackStatus::confirmed)
+      planning_tracks_.push_back(track.posterior);
+  }
+}
+
+AgentBelief Agent::belief() const {
+  AgentBelief belief;
+  for (const tracking::TargetTrack& track : tracker_.targets()) {
+    if (track.status != tracking::TrackStatus::confirmed) continue;
+    belief.tracks.push_back({track.key, track.label, track.posterior, true});
+  }
+  belief.trees = map_trees_;
+  return belief;
+}
+
+}  // namespace canopy::agents

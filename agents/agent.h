@@ -1,0 +1,41 @@
+#pragma once
+// One UAV's tracking stack: its local tracker and the dynamic occlusion map Ŵ_i built from its
+// fused tree tracks. Never sees the world: only scans, and (through the team) its neighbours.
+#include <vector>
+
+#include "agents/belief.h"
+#include "agents/config.h"
+#include "agents/occlusion_map.h"
+#include "agents/tracking/tracker.h"
+#include "sensing/footprint.h"
+#include "sensing/observation.h"
+
+namespace canopy::agents {
+
+class Agent {
+ public:
+  Agent(int index, const TrackingConfig& config);
+
+  /// Predicts every track over dt (s) and runs the local JPDAF on this step's scan. The map
+  /// used to judge expected misses is the one from the end of the previous step.
+  void trackLocally(double dt, const sensing::Scan& scan, const sensing::Footprint& footprint);
+  /// After the team's fusion: deletes stale tracks and rebuilds Ŵ_i from the confirmed trees.
+  void finishStep();
+
+  /// Confirmed target tracks' posteriors: what the planner plans on.
+  const std::vector<TargetGaussian>& planningTracks() const { return planning_tracks_; }
+  const OcclusionMap& map() const { return map_; }
+  /// Confirmed target tracks and the map's trees, as plain values.
+  AgentBelief belief() const;
+
+  tracking::Tracker& tracker() { return tracker_; }
+  const tracking::Tracker& tracker() const { return tracker_; }
+
+ private:
+  tracking::Tracker tracker_;
+  OcclusionMap map_;
+  std::vector<TreeEstimate> map_trees_;          // the confirmed tree tracks behind map_
+  std::vector<TargetGaussian> planning_tracks_;  // confirmed target tracks' posteriors
+};
+
+}  // namespace canopy::agents

@@ -1,0 +1,62 @@
+#include "agents/team.h"
+
+namespace canopy::agents {
+
+Team::Team(const TeamConfig& config)
+    : config_(config),
+      fusion_(config.fusion, static_cast<int>(config.uavs.size()), config.seed),
+      planner_(config.planner, config.tracking.sigma_a, config.seed),
+      a_priori_(config.true_trees),
+      uav_states_(config.uavs),
+      planned_paths_(config.uavs.size()) {
+  for (int i = 0; i < static_cast<int>(config.uavs.size()); ++i)
+    agents_.emplace_back(i, config.tracking);
+}
+
+void Team::preseed(int target, sensing::LabelId label, const Vec4& state) {
+  for (Agent& agent : agents_) agent.tracker().preseed(target, label, state);
+}
+
+void Team::track(double dt, const std::vector<sensing::Scan>& scans,
+                 const std::vector<sensing::Footprint>& footprints,
+                 const std::vector<Vec2>& positions) {
+  fusion_views_.clear();
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    agents_[i].trackLocally(dt, scans[i], footprints[i]);
+    tracking::Tracker& tracker = agents_[i].tracker();
+    fusion_views_.push_back({&tracker.targets(), &tracker.trees(), positions[i]});
+  }
+  fusion_.fuse(fusion_views_);
+  for (Agent& agent : agents_) agent.finishStep();
+}
+
+std::optional<planning::TeamPlan> Team::plan(int epoch, const std::vector<Vec2>& positions,
+                                             const std::vector<double>& yaws) {
+  if (config_.planner.algorithm == PlannerAlgorithm::none) return std::nullopt;
+  planning_views_.clear();
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    uav_states_[i].position = positions[i];
+    uav_states_[i].yaw = yaws[i];
+    const OcclusionMap* map = nullptr;  // "none": nothing occludes
+    if (config_.planner.occlusion_map == OcclusionMapMode::a_priori) map = &a_priori_;
+    if (config_.planner.occlusion_map == OcclusionMapMode::dynamic) map = &agents_[i].map();
+    planning_views_.push_back({agents_[i].planningTracks(), map});
+  }
+  planning::TeamPlan plan = planner_.plan(epoch, uav_states_, planning_views_);
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    planned_paths_[i] =
+        planning::plannedPath(uav_states_[i], plan.plans[i], config_.planner.plan_period);
+  }
+  return plan;
+}
+
+std::vector<AgentBelief> Team::beliefs() const {
+  std::vector<AgentBelief> beliefs;
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    beliefs.push_back(agents_[i].belief());
+    beliefs.back().planned_path = planned_paths_[i];
+  }
+  return beliefs;
+}
+
+}  // namespace canopy::agents

@@ -1,0 +1,60 @@
+#pragma once
+// The UAV team's stack for one step (architecture.md, "One tick"): local JPDAF per agent → L
+// consensus rounds over the network (targets and trees) → occlusion maps → on planning epochs,
+// SMA-NBO / Dec-POMDP / centralised planning → velocity commands.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "agents/agent.h"
+#include "agents/config.h"
+#include "agents/fusion/team_fusion.h"
+#include "agents/planning/team_planner.h"
+#include "world/tree.h"
+
+namespace canopy::agents {
+
+struct TeamConfig {
+  TrackingConfig tracking;
+  FusionConfig fusion;
+  PlannerConfig planner;
+  std::vector<planning::UavState>
+      uavs;  // each UAV's limits and camera (positions filled per epoch)
+  std::vector<world::TreeDef> true_trees;  // the a-priori map (occlusion_map "a_priori" only)
+  std::uint64_t seed = 1;                  // the trial's seed
+};
+
+class Team {
+ public:
+  explicit Team(const TeamConfig& config);
+
+  /// Every agent starts with a confirmed track {−1, t} on target t (mean `state`: m, m/s).
+  void preseed(int target, sensing::LabelId label, const Vec4& state);
+
+  /// Local tracking of every agent on its scan (dt: s since the last step, 0 at the start), the
+  /// team's fusion, then deletion and map rebuilding. positions: each UAV's ground point (m).
+  void track(double dt, const std::vector<sensing::Scan>& scans,
+             const std::vector<sensing::Footprint>& footprints, const std::vector<Vec2>& positions);
+
+  /// One planning epoch; uavs: each UAV's position and yaw now (the rest from the config).
+  /// Returns the team plan (plans[i].command() is UAV i's command), or nothing without a planner.
+  std::optional<planning::TeamPlan> plan(int epoch, const std::vector<Vec2>& positions,
+                                         const std::vector<double>& yaws);
+
+  std::vector<AgentBelief> beliefs() const;
+  const std::vector<Agent>& agents() const { return agents_; }
+  const fusion::TeamFusion& fusion() const { return fusion_; }
+
+ private:
+  TeamConfig config_;
+  std::vector<Agent> agents_;
+  fusion::TeamFusion fusion_;
+  planning::TeamPlanner planner_;
+  OcclusionMap a_priori_;
+  std::vector<fusion::AgentTracks> fusion_views_;  // rebuilt every step (pointers into agents_)
+  std::vector<planning::UavState> uav_states_;
+  std::vector<planning::AgentView> planning_views_;
+  std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan
+};
+
+}  // namespace canopy::agents
