@@ -14,6 +14,8 @@ usage:
   canopy run [SCENARIO] [--out DIR] [--seed N] [--set key=value]...
   canopy validate SCENARIO [--set key=value]...
   canopy list
+  canopy sweep SWEEP.json --out DIR [--jobs N]
+  canopy analyze DIR [--out DIR]
   canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R[,R_MAX] --seed S [--min-gap G]
 
 SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run without one
@@ -36,6 +38,8 @@ int main(int argc, char** argv) {
     if (command == "validate") return validateCommand(args);
     if (command == "list") return listCommand(args);
     if (command == "forest") return forestCommand(args);
+    if (command == "sweep") return sweepCommand(args);
+    if (command == "analyze") return analyzeCommand(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::fputs(kUsage, stdout);
       return kExitOk;

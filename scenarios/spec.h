@@ -37,6 +37,7 @@ struct NamedOwnership {
 
 struct AnalysisSpec {
   int m = 5;                                // m of m-Ownership (steps)
+  double oa_margin = 1.0;                   // s, h of Occlusion_Aware around an occluded interval
   std::vector<NamedOwnership> states;       // e.g. M0 and M*
 };
 

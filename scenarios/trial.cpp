@@ -1,5 +1,6 @@
 #include "scenarios/trial.h"
 
+#include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
 
@@ -42,6 +43,23 @@ void TrialCollector::add(const Simulation& sim) {
       if (sim.world().insideOccluder(sim.truth().targets[t].position)) occluded |= TargetBits{1} << t;
     }
   }
+  truth_.clear();
+  for (const world::TargetState& target : sim.truth().targets) truth_.push_back(target.position);
+  double ospa = 0.0, trace = 0.0;
+  for (const agents::AgentBelief& belief : sim.beliefs()) {
+    estimates_.clear();
+    for (const agents::TrackEstimate& track : belief.tracks) {
+      estimates_.push_back(track.belief.x.head<2>());
+      trace += track.belief.P.topLeftCorner<2, 2>().trace();
+    }
+    ospa += ospa_(truth_, estimates_);
+  }
+  const double agents = std::max<double>(1.0, static_cast<double>(sim.beliefs().size()));
+  result_.ospa.push_back(ospa / agents);
+  result_.trace.push_back(trace / agents);
+  if (sim.plan()) {
+    for (const auto& report : sim.plan()->reports) result_.plan_seconds.push_back(report.seconds);
+  }
   result_.visible.push_back(std::move(visible));
   result_.in_footprint.push_back(std::move(in_footprint));
   result_.occluded.push_back(occluded);
@@ -74,6 +92,8 @@ std::string trialToJson(const TrialResult& trial) {
   j["in_footprint"] = trial.in_footprint;
   j["occluded"] = trial.occluded;
   j["tree_first_seen"] = trial.tree_first_seen;
+  j["ospa"] = trial.ospa;
+  j["trace"] = trial.trace;
   return j.dump();
 }
 
@@ -92,11 +112,14 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
     trial.in_footprint = j.at("in_footprint").get<std::vector<std::vector<TargetBits>>>();
     trial.occluded = j.at("occluded").get<std::vector<TargetBits>>();
     trial.tree_first_seen = j.at("tree_first_seen").get<std::vector<int>>();
+    trial.ospa = j.at("ospa").get<std::vector<double>>();
+    trial.trace = j.at("trace").get<std::vector<double>>();
   } catch (const Json::exception& e) {
     throw ScenarioError(file, "", std::string("not a trial result: ") + e.what());
   }
   const std::size_t steps = trial.occluded.size();
-  if (trial.visible.size() != steps || trial.in_footprint.size() != steps) {
+  if (trial.visible.size() != steps || trial.in_footprint.size() != steps ||
+      trial.ospa.size() != steps || trial.trace.size() != steps) {
     throw ScenarioError(file, "", "not a trial result: per-step arrays differ in length");
   }
   for (std::size_t k = 0; k < steps; ++k) {

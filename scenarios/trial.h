@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/ospa.h"
 #include "scenarios/simulation.h"
 #include "scenarios/spec.h"
 
@@ -24,6 +25,9 @@ struct TrialResult {
   std::vector<std::vector<TargetBits>> in_footprint;  // [k][i]: targets whose truth lies in φ_{i,k}
   std::vector<TargetBits> occluded;                   // [k]: targets strictly under a crown
   std::vector<int> tree_first_seen;             // per tree: first step a footprint held its centre, −1 never
+  std::vector<double> ospa;                     // [k]: OSPA (c 50 m, p 2) averaged over agents (m)
+  std::vector<double> trace;                    // [k]: Σ_j tr(P_pos) of confirmed tracks, averaged over agents (m²)
+  std::vector<double> plan_seconds;             // every planning call's wall time (s); not written
   double wall_seconds = 0.0;                    // not part of the result's identity
 
   int steps() const { return static_cast<int>(occluded.size()); }
@@ -39,12 +43,14 @@ class TrialCollector {
  private:
   TrialResult result_;
   bool masks_ = true;
+  Ospa ospa_{50.0, 2.0};
+  std::vector<Vec2> truth_, estimates_;  // scratch
 };
 
 /// Runs `spec` (its seed included) to the end and collects the trial.
 TrialResult runTrial(const ScenarioSpec& spec, const std::string& config_id);
 
-/// JSON text of a trial, and back. The text is deterministic (wall time excluded), so identical
+/// JSON text of a trial, and back. The text is deterministic (wall times excluded), so identical
 /// trials give identical files.
 std::string trialToJson(const TrialResult& trial);
 /// Throws ScenarioError naming `file` when the text is not a trial.

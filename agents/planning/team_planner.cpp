@@ -121,9 +121,15 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
     }
   }
   const PlanningProblem problem{view.tracks, uavs, view.map, settings_};
+  // Dec-POMDP (paper eq. 6): agent i applies its part of argmax_a J(b_i, a), a function of its
+  // belief alone. The swarm only approximates the argmax, so every agent draws from the same
+  // stream for this epoch: agents with equal beliefs reach the same joint plan, as the argmax
+  // would, and the team does not miscoordinate through optimiser noise. Centralised planning
+  // keeps the leader's own stream.
+  RandomStream joint_stream(seed_, "pso.joint", static_cast<std::uint64_t>(out.epoch));
+  RandomStream& rng = config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
   const Clock::time_point start = Clock::now();
-  PlanSearch search =
-      optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng_[planner]);
+  PlanSearch search = optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng);
   const double seconds = secondsSince(start);
   last_joint_[planner] = search.plans;
   last_joint_epoch_[planner] = out.epoch;

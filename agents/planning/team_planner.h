@@ -52,8 +52,10 @@ struct TeamPlan {
 };
 
 /// Keeps what persists between epochs: the published intentions, each agent's previous joint plan
-/// (warm starts of Dec-POMDP and centralised planning) and one "pso" RandomStream per agent, so
-/// a sequence of calls is bit-for-bit reproducible for a seed. Wall time is measured for the
+/// (warm starts of Dec-POMDP and centralised planning) and one "pso" RandomStream per agent (SMA
+/// and the centralised leader), so a sequence of calls is bit-for-bit reproducible for a seed.
+/// Dec-POMDP agents all draw from one stream per epoch ("pso.joint", epoch): the paper's argmax
+/// is a function of the belief, so equal beliefs must give equal joint plans. Wall time is measured for the
 /// report only and never feeds back into a decision.
 class TeamPlanner {
  public:

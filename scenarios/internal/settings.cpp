@@ -139,6 +139,7 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
 void readAnalysis(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "analysis");
   spec.analysis.m = reader.integer("m", spec.analysis.m, 1, 100000);
+  spec.analysis.oa_margin = reader.number("oa_margin", spec.analysis.oa_margin, Bound::non_negative);
   if (auto states = reader.optional("states")) {
     std::set<std::string> names;
     for (const Field& element : states->elements()) {

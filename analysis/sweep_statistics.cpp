@@ -1,0 +1,88 @@
+#include "analysis/sweep_statistics.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace canopy::analysis {
+
+double ConfigStatistics::stateFraction(const std::string& state, int c) const {
+  const auto it = std::find(states.begin(), states.end(), state);
+  if (it == states.end() || trials == 0) return 0.0;
+  return static_cast<double>(state_counts[c][it - states.begin()]) / trials;
+}
+
+int firstBelow(const std::vector<double>& curve, double threshold, int from) {
+  for (int k = std::max(0, from); k < static_cast<int>(curve.size()); ++k) {
+    if (curve[k] < threshold) return k;
+  }
+  return -1;
+}
+
+ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
+                           const scenarios::ScenarioSpec& spec, const std::string& id,
+                           const std::vector<std::string>& overrides) {
+  ConfigStatistics stats;
+  stats.id = id;
+  stats.overrides = overrides;
+  stats.trials = static_cast<int>(trials.size());
+  stats.dt = spec.dt;
+  for (const auto& named : spec.analysis.states) stats.states.push_back(named.name);
+  for (const char* fallback : {"Miss 1", "Miss >1", "Other"}) stats.states.push_back(fallback);
+  const std::size_t n_states = stats.states.size();
+  for (auto& counts : stats.state_counts) counts.assign(n_states, 0);
+  for (auto& flow : stats.flows) flow.assign(n_states, std::vector<int>(n_states, 0));
+  if (trials.empty()) return stats;
+
+  const int steps = trials.front().steps();
+  const int targets = trials.front().targets;
+  stats.columns = sankeyColumns(steps - 1);
+  stats.coverage.assign(targets, std::vector<double>(steps, 0.0));
+  stats.ospa.assign(steps, 0.0);
+  stats.trace.assign(steps, 0.0);
+  auto stateIndex = [&](const std::string& s) {
+    return static_cast<std::size_t>(std::find(stats.states.begin(), stats.states.end(), s) - stats.states.begin());
+  };
+  const double n = static_cast<double>(trials.size());
+
+  for (const scenarios::TrialResult& trial : trials) {
+    const TrialBehaviour b = analyseTrial(trial, spec);
+    for (int c = 0; c < 5; ++c) ++stats.state_counts[c][stateIndex(b.states[c])];
+    for (int g = 0; g < 4; ++g) ++stats.flows[g][stateIndex(b.states[g])][stateIndex(b.states[g + 1])];
+    for (const OwnershipChange& change : b.changes) {
+      auto it = std::find_if(stats.changes.begin(), stats.changes.end(),
+                             [&](const ChangeCount& c) { return c.change == change; });
+      if (it == stats.changes.end()) it = stats.changes.insert(stats.changes.end(), {change, 0});
+      ++it->trials;
+    }
+    for (const OcclusionEpisode& e : b.occlusions) {
+      auto it = std::find_if(stats.occlusions.begin(), stats.occlusions.end(), [&](const OcclusionStatistics& o) {
+        return o.target == e.target && o.hidden == e.hidden;
+      });
+      if (it == stats.occlusions.end()) {
+        it = stats.occlusions.insert(stats.occlusions.end(), OcclusionStatistics{});
+        it->target = e.target;
+        it->hidden = e.hidden;
+      }
+      ++it->trials;
+      it->aware += e.aware;
+      it->with_event += e.tree_seen_before;
+      it->aware_with_event += e.aware && e.tree_seen_before;
+    }
+    for (int t = 0; t < targets; ++t) {
+      for (int k = 0; k < steps; ++k) stats.coverage[t][k] += b.coverage[t][k] / n;
+    }
+    for (int k = 0; k < steps; ++k) {
+      stats.ospa[k] += trial.ospa[k] / n;
+      stats.trace[k] += trial.trace[k] / n;
+    }
+  }
+  std::sort(stats.changes.begin(), stats.changes.end(), [](const ChangeCount& a, const ChangeCount& b) {
+    return std::tie(a.change.from, a.change.to, a.change.target) < std::tie(b.change.from, b.change.to, b.change.target);
+  });
+  std::sort(stats.occlusions.begin(), stats.occlusions.end(), [](const OcclusionStatistics& a, const OcclusionStatistics& b) {
+    return std::tie(a.target, a.hidden.first) < std::tie(b.target, b.hidden.first);
+  });
+  return stats;
+}
+
+}  // namespace canopy::analysis

@@ -1,0 +1,58 @@
+#pragma once
+// Per-configuration statistics over a sweep's trials: ownership-state frequencies and flows at
+// the Sankey columns, Ownership_Change counts, Occlusion_Aware frequencies (plain and given the
+// occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "analysis/trial_behaviour.h"
+#include "scenarios/spec.h"
+#include "scenarios/trial.h"
+
+namespace canopy::analysis {
+
+struct OcclusionStatistics {
+  int target = 0;
+  Interval hidden;             // steps
+  int trials = 0;              // trials with this interval
+  int aware = 0;               // … judged Occlusion_Aware
+  int with_event = 0;          // … where the hiding tree was seen before the window (event e)
+  int aware_with_event = 0;
+  double pAware() const { return trials ? static_cast<double>(aware) / trials : 0.0; }
+  double pAwareGivenEvent() const { return with_event ? static_cast<double>(aware_with_event) / with_event : 0.0; }
+};
+
+struct ChangeCount {
+  OwnershipChange change;
+  int trials = 0;  // trials with this change from k = 0 to k = L
+};
+
+struct ConfigStatistics {
+  std::string id;                          // the sweep configuration
+  std::vector<std::string> overrides;      // its --set values
+  int trials = 0;
+  double dt = 0.2;                         // s
+  std::array<int, 5> columns{};            // steps of the Sankey columns
+  std::vector<std::string> states;         // named states, then "Miss 1", "Miss >1", "Other"
+  std::array<std::vector<int>, 5> state_counts;            // [column][state]
+  std::array<std::vector<std::vector<int>>, 4> flows;      // [gap][from][to] trial counts
+  std::vector<ChangeCount> changes;
+  std::vector<OcclusionStatistics> occlusions;
+  std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
+  std::vector<double> ospa;                   // [k]: mean OSPA (m)
+  std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
+
+  /// Fraction of trials in `state` at Sankey column c (0 if the state is unknown).
+  double stateFraction(const std::string& state, int c) const;
+};
+
+/// trials: all of one configuration (at least one); spec: that configuration's scenario.
+ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
+                           const scenarios::ScenarioSpec& spec, const std::string& id,
+                           const std::vector<std::string>& overrides);
+
+/// The first step ≥ from at which curve[k] < threshold, or −1.
+int firstBelow(const std::vector<double>& curve, double threshold, int from = 0);
+
+}  // namespace canopy::analysis

@@ -1,0 +1,109 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "analysis/sweep_analysis.h"
+#include "app/commands.h"
+#include "scenarios/sweep.h"
+
+namespace canopy::app {
+namespace {
+
+// A one-line progress bar on stderr: redrawn in place on a terminal, a line per 10 % otherwise.
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::string label) : label_(std::move(label)), tty_(isatty(STDERR_FILENO)) {}
+  void update(const scenarios::SweepProgress& p) {
+    if (p.total == 0) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const int ran = p.done - p.resumed;
+    const double rate = elapsed > 0 ? ran / elapsed : 0.0;
+    const double eta = rate > 0 ? (p.total - p.done) / rate : 0.0;
+    const int decile = 10 * p.done / p.total;
+    if (!tty_ && decile == last_decile_ && p.done != p.total) return;
+    last_decile_ = decile;
+    char bar[31];
+    const int filled = 30 * p.done / p.total;
+    for (int i = 0; i < 30; ++i) bar[i] = i < filled ? '#' : '.';
+    bar[30] = '\0';
+    std::fprintf(stderr, "%s%s [%s] %d/%d trials (%d resumed), %.1f trials/s, ETA %.0f s%s", tty_ ? "\r" : "",
+                 label_.c_str(), bar, p.done, p.total, p.resumed, rate, eta, tty_ && p.done < p.total ? "" : "\n");
+  }
+
+ private:
+  std::string label_;
+  bool tty_;
+  int last_decile_ = -1;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+int defaultJobs() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+}  // namespace
+
+int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs) {
+  ProgressBar bar(sweep.name);
+  return scenarios::runSweep(sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
+}
+
+int sweepCommand(Args& args) {
+  std::string file, out;
+  int jobs = defaultJobs();
+  while (!args.done()) {
+    const std::string arg = args.take();
+    if (arg == "--out") {
+      out = args.value(arg);
+    } else if (arg == "--jobs") {
+      jobs = args.intValue(arg, 1, 1024);
+    } else if (!arg.empty() && arg[0] == '-') {
+      usageError(arg, "unknown option for `canopy sweep`");
+    } else if (file.empty()) {
+      file = arg;
+    } else {
+      usageError(arg, "expected one sweep file, got a second one");
+    }
+  }
+  if (file.empty() || out.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
+  const scenarios::SweepSpec sweep = scenarios::loadSweep(file);
+  const auto start = std::chrono::steady_clock::now();
+  const int ran = runSweepWithProgress(sweep, out, jobs);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n", sweep.name.c_str(), ran, seconds, jobs, out.c_str());
+  return kExitOk;
+}
+
+int analyzeCommand(Args& args) {
+  std::string dir, out;
+  while (!args.done()) {
+    const std::string arg = args.take();
+    if (arg == "--out") {
+      out = args.value(arg);
+    } else if (!arg.empty() && arg[0] == '-') {
+      usageError(arg, "unknown option for `canopy analyze`");
+    } else if (dir.empty()) {
+      dir = arg;
+    } else {
+      usageError(arg, "expected one sweep directory, got a second one");
+    }
+  }
+  if (dir.empty()) usageError("analyze", "expected a sweep directory");
+  if (out.empty()) out = dir + "/analysis";
+  const analysis::SweepAnalysis result = analysis::analyseSweep(dir);
+  analysis::writeTables(result, out);
+  for (const analysis::ConfigStatistics& config : result.configs) {
+    std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
+    for (std::size_t i = 0; i < config.states.size(); ++i) {
+      if (config.state_counts[4][i] > 0) {
+        std::printf("  %s %.0f%%", config.states[i].c_str(), 100.0 * config.state_counts[4][i] / config.trials);
+      }
+    }
+    std::printf("\n");
+  }
+  std::printf("tables → %s/\n", out.c_str());
+  return kExitOk;
+}
+
+}  // namespace canopy::app
