@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "analysis/plots.h"
 #include "scenarios/loader.h"
 #include "scenarios/sweep.h"
 
@@ -87,6 +88,34 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
       tracking << id << ',' << k << ',' << k * s.dt << ',' << s.ospa[k] << ',' << s.trace[k] << '\n';
     }
   }
+}
+
+}  // namespace canopy::analysis
+
+namespace canopy::analysis {
+
+std::vector<fs::path> writeSvgFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
+  fs::create_directories(out_dir);
+  std::vector<fs::path> written;
+  auto write = [&](const fs::path& stem, const Figure& figure) {
+    std::ofstream out(stem.string() + ".svg", std::ios::trunc);
+    out << toSvg(figure);
+    if (!out) throw std::runtime_error("cannot write " + stem.string() + ".svg");
+    written.push_back(stem);
+  };
+  std::vector<const ConfigStatistics*> configs;
+  std::vector<std::string> labels;
+  for (const ConfigStatistics& s : analysis.configs) {
+    write(out_dir / ("sankey_" + s.id), sankeyFigure(s, analysis.name + ": ownership, " + s.id));
+    configs.push_back(&s);
+    labels.push_back(s.id);
+  }
+  if (!analysis.specs.empty()) {
+    std::vector<std::string> targets;
+    for (const auto& target : analysis.specs.front().targets) targets.push_back(target.name);
+    write(out_dir / "coverage", coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"));
+  }
+  return written;
 }
 
 }  // namespace canopy::analysis

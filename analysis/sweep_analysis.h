@@ -31,3 +31,12 @@ SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir);
 void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
 
 }  // namespace canopy::analysis
+
+namespace canopy::analysis {
+
+/// Writes sankey_<config>.svg per configuration and coverage.svg (one line per configuration)
+/// into out_dir; returns the files written (without extension), so PNGs can follow.
+std::vector<std::filesystem::path> writeSvgFigures(const SweepAnalysis& analysis,
+                                                   const std::filesystem::path& out_dir);
+
+}  // namespace canopy::analysis

@@ -1,6 +1,10 @@
 #pragma once
 // One function per `canopy` subcommand; each returns the process exit code.
+#include <filesystem>
+
+#include "analysis/sweep_analysis.h"
 #include "app/cli.h"
+#include "scenarios/sweep.h"
 
 namespace canopy::app {
 
@@ -10,6 +14,12 @@ int listCommand(Args& args);      // canopy list
 int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
 int sweepCommand(Args& args);     // canopy sweep SWEEP.json --out DIR [--jobs N]
 int analyzeCommand(Args& args);   // canopy analyze DIR [--out DIR]
+int reproduceCommand(Args& args); // canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
+
+/// Runs a sweep with a progress bar on stderr; returns the number of trials run now.
+int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs);
+/// Writes a sweep analysis's figures (SVG and PNG) into dir.
+void writeFigures(const analysis::SweepAnalysis& analysis, const std::filesystem::path& dir);
 
 /// The scenario `canopy run` uses when none is given.
 inline constexpr const char* kDefaultScenario = "demo";

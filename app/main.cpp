@@ -16,6 +16,7 @@ usage:
   canopy list
   canopy sweep SWEEP.json --out DIR [--jobs N]
   canopy analyze DIR [--out DIR]
+  canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
   canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R[,R_MAX] --seed S [--min-gap G]
 
 SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run without one
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
     if (command == "forest") return forestCommand(args);
     if (command == "sweep") return sweepCommand(args);
     if (command == "analyze") return analyzeCommand(args);
+    if (command == "reproduce") return reproduceCommand(args);
     if (command == "help" || command == "--help" || command == "-h") {
       std::fputs(kUsage, stdout);
       return kExitOk;

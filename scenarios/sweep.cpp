@@ -1,6 +1,8 @@
 #include "scenarios/sweep.h"
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cctype>
 #include <cstdio>
 #include <fstream>
@@ -189,6 +191,7 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   for (int w = 0; w < jobs; ++w) pool.emplace_back(worker);
   pool.clear();  // joins
   if (failure) std::rethrow_exception(failure);
+  writeAtomically(options.out_dir / "summary.json", summariseSweep(loadSweepResults(options.out_dir)));
   return static_cast<int>(todo.size());
 }
 
@@ -209,6 +212,33 @@ SweepResults loadSweepResults(const fs::path& out_dir) {
     results.trials.push_back(std::move(trials));
   }
   return results;
+}
+
+std::string summariseSweep(const SweepResults& results) {
+  Json configs = Json::array();
+  for (std::size_t c = 0; c < results.configs.size(); ++c) {
+    double ospa = 0.0, trace = 0.0, visible = 0.0, samples = 0.0;
+    for (const TrialResult& trial : results.trials[c]) {
+      for (int k = 0; k < trial.steps(); ++k) {
+        TargetBits seen = 0;
+        for (const TargetBits s : trial.visible[k]) seen |= s;
+        ospa += trial.ospa[k];
+        trace += trial.trace[k];
+        visible += trial.targets ? static_cast<double>(std::popcount(seen)) / trial.targets : 0.0;
+        samples += 1.0;
+      }
+    }
+    const double n = std::max(1.0, samples);
+    configs.push_back({{"id", results.configs[c].id},
+                       {"overrides", results.configs[c].overrides},
+                       {"trials", results.trials[c].size()},
+                       {"mean_ospa_m", ospa / n},
+                       {"mean_trace_pos_m2", trace / n},
+                       {"mean_visible_fraction", visible / n}});
+  }
+  return Json{{"sweep", results.sweep.name}, {"scenario", results.sweep.scenario},
+              {"trials_per_config", results.sweep.trials}, {"configs", configs}}
+             .dump(2) + "\n";
 }
 
 }  // namespace canopy::scenarios

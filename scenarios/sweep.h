@@ -55,8 +55,8 @@ struct SweepOptions {
   std::function<void(const SweepProgress&)> on_progress;  // called from worker threads, serialised
 };
 
-/// Runs every missing trial; returns the number it ran. Every configuration is loaded (and so
-/// validated) before the first trial starts.
+/// Runs every missing trial, then writes DIR/summary.json (summariseSweep); returns the number of
+/// trials it ran. Every configuration is loaded (and so validated) before the first trial starts.
 int runSweep(const SweepSpec& sweep, const SweepOptions& options);
 
 /// Where trial `index` of configuration `config_id` lives under a sweep directory.
@@ -70,5 +70,10 @@ struct SweepResults {
   std::vector<std::vector<TrialResult>> trials;  // [config][trial]
 };
 SweepResults loadSweepResults(const std::filesystem::path& out_dir);
+
+/// summary.json of a sweep directory: per configuration its overrides, the trials finished, and
+/// means over trials and steps of OSPA (m), Σ tr(P_pos) (m²) and the fraction of targets visible
+/// to some UAV. Depends only on the finished trials, never on how they were run or resumed.
+std::string summariseSweep(const SweepResults& results);
 
 }  // namespace canopy::scenarios

@@ -1,0 +1,65 @@
+#include "analysis/figure.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace canopy::analysis {
+namespace {
+
+std::string rgb(const Colour& c) {
+  char text[32];
+  std::snprintf(text, sizeof text, "rgb(%d,%d,%d)", c.r, c.g, c.b);
+  return text;
+}
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string points(const std::vector<Vec2>& ps) {
+  std::ostringstream text;
+  for (const Vec2& p : ps) text << p.x() << ',' << p.y() << ' ';
+  return text.str();
+}
+
+}  // namespace
+
+std::string toSvg(const Figure& figure) {
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << figure.width << "\" height=\""
+      << figure.height << "\" viewBox=\"0 0 " << figure.width << ' ' << figure.height << "\">\n";
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"" << rgb(figure.background) << "\"/>\n";
+  for (const Shape& shape : figure.shapes) {
+    if (const auto* p = std::get_if<FilledPolygon>(&shape)) {
+      svg << "<polygon points=\"" << points(p->points) << "\" fill=\"" << rgb(p->fill)
+          << "\" fill-opacity=\"" << p->fill.alpha << "\"/>\n";
+    } else if (const auto* l = std::get_if<Line>(&shape)) {
+      svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\"" << rgb(l->colour)
+          << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\"" << l->width
+          << "\" stroke-linejoin=\"round\"/>\n";
+    } else if (const auto* t = std::get_if<Label>(&shape)) {
+      const char* anchor = t->anchor == Anchor::start ? "start" : t->anchor == Anchor::middle ? "middle" : "end";
+      // A capital letter is about 0.7 em high in sans-serif fonts.
+      svg << "<text x=\"" << t->at.x() << "\" y=\"" << t->at.y() << "\" font-family=\"sans-serif\" font-size=\""
+          << t->size / 0.7 << "\" text-anchor=\"" << anchor << "\" fill=\"" << rgb(t->colour) << "\">"
+          << escaped(t->text) << "</text>\n";
+    }
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+Colour seriesColour(int index) {
+  static const Colour kColours[] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},   {255, 127, 14},
+                                    {148, 103, 189}, {23, 190, 207}, {140, 86, 75},   {227, 119, 194}};
+  return kColours[index % 8];
+}
+
+}  // namespace canopy::analysis

@@ -1,0 +1,55 @@
+#pragma once
+// A figure as plain shapes in pixel coordinates (x right, y down), written as SVG here and as
+// PNG through the renderer's canvas (figure_png.h), so that canopy draws its own figures.
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/types.h"
+
+namespace canopy::analysis {
+
+struct Colour {
+  std::uint8_t r = 0, g = 0, b = 0;
+  double alpha = 1.0;  // 0 transparent … 1 opaque
+};
+
+/// A filled convex polygon (bands are built from convex quads so the PNG path can fill them).
+struct FilledPolygon {
+  std::vector<Vec2> points;  // px
+  Colour fill;
+};
+
+struct Line {
+  std::vector<Vec2> points;  // px
+  double width = 1.0;        // px
+  Colour colour;
+};
+
+enum class Anchor { start, middle, end };
+
+struct Label {
+  Vec2 at = Vec2::Zero();  // px, the baseline's anchor point
+  std::string text;        // ASCII
+  double size = 12.0;      // px, the height of a capital letter
+  Anchor anchor = Anchor::start;
+  Colour colour;
+};
+
+using Shape = std::variant<FilledPolygon, Line, Label>;
+
+struct Figure {
+  int width = 800;   // px
+  int height = 600;  // px
+  Colour background{255, 255, 255};
+  std::vector<Shape> shapes;  // drawn in order
+};
+
+/// The figure as an SVG document.
+std::string toSvg(const Figure& figure);
+
+/// A qualitative colour for series or states (repeats after 8).
+Colour seriesColour(int index);
+
+}  // namespace canopy::analysis

@@ -1,0 +1,191 @@
+#include "analysis/plots.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace canopy::analysis {
+namespace {
+
+constexpr Colour kInk{30, 30, 30};
+constexpr Colour kGrid{200, 200, 200};
+constexpr Colour kShade{170, 170, 170, 0.45};
+
+std::string percent(double fraction) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.0f%%", 100.0 * fraction);
+  return text;
+}
+
+void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill) {
+  f.shapes.push_back(FilledPolygon{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}, fill});
+}
+
+// A band from the vertical edge (x0, [a0, b0]) to (x1, [a1, b1]) along a smoothstep, as convex
+// quads.
+void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, double b1, Colour fill) {
+  constexpr int kSegments = 24;
+  auto at = [&](int i) {
+    const double u = static_cast<double>(i) / kSegments;
+    const double s = u * u * (3.0 - 2.0 * u);  // smoothstep
+    return std::array<double, 3>{x0 + u * (x1 - x0), a0 + s * (a1 - a0), b0 + s * (b1 - b0)};
+  };
+  for (int i = 0; i < kSegments; ++i) {
+    const auto p = at(i), q = at(i + 1);
+    f.shapes.push_back(FilledPolygon{{Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])}, fill});
+  }
+}
+
+}  // namespace
+
+Colour stateColour(const ConfigStatistics& stats, int index) {
+  const std::string& name = stats.states[index];
+  if (name == "Miss 1") return {253, 141, 60};
+  if (name == "Miss >1") return {215, 48, 39};
+  if (name == "Other") return {150, 150, 150};
+  static const Colour kNamed[] = {{49, 130, 189}, {49, 163, 84}, {117, 107, 177}, {23, 190, 207}, {140, 86, 75}};
+  return kNamed[index % 5];
+}
+
+Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
+  Figure f;
+  f.width = 900;
+  f.height = 520;
+  const double left = 40, right = 150, top = 70, bottom = 60, node_w = 16, gap = 10;
+  const double plot_h = f.height - top - bottom;
+  const int n_states = static_cast<int>(stats.states.size());
+  f.shapes.push_back(Label{Vec2(f.width / 2.0, 32), title, 14, Anchor::middle, kInk});
+  if (stats.trials == 0) return f;
+
+  std::array<double, 5> x{};
+  for (int c = 0; c < 5; ++c) x[c] = left + c * (f.width - left - right - node_w) / 4.0;
+  // Node extents: [top, bottom] px per column and state; heights ∝ frequency.
+  std::array<std::vector<double>, 5> node_top, node_bottom;
+  for (int c = 0; c < 5; ++c) {
+    int present = 0;
+    for (int s = 0; s < n_states; ++s) present += stats.state_counts[c][s] > 0;
+    const double scale = (plot_h - gap * (present - 1)) / stats.trials;  // px per trial
+    double y = top;
+    node_top[c].assign(n_states, y);
+    node_bottom[c].assign(n_states, y);
+    for (int s = 0; s < n_states; ++s) {
+      if (stats.state_counts[c][s] == 0) continue;
+      node_top[c][s] = y;
+      node_bottom[c][s] = y + stats.state_counts[c][s] * scale;
+      y = node_bottom[c][s] + gap;
+    }
+  }
+  // Bands: leave a source node ordered by target state, enter a target node ordered by source.
+  for (int g = 0; g < 4; ++g) {
+    std::vector<double> out_y(node_top[g]), in_y(node_top[g + 1]);
+    const double scale_out = [&] {
+      for (int s = 0; s < n_states; ++s) {
+        if (stats.state_counts[g][s]) return (node_bottom[g][s] - node_top[g][s]) / stats.state_counts[g][s];
+      }
+      return 0.0;
+    }();
+    const double scale_in = [&] {
+      for (int s = 0; s < n_states; ++s) {
+        if (stats.state_counts[g + 1][s]) return (node_bottom[g + 1][s] - node_top[g + 1][s]) / stats.state_counts[g + 1][s];
+      }
+      return 0.0;
+    }();
+    for (int a = 0; a < n_states; ++a) {
+      for (int b = 0; b < n_states; ++b) {
+        const int count = stats.flows[g][a][b];
+        if (count == 0) continue;
+        // Incoming bands must be stacked by source order: precompute the offset at the target.
+        double in_offset = 0.0;
+        for (int a2 = 0; a2 < a; ++a2) in_offset += stats.flows[g][a2][b] * scale_in;
+        Colour fill = stateColour(stats, a);
+        fill.alpha = 0.45;
+        addBand(f, x[g] + node_w, out_y[a], out_y[a] + count * scale_out, x[g + 1],
+                node_top[g + 1][b] + in_offset, node_top[g + 1][b] + in_offset + count * scale_in, fill);
+        out_y[a] += count * scale_out;
+      }
+    }
+  }
+  static const char* kColumnNames[] = {"k = 0", "L/4", "L/2", "3L/4", "L"};
+  for (int c = 0; c < 5; ++c) {
+    for (int s = 0; s < n_states; ++s) {
+      if (stats.state_counts[c][s] == 0) continue;
+      addRect(f, x[c], node_top[c][s], x[c] + node_w, node_bottom[c][s], stateColour(stats, s));
+      const double fraction = static_cast<double>(stats.state_counts[c][s]) / stats.trials;
+      f.shapes.push_back(Label{Vec2(x[c] + node_w + 4, 0.5 * (node_top[c][s] + node_bottom[c][s]) + 4),
+                               percent(fraction), 9, Anchor::start, kInk});
+    }
+    char caption[48];
+    std::snprintf(caption, sizeof caption, "%s (%.1f s)", kColumnNames[c], stats.columns[c] * stats.dt);
+    f.shapes.push_back(Label{Vec2(x[c] + node_w / 2, f.height - bottom + 28), caption, 10, Anchor::middle, kInk});
+  }
+  double legend_y = top + 10;
+  for (int s = 0; s < n_states; ++s) {
+    addRect(f, f.width - right + 30, legend_y - 10, f.width - right + 42, legend_y + 2, stateColour(stats, s));
+    f.shapes.push_back(Label{Vec2(f.width - right + 50, legend_y), stats.states[s], 10, Anchor::start, kInk});
+    legend_y += 22;
+  }
+  char trials[32];
+  std::snprintf(trials, sizeof trials, "%d trials", stats.trials);
+  f.shapes.push_back(Label{Vec2(f.width - right + 30, legend_y + 10), trials, 9, Anchor::start, kInk});
+  return f;
+}
+
+Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs, const std::vector<std::string>& labels,
+                      const std::vector<std::string>& target_names, const std::string& title) {
+  Figure f;
+  const int panels = static_cast<int>(target_names.size());
+  const double left = 70, right = 30, top = 80, panel_h = 170, panel_gap = 45;
+  f.width = 900;
+  f.height = static_cast<int>(top + panels * (panel_h + panel_gap) + 20);
+  f.shapes.push_back(Label{Vec2(f.width / 2.0, 30), title, 14, Anchor::middle, kInk});
+  for (std::size_t c = 0; c < configs.size(); ++c) {  // legend along the top
+    const double lx = left + 200.0 * static_cast<double>(c);
+    f.shapes.push_back(Line{{Vec2(lx, 55), Vec2(lx + 30, 55)}, 3, seriesColour(static_cast<int>(c))});
+    f.shapes.push_back(Label{Vec2(lx + 36, 60), labels[c], 10, Anchor::start, kInk});
+  }
+  if (configs.empty() || configs.front()->coverage.empty()) return f;
+  const int steps = static_cast<int>(configs.front()->coverage.front().size());
+  const double dt = configs.front()->dt;
+  const double t_end = (steps - 1) * dt;
+  double y_max = 1.0;
+  for (const ConfigStatistics* c : configs) {
+    for (const auto& curve : c->coverage) y_max = std::max(y_max, *std::max_element(curve.begin(), curve.end()));
+  }
+  y_max = std::ceil(y_max * 2.0) / 2.0;  // to the next 0.5
+  const double plot_w = f.width - left - right;
+
+  for (int t = 0; t < panels; ++t) {
+    const double y0 = top + t * (panel_h + panel_gap);  // panel's top
+    auto px = [&](double time, double value) {
+      return Vec2(left + plot_w * time / t_end, y0 + panel_h * (1.0 - value / y_max));
+    };
+    for (const OcclusionStatistics& o : configs.front()->occlusions) {
+      if (o.target != t) continue;
+      const Vec2 a = px(o.hidden.first * dt, y_max), b = px(o.hidden.last * dt, 0.0);
+      addRect(f, a.x(), a.y(), b.x(), b.y(), kShade);
+    }
+    for (double v = 0.0; v <= y_max + 1e-9; v += 0.5) {
+      f.shapes.push_back(Line{{px(0, v), px(t_end, v)}, 1, kGrid});
+      char text[16];
+      std::snprintf(text, sizeof text, "%.1f", v);
+      f.shapes.push_back(Label{px(0, v) + Vec2(-8, 4), text, 9, Anchor::end, kInk});
+    }
+    for (double time = 0.0; time <= t_end + 1e-9; time += 2.0) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%.0f s", time);
+      f.shapes.push_back(Label{px(time, 0) + Vec2(0, 16), text, 9, Anchor::middle, kInk});
+    }
+    f.shapes.push_back(Line{{px(0, y_max), px(0, 0), px(t_end, 0)}, 1.5, kInk});
+    f.shapes.push_back(Label{Vec2(left, y0 - 8), "trajectory " + target_names[t] + ": mean number of footprints",
+                             10, Anchor::start, kInk});
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+      Line curve{{}, 2.5, seriesColour(static_cast<int>(c))};
+      for (int k = 0; k < steps; ++k) curve.points.push_back(px(k * dt, configs[c]->coverage[t][k]));
+      f.shapes.push_back(std::move(curve));
+    }
+  }
+  return f;
+}
+
+}  // namespace canopy::analysis

@@ -1,0 +1,28 @@
+#pragma once
+// The paper's figures from sweep statistics: Sankey diagrams of ownership over the Sankey columns
+// (one per configuration) and coverage curves per trajectory with its occluded intervals shaded
+// (one line per configuration, e.g. per map mode).
+#include <string>
+#include <vector>
+
+#include "analysis/figure.h"
+#include "analysis/sweep_statistics.h"
+
+namespace canopy::analysis {
+
+/// Nodes: the ownership states present at k = 0, L/4, L/2, 3L/4, L, heights ∝ frequency; bands:
+/// the trials moving between states of consecutive columns.
+Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title);
+
+/// One panel per target: the mean number of footprints holding it over time, one line per
+/// configuration (labels[c] names configs[c]), occluded intervals (of the first configuration)
+/// shaded grey.
+Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
+                      const std::vector<std::string>& labels,
+                      const std::vector<std::string>& target_names, const std::string& title);
+
+/// The colour of ownership state `index` of ConfigStatistics::states (named states first, then
+/// "Miss 1", "Miss >1", "Other" with fixed colours).
+Colour stateColour(const ConfigStatistics& stats, int index);
+
+}  // namespace canopy::analysis

@@ -1,0 +1,32 @@
+#pragma once
+// `canopy reproduce`'s report.md: every figure, our numbers beside the paper's, the qualitative
+// findings checked one by one, the configuration used, and where we differ.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/experiments.h"
+#include "analysis/sweep_analysis.h"
+
+namespace canopy::analysis {
+
+struct ExperimentResult {
+  Experiment experiment;
+  SweepAnalysis analysis;
+  std::string figures;  // directory of its figures, relative to the report
+};
+
+struct ReportContext {
+  int trials = 0;           // per configuration
+  std::uint64_t seed = 0;   // the sweeps' seed
+  int jobs = 1;
+  double wall_seconds = 0;  // of the whole reproduction (sweeps run now, analysis, figures)
+  int trials_run = 0;       // trials run now (the rest were resumed from disk)
+};
+
+/// Mean of `curve` over the inclusive steps of `hidden`.
+double meanOver(const std::vector<double>& curve, const Interval& hidden);
+
+std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& context);
+
+}  // namespace canopy::analysis

@@ -1,0 +1,55 @@
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "analysis/report.h"
+#include "app/commands.h"
+
+namespace canopy::app {
+
+int reproduceCommand(Args& args) {
+  std::string out;
+  int trials = 40;
+  int jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::uint64_t seed = 1;
+  while (!args.done()) {
+    const std::string arg = args.take();
+    if (arg == "--out") {
+      out = args.value(arg);
+    } else if (arg == "--trials") {
+      trials = args.intValue(arg, 1, 100000);
+    } else if (arg == "--jobs") {
+      jobs = args.intValue(arg, 1, 1024);
+    } else if (arg == "--seed") {
+      seed = args.unsignedValue(arg);
+    } else {
+      usageError(arg, "unknown option for `canopy reproduce`");
+    }
+  }
+  if (out.empty()) usageError("reproduce", "expected --out DIR");
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<analysis::ExperimentResult> results;
+  int ran = 0;
+  for (analysis::Experiment& experiment : analysis::paperExperiments(trials, seed)) {
+    const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
+    ran += runSweepWithProgress(experiment.sweep, dir, jobs);
+    analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
+    analysis::writeTables(analysed, dir / "analysis");
+    writeFigures(analysed, dir / "analysis");
+    results.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
+  }
+  analysis::ReportContext context;
+  context.trials = trials;
+  context.seed = seed;
+  context.jobs = jobs;
+  context.trials_run = ran;
+  context.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::filesystem::path report = std::filesystem::path(out) / "report.md";
+  std::ofstream(report) << analysis::reportMarkdown(results, context);
+  std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds, report.string().c_str());
+  return kExitOk;
+}
+
+}  // namespace canopy::app
