@@ -1,0 +1,136 @@
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+namespace {
+namespace fs = std::filesystem;
+
+int run(const std::string& arguments) {
+  const int status = std::system((std::string(CANOPY_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::map<std::string, std::string> trialFiles(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
+    if (entry.is_regular_file()) files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
+  }
+  return files;
+}
+
+int countTrials(const fs::path& dir) {
+  int n = 0;
+  std::error_code error;
+  for (auto it = fs::recursive_directory_iterator(dir / "trials", error); !error && it != fs::end(it); it.increment(error)) {
+    n += it->path().extension() == ".json";
+  }
+  return n;
+}
+
+fs::path sweepFile() {
+  const fs::path file = fs::temp_directory_path() / "canopy_cli_sweep.json";
+  std::ofstream(file) << R"({"name": "cli", "scenario": "trajectory_handover", "trials": 5, "seed": 3,
+    "axes": [{"path": "planner.algorithm", "values": ["sma", "dec_pomdp"]},
+             {"path": "planner.horizon", "values": [1, 5]}]})";
+  return file;
+}
+
+fs::path fresh(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("canopy_cli_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(SweepCommand, KilledMidwayAndResumedGivesTheSameSummaryAsUninterrupted) {
+  const fs::path whole = fresh("whole"), killed = fresh("killed");
+  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + whole.string() + " --jobs 2"), 0);
+
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::freopen("/dev/null", "w", stderr);  // no progress bar in the test log
+    std::freopen("/dev/null", "w", stdout);
+    const std::string out = killed.string(), file = sweepFile().string();
+    execl(CANOPY_BINARY, CANOPY_BINARY, "sweep", file.c_str(), "--out", out.c_str(), "--jobs", "2",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill it without warning once some, but not all, trials are written.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (countTrials(killed) < 4 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  const int finished_before_kill = countTrials(killed);
+  EXPECT_GE(finished_before_kill, 4);
+  EXPECT_LT(finished_before_kill, 20) << "the sweep finished before it could be killed";
+
+  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + killed.string() + " --jobs 2"), 0);
+  EXPECT_EQ(slurp(killed / "summary.json"), slurp(whole / "summary.json"));
+  EXPECT_EQ(trialFiles(killed), trialFiles(whole));
+  for (const auto& entry : fs::recursive_directory_iterator(killed)) {
+    EXPECT_NE(entry.path().extension(), ".tmp") << "leftover " << entry.path();
+  }
+}
+
+TEST(SweepCommand, OneAndTwoJobsGiveIdenticalResults) {
+  const fs::path one = fresh("jobs1"), two = fresh("jobs2");
+  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + one.string() + " --jobs 1"), 0);
+  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + two.string() + " --jobs 2"), 0);
+  EXPECT_EQ(trialFiles(one), trialFiles(two));
+  EXPECT_EQ(slurp(one / "summary.json"), slurp(two / "summary.json"));
+  ASSERT_EQ(run("analyze " + one.string()), 0);
+  ASSERT_EQ(run("analyze " + two.string()), 0);
+  EXPECT_EQ(slurp(one / "analysis" / "ownership_states.csv"), slurp(two / "analysis" / "ownership_states.csv"));
+}
+
+TEST(AnalyzeCommand, ADirectoryThatIsNotASweepExitsWith2) {
+  const fs::path dir = fresh("not_a_sweep");
+  fs::create_directories(dir);
+  EXPECT_EQ(run("analyze " + dir.string()), 2);
+  EXPECT_EQ(run("sweep /nonexistent.json --out " + dir.string()), 2);
+}
+
+TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
+  const fs::path dir = fresh("reproduce");
+  ASSERT_EQ(run("reproduce --out " + dir.string() + " --trials 2 --jobs 2"), 0);
+  const std::string report = slurp(dir / "report.md");
+  EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
+  EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
+  EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
+  for (const char* scenario : {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
+    EXPECT_TRUE(fs::exists(dir / scenario / "summary.json")) << scenario;
+    EXPECT_TRUE(fs::exists(dir / scenario / "analysis" / "ownership_states.csv")) << scenario;
+  }
+  // Every figure the report links exists.
+  std::size_t at = 0;
+  int figures = 0;
+  while ((at = report.find("](", at)) != std::string::npos) {
+    const std::size_t end = report.find(')', at);
+    const std::string link = report.substr(at + 2, end - at - 2);
+    EXPECT_TRUE(fs::exists(dir / link)) << link;
+    ++figures;
+    at = end;
+  }
+  EXPECT_EQ(figures, 10);  // 8 Sankey diagrams and 2 coverage figures
+}
+
+}  // namespace
