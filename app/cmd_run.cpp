@@ -1,16 +1,50 @@
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "app/commands.h"
+#include "render/frame_writer.h"
+#include "render/video.h"
 #include "scenarios/loader.h"
 #include "scenarios/run.h"
 
 namespace canopy::app {
+namespace {
+
+render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
+  render::SceneModel model;
+  model.title = spec.name;
+  model.aoi = spec.aoi;
+  model.trees = spec.trees;
+  for (const scenarios::UavSpec& uav : spec.uavs) {
+    model.sensors.push_back(uav.sensor);
+    model.uav_names.push_back(uav.name);
+  }
+  for (const scenarios::TargetSpec& target : spec.targets)
+    model.target_names.push_back(target.name);
+  return model;
+}
+
+}  // namespace
+
+render::ImageSize imageSizeValue(Args& args, const std::string& name) {
+  const std::string text = args.value(name);
+  const std::optional<render::ImageSize> size = render::parseImageSize(text);
+  if (!size) {
+    usageError(name, "expected WxH with both sides in [" + std::to_string(render::kMinImageSide) +
+                         ", " + std::to_string(render::kMaxImageSide) +
+                         "] px (e.g. 800x600), got '" + text + "'");
+  }
+  return *size;
+}
 
 int runCommand(Args& args) {
   std::string scenario;
   std::string out_dir;
   scenarios::LoadOptions load;
+  bool frames = false, video = false;
+  std::optional<int> every;
+  std::optional<render::ImageSize> size;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
@@ -19,6 +53,14 @@ int runCommand(Args& args) {
       load.seed = args.unsignedValue(arg);
     } else if (arg == "--set") {
       load.overrides.push_back(args.value(arg));
+    } else if (arg == "--frames") {
+      frames = true;
+    } else if (arg == "--frame-every") {
+      every = args.intValue(arg, 1, 1000000);
+    } else if (arg == "--size") {
+      size = imageSizeValue(args, arg);
+    } else if (arg == "--video") {
+      video = frames = true;  // a video is made of frames
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy run`");
     } else if (scenario.empty()) {
@@ -27,6 +69,8 @@ int runCommand(Args& args) {
       usageError(arg, "expected one scenario, got a second one");
     }
   }
+  if (!frames && every) usageError("--frame-every", "only applies with --frames or --video");
+  if (!frames && size) usageError("--size", "only applies with --frames or --video");
   if (scenario.empty()) scenario = kDefaultScenario;
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
   if (out_dir.empty()) out_dir = "out/" + spec.name;
@@ -34,11 +78,33 @@ int runCommand(Args& args) {
   scenarios::RunOptions options;
   options.out_dir = out_dir;
   options.command_line = args.joined();
+  // Without --frames nothing of the renderer is made, so no GL context is ever created.
+  std::optional<render::FrameWriter> writer;
+  if (frames) {
+    render::FrameOptions frame_options;
+    frame_options.dir = options.out_dir / "frames";
+    frame_options.every = every.value_or(1);
+    frame_options.size = size.value_or(render::ImageSize{});
+    writer.emplace(sceneModel(spec), frame_options);
+    options.on_step = [&writer](const scenarios::Simulation& sim) {
+      writer->onStep(sim.truth(), sim.beliefs());
+    };
+  }
   const scenarios::RunResult result = scenarios::runScenario(spec, options);
   std::printf("%s: %d steps in %.3f s → %s/{manifest.json, record.jsonl, summary.json}\n",
               spec.name.c_str(), result.steps, result.wall_seconds, out_dir.c_str());
   std::printf("%s\n", result.summary_json.c_str());
-  return kExitOk;
+  if (!writer) return kExitOk;
+
+  std::printf("frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
+              writer->framesWritten(), writer->size().width, writer->size().height,
+              every.value_or(1), writer->dir().c_str());
+  if (!video) return kExitOk;
+  const double fps = 1.0 / (spec.dt * every.value_or(1));  // real time
+  const render::VideoResult made =
+      render::assembleVideo(writer->dir(), options.out_dir / "frames.mp4", fps);
+  std::printf("%s\n", made.message.c_str());
+  return made.status == render::VideoStatus::failed ? kExitFailure : kExitOk;
 }
 
 }  // namespace canopy::app

@@ -12,6 +12,8 @@ constexpr const char* kUsage = R"(canopy — multi-UAV target tracking under unk
 
 usage:
   canopy run [SCENARIO] [--out DIR] [--seed N] [--set key=value]...
+             [--frames] [--frame-every K] [--size WxH] [--video]
+  canopy coverage RUN_DIR [--size WxH]
   canopy validate SCENARIO [--set key=value]...
   canopy list
   canopy sweep SWEEP.json --out DIR [--jobs N]
@@ -22,6 +24,11 @@ usage:
 SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run without one
 runs the built-in "demo". --set overrides any field by its dotted path, e.g.
 --set planner.horizon=1 or --set uavs.0.v_max=3. Bad input exits with code 2.
+
+--frames writes DIR/frames/frame_NNNNNN.png (NNNNNN = step) every K steps (default 1) at WxH px
+(default 800 px along the longer side); --video also assembles DIR/frames.mp4 when ffmpeg is
+on PATH. `canopy coverage` prints, per step of a finished run, the rendered coverage of the AOI
+as CSV: step, t, covered_px, multi_px, aoi_px, covered_fraction, then 0/1 per target.
 )";
 
 }  // namespace
@@ -39,6 +46,7 @@ int main(int argc, char** argv) {
     if (command == "validate") return validateCommand(args);
     if (command == "list") return listCommand(args);
     if (command == "forest") return forestCommand(args);
+    if (command == "coverage") return coverageCommand(args);
     if (command == "sweep") return sweepCommand(args);
     if (command == "analyze") return analyzeCommand(args);
     if (command == "reproduce") return reproduceCommand(args);

@@ -1,0 +1,59 @@
+#pragma once
+// Rendered coverage: a mask pass counts the AOI's pixels under at least one footprint and under
+// two or more, and tells whether each target's pixel is covered. A pixel belongs to a shape when
+// its centre does (GL's rasterisation rule), so the counts approach the areas as pixels shrink.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "render/canvas.h"
+#include "render/viewport.h"
+#include "sensing/footprint.h"
+#include "sensing/sensor.h"
+#include "world/snapshot.h"
+
+namespace canopy::render {
+
+struct CoverageCounts {
+  long covered_px = 0;                       // AOI pixels under ≥ 1 footprint
+  long multi_px = 0;                         // AOI pixels under ≥ 2 footprints
+  long aoi_px = 0;                           // pixels whose centre lies in the AOI
+  std::vector<std::uint8_t> target_covered;  // per target: 1 when its pixel is an AOI pixel
+                                             // under ≥ 1 footprint, else 0
+
+  double coveredFraction() const { return aoi_px > 0 ? double(covered_px) / double(aoi_px) : 0.0; }
+};
+
+class CoverageCounter {
+ public:
+  /// The mask is `size` px with the AOI fitted, aspect preserved, without margin. Creates no GL
+  /// context until the first count().
+  CoverageCounter(const Aabb& aoi, ImageSize size);
+
+  const Viewport& viewport() const { return viewport_; }
+  /// Area of one pixel (m²).
+  double pixelArea() const { return viewport_.pixel_size * viewport_.pixel_size; }
+
+  CoverageCounts count(std::span<const sensing::Footprint> footprints,
+                       std::span<const Vec2> targets);
+  /// The footprints of every UAV of the snapshot (sensors[i] for UAV i) and its targets.
+  CoverageCounts count(const world::WorldSnapshot& truth,
+                       std::span<const sensing::SensorDef> sensors);
+
+ private:
+  bool inAoi(int x, int y) const { return x >= x0_ && x <= x1_ && y >= y0_ && y <= y1_; }
+
+  Viewport viewport_;
+  int x0_ = 0, x1_ = -1, y0_ = 0, y1_ = -1;  // the AOI's pixels: columns x0..x1, rows y0..y1
+  Canvas canvas_;
+  std::vector<sensing::Footprint> footprints_;
+  std::vector<Vec2> targets_;
+};
+
+/// "step,t,covered_px,multi_px,aoi_px,covered_fraction,covered_<name>..." (no newline).
+std::string coverageCsvHeader(std::span<const std::string> target_names);
+/// One CSV row matching coverageCsvHeader (no newline).
+std::string coverageCsvRow(int step, double time, const CoverageCounts& counts);
+
+}  // namespace canopy::render

@@ -1,0 +1,57 @@
+#include "render/frame_writer.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "render/image.h"
+
+namespace canopy::render {
+namespace {
+
+ImageSize chosenSize(const SceneModel& model, const FrameOptions& options) {
+  return options.size.width > 0 && options.size.height > 0
+             ? options.size
+             : defaultFrameSize(model.aoi, options.scene);
+}
+
+}  // namespace
+
+ImageSize defaultFrameSize(const Aabb& aoi, const SceneOptions& scene) {
+  return fitSize(withMargin(aoi, scene.margin), kDefaultFrameLongSide);
+}
+
+FrameWriter::FrameWriter(SceneModel model, FrameOptions options)
+    : model_(std::move(model)),
+      options_(std::move(options)),
+      canvas_(chosenSize(model_, options_)) {
+  if (options_.every < 1) throw std::invalid_argument("FrameWriter: every must be >= 1");
+  std::error_code error;
+  std::filesystem::create_directories(options_.dir, error);
+  if (error)
+    throw std::runtime_error("cannot create " + options_.dir.string() + ": " + error.message());
+  for (const auto& entry : std::filesystem::directory_iterator(options_.dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("frame_") && entry.path().extension() == ".png") {
+      std::filesystem::remove(entry.path(), error);
+    }
+  }
+}
+
+std::filesystem::path FrameWriter::framePath(const std::filesystem::path& dir, int step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%06d.png", step);
+  return dir / name;
+}
+
+void FrameWriter::onStep(const world::WorldSnapshot& truth,
+                         std::span<const agents::AgentBelief> beliefs) {
+  trails_.add(truth);
+  if (truth.step % options_.every != 0) return;
+  const Scene scene = buildScene(model_, truth, beliefs, trails_, canvas_.size(), options_.scene);
+  canvas_.draw(scene, image_);
+  writePng(framePath(options_.dir, truth.step), image_);
+  ++frames_written_;
+}
+
+}  // namespace canopy::render

@@ -1,0 +1,53 @@
+#pragma once
+// Frames of a run: DIR/frame_NNNNNN.png every K steps (NNNNNN = the step index k).
+#include <filesystem>
+#include <span>
+
+#include "agents/belief.h"
+#include "render/canvas.h"
+#include "render/scene_builder.h"
+#include "render/trails.h"
+#include "world/snapshot.h"
+
+namespace canopy::render {
+
+/// Long side (px) of a frame when no size is given.
+inline constexpr int kDefaultFrameLongSide = 800;
+
+struct FrameOptions {
+  std::filesystem::path dir;  // where the frames go (created)
+  int every = 1;              // K ≥ 1: a frame at every step k with k mod K = 0
+  ImageSize size;             // px; {0, 0}: defaultFrameSize(aoi)
+  SceneOptions scene;
+};
+
+/// kDefaultFrameLongSide px along the longer side of the AOI (with the frame's margin).
+ImageSize defaultFrameSize(const Aabb& aoi, const SceneOptions& scene = {});
+
+class FrameWriter {
+ public:
+  /// Creates `options.dir` and deletes stale frame_*.png files in it, so that a video never mixes
+  /// two runs; starts no GL (the canvas starts it with the first frame). Throws
+  /// std::runtime_error when the directory cannot be made, std::invalid_argument for a bad size.
+  FrameWriter(SceneModel model, FrameOptions options);
+
+  /// Call after every step: extends the trails, and on frame steps renders and writes a PNG.
+  void onStep(const world::WorldSnapshot& truth, std::span<const agents::AgentBelief> beliefs);
+
+  int framesWritten() const { return frames_written_; }
+  ImageSize size() const { return canvas_.size(); }
+  const std::filesystem::path& dir() const { return options_.dir; }
+
+  /// dir/frame_NNNNNN.png for step k (six digits at least).
+  static std::filesystem::path framePath(const std::filesystem::path& dir, int step);
+
+ private:
+  SceneModel model_;
+  FrameOptions options_;
+  TargetTrails trails_;
+  Canvas canvas_;
+  Image image_;
+  int frames_written_ = 0;
+};
+
+}  // namespace canopy::render

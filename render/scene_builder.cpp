@@ -1,0 +1,322 @@
+#include "render/scene_builder.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "render/internal/text.h"
+
+namespace canopy::render {
+namespace {
+
+using internal::kTextLineHeight;
+using internal::textWidth;
+
+constexpr Rgba kLegendInk{70, 70, 70, 255};  // neutral colour of the legend's belief symbols
+
+std::string nameOr(const std::vector<std::string>& names, std::size_t i, const char* prefix) {
+  return i < names.size() && !names[i].empty() ? names[i] : prefix + std::to_string(i + 1);
+}
+
+std::vector<Vec2> rectangle(const Vec2& lo, const Vec2& hi) {
+  return {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+}
+
+// Pixel sizes scale with the text: u = 1 at the default 800 px wide frame.
+struct Sizes {
+  double text;  // font units → px
+  double u;     // px per nominal px
+};
+
+// Disc crowns, then polygon crowns, then the polygons' outlines: grouped so that the canvas
+// switches GL state a few times rather than per tree (crowns share one colour, so the order
+// between them does not show).
+void addTrees(const SceneModel& model, const Sizes& z, std::vector<Primitive>& out) {
+  for (const world::TreeDef& tree : model.trees) {
+    if (tree.shape == world::TreeShape::disc) {
+      add(out, Disc{tree.centre, tree.radius, palette::kTreeFill, palette::kTreeEdge, z.u});
+    }
+  }
+  for (const world::TreeDef& tree : model.trees) {
+    if (tree.shape == world::TreeShape::polygon)
+      add(out, Polygon{tree.vertices, palette::kTreeFill});
+  }
+  for (const world::TreeDef& tree : model.trees) {
+    if (tree.shape == world::TreeShape::polygon) {
+      add(out, Polyline{tree.vertices, z.u, palette::kTreeEdge, true});
+    }
+  }
+}
+
+void addFootprints(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
+                   std::vector<Primitive>& out) {
+  const std::size_t n = std::min(model.sensors.size(), truth.uavs.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Rgba colour = uavColour(static_cast<int>(i));
+    const sensing::Footprint f = sensing::footprintOf(truth, static_cast<int>(i), model.sensors[i]);
+    if (f.shape == sensing::FootprintShape::disc) {
+      add(out, Disc{f.centre, f.radius, withAlpha(colour, 60), colour, 1.5 * z.u});
+    } else {
+      std::vector<Vec2> corners = footprintCorners(f);
+      add(out, Polygon{corners, withAlpha(colour, 60)});
+      add(out, Polyline{std::move(corners), 1.5 * z.u, colour, true});
+    }
+  }
+}
+
+void addBeliefs(const world::WorldSnapshot& truth, std::span<const agents::AgentBelief> beliefs,
+                const Sizes& z, std::vector<Primitive>& out) {
+  // Occlusion maps first, then plans, so that estimates stay on top.
+  for (std::size_t i = 0; i < beliefs.size(); ++i) {
+    const Rgba colour = uavColour(static_cast<int>(i));
+    for (const agents::TreeEstimate& tree : beliefs[i].trees) {
+      const Vec2 centre = tree.belief.x.head<2>();
+      add(out, Ring{centre, std::max(tree.belief.x(2), 0.1), 1.2 * z.u, colour});
+    }
+  }
+  for (std::size_t i = 0; i < beliefs.size(); ++i) {
+    const std::vector<Vec2>& plan = beliefs[i].planned_path;
+    if (plan.empty()) continue;
+    const Rgba colour = withAlpha(uavColour(static_cast<int>(i)), 200);
+    std::vector<Vec2> path;
+    if (i < truth.uavs.size()) path.push_back(truth.uavs[i].position);
+    path.insert(path.end(), plan.begin(), plan.end());
+    add(out, Polyline{std::move(path), 1.5 * z.u, colour, false});
+    for (const Vec2& p : plan)
+      add(out, Marker{p, MarkerShape::dot, 5.0 * z.u, 0.0, colour, colour, 0.0});
+  }
+}
+
+void addEstimates(std::span<const agents::AgentBelief> beliefs, const Sizes& z,
+                  std::vector<Primitive>& out) {
+  for (std::size_t i = 0; i < beliefs.size(); ++i) {
+    for (const agents::TrackEstimate& track : beliefs[i].tracks) {
+      const Rgba colour = withAlpha(uavColour(static_cast<int>(i)), track.confirmed ? 255 : 110);
+      const Vec2 mean = track.belief.x.head<2>();
+      std::vector<Vec2> ellipse = covarianceEllipse(mean, track.belief.P.topLeftCorner<2, 2>());
+      if (!ellipse.empty()) add(out, Polyline{std::move(ellipse), 1.5 * z.u, colour, true});
+      add(out, Marker{mean, MarkerShape::cross, 10.0 * z.u, 0.0, colour,
+                      withAlpha(palette::kWhite, colour.a), z.u});
+    }
+  }
+}
+
+void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
+               const TargetTrails& trails, const Sizes& z, bool labels,
+               std::vector<Primitive>& out) {
+  for (int t = 0; t < static_cast<int>(truth.targets.size()); ++t) {
+    const std::vector<Vec2>& trail = trails.trail(t);
+    if (trail.size() > 1) add(out, Polyline{trail, 2.0 * z.u, palette::kTrail, false});
+  }
+  for (const world::TargetState& target : truth.targets) {
+    add(out, Marker{target.position, MarkerShape::dot, 10.0 * z.u, 0.0, palette::kTarget,
+                    palette::kWhite, 1.5 * z.u});
+  }
+  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
+    const world::UavState& uav = truth.uavs[i];
+    add(out, Marker{uav.position, MarkerShape::arrow, 18.0 * z.u, uav.yaw,
+                    uavColour(static_cast<int>(i)), palette::kTarget, 1.2 * z.u});
+  }
+  if (!labels) return;
+  // Names last, on top of every symbol. Targets are labelled above and to the right, UAVs
+  // below and to the right, so that a UAV flying over its target hides neither name.
+  const double line = kTextLineHeight * z.text;
+  for (std::size_t t = 0; t < truth.targets.size(); ++t) {
+    add(out, Text{truth.targets[t].position, Vec2(6.0 * z.u, -line - 4.0 * z.u),
+                  nameOr(model.target_names, t, "T"), z.text, palette::kText});
+  }
+  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
+    add(out, Text{truth.uavs[i].position, Vec2(9.0 * z.u, 5.0 * z.u),
+                  nameOr(model.uav_names, i, "uav"), z.text, palette::kText});
+  }
+}
+
+// One entry of the legend band: a symbol drawn by `draw` at a centre, then a label.
+struct LegendEntry {
+  std::string label;
+  std::vector<Primitive> symbol;  // around (0, 0), px
+};
+
+std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs,
+                                       std::span<const agents::AgentBelief> beliefs, double u) {
+  std::vector<LegendEntry> entries;
+  const auto entry = [&entries](std::string label) -> std::vector<Primitive>& {
+    entries.push_back({std::move(label), {}});
+    return entries.back().symbol;
+  };
+  const Vec2 o = Vec2::Zero();
+  for (std::size_t i = 0; i < uavs; ++i) {
+    const Rgba c = uavColour(static_cast<int>(i));
+    std::vector<Primitive>& symbol = entry(nameOr(model.uav_names, i, "uav"));
+    add(symbol, Marker{o, MarkerShape::square, 14.0 * u, 0.0, withAlpha(c, 60), c, 1.5 * u});
+    add(symbol,
+        Marker{o, MarkerShape::arrow, 11.0 * u, 0.5 * std::numbers::pi, c, palette::kTarget, u});
+  }
+  std::vector<Primitive>& person = entry("person + trail");
+  add(person, Polyline{{Vec2(-8.0 * u, 4.0 * u), o}, 2.0 * u, palette::kTrail, false});
+  add(person,
+      Marker{o, MarkerShape::dot, 10.0 * u, 0.0, palette::kTarget, palette::kWhite, 1.5 * u});
+  std::vector<Primitive>& tree = entry("tree");
+  add(tree, Disc{o, 6.0 * u, palette::kTreeFill, palette::kTreeEdge, u});
+  const auto any = [&beliefs](auto has) {
+    return std::any_of(beliefs.begin(), beliefs.end(), has);
+  };
+  if (any([](const agents::AgentBelief& b) { return !b.tracks.empty(); })) {
+    std::vector<Primitive>& estimate = entry("estimate, 2-sigma");
+    add(estimate, Ring{o, 7.0 * u, 1.5 * u, kLegendInk});
+    add(estimate, Marker{o, MarkerShape::cross, 10.0 * u, 0.0, kLegendInk, palette::kWhite, u});
+  }
+  if (any([](const agents::AgentBelief& b) { return !b.trees.empty(); })) {
+    add(entry("occlusion map"), Ring{o, 6.0 * u, 1.2 * u, kLegendInk});
+  }
+  if (any([](const agents::AgentBelief& b) { return !b.planned_path.empty(); })) {
+    std::vector<Primitive>& plan = entry("plan");
+    add(plan, Polyline{{Vec2(-8.0 * u, 0.0), Vec2(8.0 * u, 0.0)}, 1.5 * u, kLegendInk, false});
+    add(plan,
+        Marker{Vec2(8.0 * u, 0.0), MarkerShape::dot, 5.0 * u, 0.0, kLegendInk, kLegendInk, 0.0});
+  }
+  return entries;
+}
+
+// Moves a legend symbol from (0, 0) to `at` (px).
+Primitive placed(Primitive p, const Vec2& at) {
+  std::visit(
+      [&](auto& q) {
+        using T = std::decay_t<decltype(q)>;
+        if constexpr (std::is_same_v<T, Polygon>) {
+          for (Vec2& v : q.vertices) v += at;
+        } else if constexpr (std::is_same_v<T, Polyline>) {
+          for (Vec2& v : q.points) v += at;
+        } else if constexpr (std::is_same_v<T, Disc> || std::is_same_v<T, Ring>) {
+          q.centre += at;
+
+        } else {
+          q.at += at;
+        }
+      },
+      p);
+  return p;
+}
+
+// Lays the entries out left to right in rows along the bottom; returns the band's height (px).
+double addLegend(const std::vector<LegendEntry>& entries, ImageSize size, const Sizes& z,
+                 std::vector<Primitive>& out) {
+  const double pad = 4.0 * z.u, row = kTextLineHeight * z.text + 10.0 * z.u, symbol = 20.0 * z.u;
+  const double gap = 14.0 * z.u;
+  std::vector<Vec2> origins;  // top-left of each entry, relative to the band's top-left
+  double x = pad, y = pad;
+  for (const LegendEntry& e : entries) {
+    const double w = symbol + 4.0 * z.u + textWidth(e.label) * z.text;
+    if (x > pad && x + w > size.width - pad) {
+      x = pad;
+      y += row;
+    }
+    origins.push_back(Vec2(x, y));
+    x += w + gap;
+  }
+  const double band = y + row + pad;
+  const double top = size.height - band;
+  add(out, Polygon{rectangle(Vec2(0.0, top), Vec2(size.width, size.height)), palette::kPanel});
+  add(out, Polyline{{Vec2(0.0, top), Vec2(size.width, top)}, z.u, palette::kPanelEdge, false});
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const Vec2 at = origins[k] + Vec2(0.0, top);
+    for (const Primitive& p : entries[k].symbol)
+      out.push_back(placed(p, at + Vec2(0.5 * symbol, 0.5 * row)));
+    add(out, Text{at + Vec2(symbol + 4.0 * z.u, 0.5 * (row - kTextLineHeight * z.text)),
+                  Vec2::Zero(), entries[k].label, z.text, palette::kText});
+  }
+  return band;
+}
+
+void addTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
+                  std::vector<Primitive>& out) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%s%st = %.2f s   k = %d", model.title.c_str(),
+                model.title.empty() ? "" : "   ", truth.time, truth.step);
+  const double pad = 4.0 * z.u;
+  const Vec2 lo(pad, pad),
+      hi = lo + Vec2(textWidth(text) * z.text + 2.0 * pad, kTextLineHeight * z.text + 2.0 * pad);
+  add(out, Polygon{rectangle(lo, hi), palette::kPanel});
+  add(out, Polyline{rectangle(lo, hi), z.u, palette::kPanelEdge, true});
+  add(out, Text{lo + Vec2(pad, pad), Vec2::Zero(), text, z.text, palette::kText});
+}
+
+}  // namespace
+
+std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points) {
+  if (!P.allFinite() || !centre.allFinite() || points < 3) return {};
+  const Eigen::SelfAdjointEigenSolver<Mat2> eigen(0.5 * (P + P.transpose()));
+  Mat2 V = eigen.eigenvectors();
+  if (V.determinant() < 0.0)
+    V.col(1) = -V.col(1);  // a rotation, so the points run counter-clockwise
+  // P = V Λ Vᵀ: the points c + V (2√λ₁ cos θ, 2√λ₂ sin θ) satisfy (p − c)ᵀ P⁻¹ (p − c) = 4.
+  const Vec2 axes = 2.0 * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  std::vector<Vec2> out;
+  out.reserve(static_cast<std::size_t>(points));
+  for (int k = 0; k < points; ++k) {
+    const double theta = 2.0 * std::numbers::pi * k / points;
+    out.push_back(centre + V * Vec2(axes.x() * std::cos(theta), axes.y() * std::sin(theta)));
+  }
+  return out;
+}
+
+std::vector<Vec2> footprintCorners(const sensing::Footprint& f) {
+  if (f.shape == sensing::FootprintShape::disc) return {};
+  const Vec2 along = f.half.x() * Vec2(f.cos_yaw, f.sin_yaw);
+  const Vec2 across = f.half.y() * Vec2(-f.sin_yaw, f.cos_yaw);
+  return {f.centre + along + across, f.centre - along + across, f.centre - along - across,
+          f.centre + along - across};
+}
+
+Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
+                 std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,
+                 ImageSize size, const SceneOptions& options) {
+  Sizes z;
+  z.text =
+      options.text_scale > 0.0 ? options.text_scale : std::max(1.0, std::ceil(size.width / 500.0));
+  z.u = z.text / 2.0;
+
+  Scene scene;
+  double band = 0.0;
+  if (options.legend) {
+    std::vector<Primitive> legend;
+    band = addLegend(legendEntries(model, truth.uavs.size(), beliefs, z.u), size, z, legend);
+    if (band < 0.5 * size.height) {
+      scene.overlay = std::move(legend);
+    } else {
+      band = 0.0;  // too small an image for a legend
+    }
+  }
+  // The map fills the image above the band; the band hides whatever the projection puts below.
+  const ImageSize map{size.width, std::max(1, size.height - static_cast<int>(std::ceil(band)))};
+  scene.viewport = Viewport::fit(withMargin(model.aoi, options.margin), map);
+  scene.viewport.size = size;
+
+  // The image is cleared to the ground's colour and only the margins outside the AOI are
+  // filled: large fills are the costliest thing llvmpipe draws here.
+  scene.background = palette::kGround;
+  std::vector<Primitive>& w = scene.world;
+  const Viewport& v = scene.viewport;
+  const Vec2 lo = v.toWorld(Vec2(0.0, size.height)), hi = v.toWorld(Vec2(size.width, 0.0));
+  const Aabb& a = model.aoi;
+  const Aabb margins[4] = {{lo, Vec2(a.lo.x(), hi.y())},
+                           {Vec2(a.hi.x(), lo.y()), hi},
+                           {Vec2(a.lo.x(), lo.y()), Vec2(a.hi.x(), a.lo.y())},
+                           {Vec2(a.lo.x(), a.hi.y()), Vec2(a.hi.x(), hi.y())}};
+  for (const Aabb& m : margins) {
+    if (m.width() > 0.0 && m.height() > 0.0)
+      add(w, Polygon{rectangle(m.lo, m.hi), palette::kOutside});
+  }
+  add(w, Polyline{rectangle(a.lo, a.hi), z.u, palette::kAoiEdge, true});
+  addTrees(model, z, w);
+  addFootprints(model, truth, z, w);
+  addBeliefs(truth, beliefs, z, w);
+  addEstimates(beliefs, z, w);
+  addBodies(model, truth, trails, z, options.labels, w);
+  addTimeStamp(model, truth, z, scene.overlay);
+  return scene;
+}
+
+}  // namespace canopy::render

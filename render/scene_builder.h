@@ -1,0 +1,50 @@
+#pragma once
+// buildScene: truth, sensors and the agents' beliefs → a Scene (pure; no GL). What a frame shows,
+// in drawing order: the AOI, tree crowns, every UAV's footprint (its own colour, translucent),
+// the occlusion-map estimates (outlined discs), planned paths, targets' trails, the agents' fused
+// estimates with 2-σ ellipses, the true targets, the UAV bodies with their headings; then a time
+// stamp and a legend band along the bottom.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "agents/belief.h"
+#include "render/scene.h"
+#include "render/trails.h"
+#include "sensing/sensor.h"
+#include "world/snapshot.h"
+#include "world/tree.h"
+
+namespace canopy::render {
+
+/// What does not change during a run (the scenario, as the renderer needs it).
+struct SceneModel {
+  std::string title;  // e.g. the scenario's name
+  Aabb aoi;           // m
+  std::vector<world::TreeDef> trees;
+  std::vector<sensing::SensorDef> sensors;  // one per UAV, in the snapshot's order
+  std::vector<std::string> uav_names;       // optional; "uav1", "uav2", … when missing
+  std::vector<std::string> target_names;    // optional; "T1", "T2", … when missing
+};
+
+struct SceneOptions {
+  double margin = 0.04;     // fraction of the AOI's larger side shown around it
+  double text_scale = 0.0;  // font units → px; 0: chosen from the image width
+  bool legend = true;       // the legend band along the bottom
+  bool labels = true;       // names beside UAVs and targets
+};
+
+/// beliefs: one per UAV (may be empty before agents run); trails: the targets' recent
+/// positions (may be empty). The map is fitted, aspect preserved, above the legend band.
+Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
+                 std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,
+                 ImageSize size, const SceneOptions& options = {});
+
+/// The points of the 2-σ ellipse of a position covariance P (m²) around `centre`: the level set
+/// (p − c)ᵀ P⁻¹ (p − c) = 4, as `points` vertices counter-clockwise. Empty when P is not finite.
+std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points = 36);
+
+/// The corners of a rectangular footprint, or an empty list for a disc.
+std::vector<Vec2> footprintCorners(const sensing::Footprint& footprint);
+
+}  // namespace canopy::render

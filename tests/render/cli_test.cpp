@@ -1,0 +1,147 @@
+// The command line as a user meets it: frames, video, coverage, errors, and no GL context at all
+// in a run without --frames (proved by preloading a stand-in that exits when one is requested).
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/render/golden_csv.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using canopy::render::testing::compareCoverageCsv;
+using canopy::render::testing::readFile;
+
+struct Outcome {
+  int code = -1;
+  std::string out, err;
+};
+
+class CanopyCli : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("canopy_cli_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `env canopy args` through /bin/sh; args are trusted test strings.
+  Outcome canopy(const std::string& args, const std::string& env = "") const {
+    const std::string command = env + " '" + CANOPY_APP + "' " + args + " > '" +
+                                (dir_ / "stdout").string() + "' 2> '" + (dir_ / "stderr").string() +
+                                "'";
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile((dir_ / "stdout").string()),
+            readFile((dir_ / "stderr").string())};
+  }
+
+  std::string run(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+TEST_F(CanopyCli, FramesEveryKStepsAtTheGivenSize) {
+  const Outcome o =
+      canopy("run demo --out " + run("r") + " --frames --frame-every 50 --size 320x200");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("frames: 4 of 320x200 px, every 50 steps"), std::string::npos) << o.out;
+  for (int k : {0, 50, 100, 150}) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06d.png", k);
+    int w = 0, h = 0, n = 0;
+    ASSERT_TRUE(stbi_info((dir_ / "r" / "frames" / name).c_str(), &w, &h, &n)) << name;
+    EXPECT_EQ(w, 320);
+    EXPECT_EQ(h, 200);
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "r" / "frames" / "frame_000001.png"));
+}
+
+TEST_F(CanopyCli, BadFrameOptionsAreUsageErrors) {
+  for (const char* args :
+       {"--frames --size 0x5", "--frames --size 12", "--frames --size 800x",
+        "--frames --size 10000x10", "--frames --frame-every 0", "--frames --frame-every x",
+        "--frames --frame-every -3", "--frames --size", "--size 100x100", "--frame-every 2"}) {
+    const Outcome o = canopy("run demo --out " + run("bad") + " " + args);
+    EXPECT_EQ(o.code, 2) << args;
+    EXPECT_NE(o.err.find("command line: --"), std::string::npos) << args << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));  // rejected before anything ran
+}
+
+TEST_F(CanopyCli, VideoIsSkippedPlainlyWithoutFfmpeg) {
+  const Outcome o =
+      canopy("run demo --out " + run("v") + " --video --frame-every 75", "PATH=/nonexistent");
+  ASSERT_EQ(o.code, 0) << o.err;
+  EXPECT_NE(o.out.find("video skipped: ffmpeg is not on PATH"), std::string::npos) << o.out;
+  EXPECT_TRUE(fs::exists(dir_ / "v" / "frames" / "frame_000150.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "v" / "frames.mp4"));
+}
+
+TEST_F(CanopyCli, NoGlContextWithoutFrames) {
+  // ASan (CANOPY_SANITIZE) wants to be the first preloaded library; let it share.
+  const std::string preload =
+      std::string("ASAN_OPTIONS=verify_asan_link_order=0 LD_PRELOAD='") + CANOPY_NO_GL_SHIM + "'";
+  const Outcome plain = canopy("run demo --out " + run("plain"), preload);
+  EXPECT_EQ(plain.code, 0) << plain.err;
+  EXPECT_TRUE(fs::exists(dir_ / "plain" / "summary.json"));
+  // The stand-in does bite: the same run with frames stops at its first frame.
+  const Outcome framed = canopy("run demo --out " + run("framed") + " --frames", preload);
+  EXPECT_EQ(framed.code, 86) << framed.err;
+  EXPECT_NE(framed.err.find("a GL context was requested"), std::string::npos);
+}
+
+TEST_F(CanopyCli, CoverageReproducesTheGoldenFiles) {
+  const fs::path golden = fs::path(CANOPY_SOURCE_DIR) / "tests" / "data" / "coverage_golden";
+  const nlohmann::json cases = nlohmann::json::parse(std::ifstream(golden / "cases.json"));
+  for (const nlohmann::json& c : cases.at("cases")) {
+    const std::string name = c.at("name");
+    std::string sets;
+    for (const std::string s : c.at("set")) sets += " --set '" + s + "'";
+    ASSERT_EQ(
+        canopy("run " + c.at("scenario").get<std::string>() + " --out " + run(name) + sets).code,
+        0);
+    const std::string size = std::to_string(c.at("size")[0].get<int>()) + "x" +
+                             std::to_string(c.at("size")[1].get<int>());
+    const Outcome o = canopy("coverage " + run(name) + " --size " + size);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(compareCoverageCsv(readFile((golden / (name + ".csv")).string()), o.out), "") << name;
+  }
+}
+
+TEST_F(CanopyCli, CoverageOfABadRunDirectoryIsAClearError) {
+  const auto expectError = [&](const std::string& args, const std::string& message) {
+    const Outcome o = canopy("coverage " + args);
+    EXPECT_EQ(o.code, 2) << args;
+    EXPECT_NE(o.err.find(message), std::string::npos) << args << ": " << o.err;
+    EXPECT_TRUE(o.out.empty()) << args;
+  };
+  expectError("", "expected RUN_DIR");
+  expectError(run("missing"), "missing: no such directory");
+  fs::create_directories(dir_ / "empty");
+  expectError(run("empty"), "manifest.json: missing");
+
+  ASSERT_EQ(canopy("run demo --set clock.duration=1 --out " + run("good")).code, 0);
+  expectError(run("good") + " --size 5x5", "--size: expected WxH");
+  const fs::path record = dir_ / "good" / "record.jsonl";
+  const std::string text = readFile(record.string());
+  const std::string first = text.substr(0, text.find('\n') + 1);
+  std::ofstream(record) << first << "{\"k\": 1, \"t\": 0.2, \"uavs\": [], \"targets\": []}\n";
+  expectError(run("good"), "record.jsonl: line 2: uavs: expected a list of 2 entries");
+  std::ofstream(record) << first << "not json\n";
+  expectError(run("good"), "record.jsonl: line 2: expected one JSON object per line");
+  std::ofstream(record) << "";
+  expectError(run("good"), "record.jsonl: has no steps");
+  std::ofstream(dir_ / "good" / "manifest.json") << "{\"seed\": 1";
+  expectError(run("good"), "manifest.json: is not valid JSON");
+}
+
+}  // namespace

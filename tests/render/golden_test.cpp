@@ -1,0 +1,127 @@
+// Golden rendered coverage of the built-in scenarios, and frames written during a real run.
+// The cases are data (tests/data/coverage_golden/cases.json); regenerate the CSVs deliberately
+// with  CANOPY_UPDATE_GOLDENS=1 build/<dir>/tests/render/test_render_golden  (see README.md there).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "render/coverage.h"
+#include "render/frame_writer.h"
+#include "scenarios/loader.h"
+#include "scenarios/run.h"
+#include "scenarios/simulation.h"
+#include "tests/render/golden_csv.h"
+
+namespace canopy::render {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const fs::path kGoldenDir = fs::path(CANOPY_SOURCE_DIR) / "tests" / "data" / "coverage_golden";
+
+struct Case {
+  std::string name;
+  std::string scenario;
+  ImageSize size;
+  std::vector<std::string> overrides;
+};
+
+std::vector<Case> cases() {
+  const Json json = Json::parse(std::ifstream(kGoldenDir / "cases.json"));
+  std::vector<Case> out;
+  for (const Json& c : json.at("cases")) {
+    out.push_back({c.at("name"),
+                   c.at("scenario"),
+                   {c.at("size")[0], c.at("size")[1]},
+                   c.at("set").get<std::vector<std::string>>()});
+  }
+  return out;
+}
+
+// The rendered coverage of every step of the run, as `canopy coverage` prints it.
+std::string coverageCsv(const Case& c) {
+  scenarios::LoadOptions load;
+  load.overrides = c.overrides;
+  const scenarios::ScenarioSpec spec = scenarios::loadScenario(c.scenario, load);
+  std::vector<sensing::SensorDef> sensors;
+  for (const scenarios::UavSpec& uav : spec.uavs) sensors.push_back(uav.sensor);
+  std::vector<std::string> names;
+  for (const scenarios::TargetSpec& target : spec.targets) names.push_back(target.name);
+  CoverageCounter counter(spec.aoi, c.size);
+  std::string csv = coverageCsvHeader(names) + "\n";
+  scenarios::Simulation sim(spec);
+  while (!sim.done()) {
+    sim.tick();
+    csv += coverageCsvRow(sim.truth().step, sim.truth().time, counter.count(sim.truth(), sensors)) +
+           "\n";
+  }
+  return csv;
+}
+
+TEST(CoverageGolden, BuiltInScenariosMatchTheirGoldenFiles) {
+  const bool update = std::getenv("CANOPY_UPDATE_GOLDENS") != nullptr;
+  const std::vector<Case> list = cases();
+  ASSERT_FALSE(list.empty());
+  for (const Case& c : list) {
+    const fs::path golden = kGoldenDir / (c.name + ".csv");
+    const std::string actual = coverageCsv(c);
+    if (update) {
+      std::ofstream(golden, std::ios::binary | std::ios::trunc) << actual;
+      std::printf("updated %s\n", golden.c_str());
+      continue;
+    }
+    ASSERT_TRUE(fs::exists(golden))
+        << golden << " is missing; regenerate with CANOPY_UPDATE_GOLDENS=1";
+    EXPECT_EQ(testing::compareCoverageCsv(testing::readFile(golden.string()), actual), "")
+        << c.name;
+  }
+}
+
+TEST(CoverageGolden, DemoCoversSomethingEveryStep) {
+  // A sanity check on the golden data itself: both UAVs always see some of the AOI.
+  const auto rows = testing::parseCsv(testing::readFile((kGoldenDir / "demo.csv").string()));
+  ASSERT_GT(rows.size(), 100u);
+  for (std::size_t i = 1; i < rows.size(); ++i) EXPECT_GT(std::atol(rows[i][2].c_str()), 0) << i;
+}
+
+TEST(RunFrames, ARunWithFramesUsesOneGlContextAndARunWithoutNone) {
+  scenarios::LoadOptions load;
+  load.overrides = {"clock.duration=4"};
+  const scenarios::ScenarioSpec spec = scenarios::loadScenario("demo", load);
+  const fs::path dir =
+      fs::temp_directory_path() / ("canopy_run_frames_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+
+  const int before = glContextsCreated();
+  scenarios::RunOptions plain;
+  plain.out_dir = dir / "plain";
+  scenarios::runScenario(spec, plain);
+  EXPECT_EQ(glContextsCreated(), before);
+
+  SceneModel model;
+  model.aoi = spec.aoi;
+  model.trees = spec.trees;
+  for (const scenarios::UavSpec& uav : spec.uavs) model.sensors.push_back(uav.sensor);
+  FrameOptions frames;
+  frames.dir = dir / "framed" / "frames";
+  frames.every = 5;
+  frames.size = {240, 160};
+  FrameWriter writer(model, frames);
+  scenarios::RunOptions framed;
+  framed.out_dir = dir / "framed";
+  framed.on_step = [&writer](const scenarios::Simulation& sim) {
+    writer.onStep(sim.truth(), sim.beliefs());
+  };
+  scenarios::runScenario(spec, framed);
+  EXPECT_EQ(glContextsCreated(), before + 1);
+  EXPECT_EQ(writer.framesWritten(), 5);  // steps 0, 5, 10, 15, 20 of 0..20
+  EXPECT_TRUE(fs::exists(dir / "framed" / "frames" / "frame_000020.png"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace canopy::render

@@ -1,0 +1,221 @@
+// Scene building without GL: the projection, the 2-σ ellipse, footprint corners, trails, and
+// what buildScene puts in a frame.
+#include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "render/scene_builder.h"
+#include "render/trails.h"
+#include "render/viewport.h"
+
+namespace canopy::render {
+namespace {
+
+TEST(Viewport, FitKeepsTheAspectAndCentresTheView) {
+  // 120 m × 80 m into 300 × 300 px: 0.4 m/px, the view 300 × 200 px, 50 px above and below.
+  const Viewport v = Viewport::fit({Vec2(-60, -40), Vec2(60, 40)}, {300, 300});
+  EXPECT_DOUBLE_EQ(v.pixel_size, 0.4);
+  EXPECT_TRUE(v.toPixel(Vec2(-60, -40)).isApprox(Vec2(0, 250)));
+  EXPECT_TRUE(v.toPixel(Vec2(60, 40)).isApprox(Vec2(300, 50)));
+  EXPECT_TRUE(v.toWorld(v.toPixel(Vec2(12.5, -3.25))).isApprox(Vec2(12.5, -3.25)));
+}
+
+TEST(Viewport, ParsesSizesAndRejectsBadOnes) {
+  EXPECT_EQ(parseImageSize("800x600"), (ImageSize{800, 600}));
+  EXPECT_EQ(parseImageSize("16x4096"), (ImageSize{16, 4096}));
+  for (const char* bad : {"0x5", "800", "x600", "800x", "-8x8", "15x100", "16x4097", "800x600x2",
+                          "8.5x10", " 800x600", "800X600", ""}) {
+    EXPECT_FALSE(parseImageSize(bad).has_value()) << bad;
+  }
+}
+
+TEST(Viewport, FitSizeFollowsTheLongerSideAndRoundsToEven) {
+  EXPECT_EQ(fitSize({Vec2(0, 0), Vec2(120, 80)}, 800), (ImageSize{800, 534}));  // 533.3 → 534
+  EXPECT_EQ(fitSize({Vec2(0, 0), Vec2(50, 100)}, 800), (ImageSize{400, 800}));
+}
+
+TEST(CovarianceEllipse, PointsLieOnTheTwoSigmaContourCounterClockwise) {
+  Mat2 P;
+  P << 4.0, 1.5, 1.5, 2.0;
+  const Vec2 c(3.0, -2.0);
+  const std::vector<Vec2> points = covarianceEllipse(c, P, 64);
+  ASSERT_EQ(points.size(), 64u);
+  for (const Vec2& p : points) {
+    const Vec2 d = p - c;
+    EXPECT_NEAR(d.dot(P.ldlt().solve(d)), 4.0, 1e-9);  // Mahalanobis² = 2²
+  }
+  // The inscribed 64-gon's area is (64/2π)·sin(2π/64) = 99.8 % of the ellipse's π·2σ₁·2σ₂.
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec2& a = points[i];
+    const Vec2& b = points[(i + 1) % points.size()];
+    twice_area += a.x() * b.y() - b.x() * a.y();
+  }
+  const double ellipse = std::numbers::pi * 4.0 * std::sqrt(P.determinant());
+  EXPECT_NEAR(0.5 * twice_area / ellipse,
+              64.0 / (2 * std::numbers::pi) * std::sin(2 * std::numbers::pi / 64), 1e-9);
+  Mat2 bad = P;
+  bad(0, 1) = std::nan("");
+  EXPECT_TRUE(covarianceEllipse(c, bad).empty());
+}
+
+TEST(FootprintCorners, AreTheRotatedRectanglesCorners) {
+  sensing::FootprintDef def;
+  def.size = Vec2(20.0, 14.0);
+  const sensing::Footprint f = sensing::Footprint::place(def, Vec2(5, 5), std::numbers::pi / 2);
+  const std::vector<Vec2> corners = footprintCorners(f);
+  ASSERT_EQ(corners.size(), 4u);
+  // Heading +y: 20 m along y, 14 m across (along x).
+  EXPECT_TRUE(corners[0].isApprox(Vec2(5 - 7, 5 + 10)));
+  for (const Vec2& p : corners) EXPECT_TRUE(f.contains(p));
+  def.shape = sensing::FootprintShape::disc;
+  EXPECT_TRUE(footprintCorners(sensing::Footprint::place(def, Vec2(0, 0), 0.0)).empty());
+}
+
+TEST(TargetTrails, KeepTheLastSecondsOnly) {
+  TargetTrails trails(1.0);
+  for (int k = 0; k <= 10; ++k) {
+    world::WorldSnapshot s;
+    s.step = k;
+    s.time = 0.25 * k;
+    s.targets.push_back({Vec2(k, 0), Vec2::Zero()});
+    trails.add(s);
+  }
+  // t = 2.5 s: the points at t ≥ 1.5 s are k = 6..10.
+  const std::vector<Vec2>& trail = trails.trail(0);
+  ASSERT_EQ(trail.size(), 5u);
+  EXPECT_EQ(trail.front(), Vec2(6, 0));
+  EXPECT_EQ(trail.back(), Vec2(10, 0));
+  EXPECT_TRUE(trails.trail(1).empty());
+}
+
+// A small world with every kind of thing a frame shows.
+struct Fixture {
+  SceneModel model;
+  world::WorldSnapshot truth;
+  std::vector<agents::AgentBelief> beliefs;
+  TargetTrails trails;
+
+  Fixture() {
+    model.title = "unit";
+    model.aoi = {Vec2(-50, -30), Vec2(50, 30)};
+    model.trees = {world::TreeDef::disc(Vec2(-20, 10), 3.0),
+                   world::TreeDef::polygon({Vec2(20, -10), Vec2(25, -10), Vec2(25, -5)})};
+    sensing::SensorDef rectangle, disc;
+    rectangle.footprint.size = Vec2(20, 14);
+    disc.footprint.shape = sensing::FootprintShape::disc;
+    disc.footprint.radius = 12;
+    model.sensors = {rectangle, disc};
+    model.uav_names = {"alpha", "beta"};
+    truth.step = 7;
+    truth.time = 1.5;
+    truth.uavs = {{Vec2(-30, 0), Vec2::Zero(), 0.3}, {Vec2(30, 5), Vec2::Zero(), 0.0}};
+    truth.targets = {{Vec2(-28, 1), Vec2::Zero()}};
+    trails.add(truth);
+    agents::AgentBelief& b = beliefs.emplace_back();
+    agents::TrackEstimate& track = b.tracks.emplace_back();
+    track.belief.x << -27.5, 1.2, 0.0, 0.0;
+    track.confirmed = true;
+    agents::TreeEstimate& tree = b.trees.emplace_back();
+    tree.belief.x << -19.0, 10.5, 2.5;
+    b.planned_path = {Vec2(-28, 0), Vec2(-26, 0)};
+    beliefs.emplace_back();
+  }
+};
+
+template <class T>
+std::vector<T> all(const std::vector<Primitive>& list) {
+  std::vector<T> out;
+  for (const Primitive& p : list) {
+    if (const T* t = std::get_if<T>(&p)) out.push_back(*t);
+  }
+  return out;
+}
+
+TEST(BuildScene, DrawsTreesFootprintsBeliefsTargetsAndUavs) {
+  const Fixture f;
+  const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 534});
+  const auto discs = all<Disc>(scene.world);
+  const auto polygons = all<Polygon>(scene.world);
+  const auto rings = all<Ring>(scene.world);
+  const auto lines = all<Polyline>(scene.world);
+  const auto markers = all<Marker>(scene.world);
+
+  const auto has_disc = [&](const Vec2& c, double r, Rgba fill) {
+    return std::any_of(discs.begin(), discs.end(), [&](const Disc& d) {
+      return d.centre == c && d.radius == r && d.fill == fill;
+    });
+  };
+  EXPECT_TRUE(has_disc(Vec2(-20, 10), 3.0, palette::kTreeFill));
+  EXPECT_TRUE(has_disc(Vec2(30, 5), 12.0, withAlpha(uavColour(1), 60)));  // beta's footprint
+  const auto footprint = std::find_if(polygons.begin(), polygons.end(), [](const Polygon& p) {
+    return p.fill == withAlpha(uavColour(0), 60);
+  });
+  ASSERT_NE(footprint, polygons.end());
+  const sensing::Footprint placed = sensing::footprintOf(f.truth, 0, f.model.sensors[0]);
+  EXPECT_EQ(footprint->vertices, footprintCorners(placed));
+  EXPECT_TRUE(std::any_of(polygons.begin(), polygons.end(), [](const Polygon& p) {
+    return p.fill == palette::kTreeFill && p.vertices.size() == 3;
+  }));
+  // The occlusion-map estimate, the plan from the UAV, the 2-σ ellipse.
+  EXPECT_TRUE(std::any_of(rings.begin(), rings.end(), [](const Ring& r) {
+    return r.centre == Vec2(-19, 10.5) && r.radius == 2.5;
+  }));
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const Polyline& l) {
+    return !l.closed && l.points.size() == 3 && l.points[0] == Vec2(-30, 0);
+  }));
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
+                          [](const Polyline& l) { return l.closed && l.points.size() == 36; }));
+  const auto marker = [&](MarkerShape shape, const Vec2& at) {
+    return std::find_if(markers.begin(), markers.end(),
+                        [&](const Marker& m) { return m.shape == shape && m.at.isApprox(at); });
+  };
+  EXPECT_NE(marker(MarkerShape::cross, Vec2(-27.5, 1.2)), markers.end());
+  EXPECT_NE(marker(MarkerShape::dot, Vec2(-28, 1)), markers.end());
+  const auto alpha = marker(MarkerShape::arrow, Vec2(-30, 0));
+  ASSERT_NE(alpha, markers.end());
+  EXPECT_DOUBLE_EQ(alpha->heading, 0.3);
+  // Names and the time stamp.
+  std::string text;
+  for (const Text& t : all<Text>(scene.world)) text += t.text + "|";
+  for (const Text& t : all<Text>(scene.overlay)) text += t.text + "|";
+  for (const char* expected :
+       {"alpha|", "beta|", "T1|", "t = 1.50 s", "k = 7", "tree|", "occlusion map|"}) {
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << " in " << text;
+  }
+}
+
+TEST(BuildScene, FitsTheAoiAboveTheLegendWithItsAspect) {
+  const Fixture f;
+  const ImageSize size{640, 640};
+  const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, size);
+  const Vec2 lo = scene.viewport.toPixel(f.model.aoi.lo),
+             hi = scene.viewport.toPixel(f.model.aoi.hi);
+  EXPECT_NEAR((hi.x() - lo.x()) / (lo.y() - hi.y()), 100.0 / 60.0, 1e-9);
+  EXPECT_GT(lo.x(), 0.0);
+  EXPECT_LT(hi.x(), size.width);
+  // The legend band: an overlay polygon reaching the bottom edge; the AOI ends above it.
+  double band_top = size.height;
+  for (const Polygon& p : all<Polygon>(scene.overlay)) {
+    if (p.vertices[2].y() == size.height) band_top = std::min(band_top, p.vertices[0].y());
+  }
+  EXPECT_LT(band_top, size.height);
+  EXPECT_LT(lo.y(), band_top);
+}
+
+TEST(BuildScene, WithoutBeliefsHasNoBeliefLegend) {
+  const Fixture f;
+  const Scene scene = buildScene(f.model, f.truth, {}, f.trails, {800, 534});
+  for (const Text& t : all<Text>(scene.overlay)) {
+    EXPECT_EQ(t.text.find("estimate"), std::string::npos);
+    EXPECT_EQ(t.text.find("occlusion"), std::string::npos);
+  }
+  EXPECT_TRUE(all<Ring>(scene.world).empty());
+}
+
+}  // namespace
+}  // namespace canopy::render
