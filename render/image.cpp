@@ -2,11 +2,12 @@
 
 #include <array>
 #include <cstring>
+#include <span>
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
 
-#include "render/internal/deflate.h"
+#include <zlib.h>
 
 namespace canopy::render {
 namespace {
@@ -22,7 +23,9 @@ void chunk(std::vector<std::uint8_t>& png, std::string_view type,
   const std::size_t start = png.size();
   png.insert(png.end(), type.begin(), type.end());
   png.insert(png.end(), data.begin(), data.end());
-  putBigEndian(png, internal::crc32(std::span(png).subspan(start)));
+  const std::span<const std::uint8_t> crc_input = std::span(png).subspan(start);
+  putBigEndian(png, static_cast<std::uint32_t>(
+                        ::crc32(0, crc_input.data(), static_cast<uInt>(crc_input.size()))));
 }
 
 }  // namespace
@@ -37,12 +40,18 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
              h = static_cast<std::size_t>(image.size.height);
   if (w == 0 || h == 0 || image.rgb.size() != w * h * 3)
     throw std::invalid_argument("encodePng: bad image");
-  // Each row is preceded by its filter type, 0 ("none").
+  // Each row is preceded by its filter type, 1 ("Sub": each byte minus the byte of the pixel to
+  // its left, PNG §9.2): flat colour becomes runs of zeros, which zlib's run-length strategy
+  // compresses quickly.
   const std::size_t row = 3 * w + 1;
   std::vector<std::uint8_t> raw(row * h);
   for (std::size_t y = 0; y < h; ++y) {
-    raw[y * row] = 0;
-    std::memcpy(&raw[y * row + 1], &image.rgb[y * 3 * w], 3 * w);
+    const std::uint8_t* in = &image.rgb[y * 3 * w];
+    std::uint8_t* out = &raw[y * row];
+    out[0] = 1;
+    for (std::size_t i = 0; i < 3 * w; ++i) {
+      out[1 + i] = static_cast<std::uint8_t>(in[i] - (i >= 3 ? in[i - 3] : 0));
+    }
   }
   std::vector<std::uint8_t> header;
   putBigEndian(header, static_cast<std::uint32_t>(w));
@@ -52,7 +61,20 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
 
   std::vector<std::uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   chunk(png, "IHDR", header);
-  chunk(png, "IDAT", internal::zlibCompress(raw, 3, row));
+  std::vector<std::uint8_t> compressed(compressBound(static_cast<uLong>(raw.size())));
+  z_stream stream{};
+  if (deflateInit2(&stream, Z_BEST_SPEED, Z_DEFLATED, 15, 8, Z_RLE) != Z_OK) {
+    throw std::runtime_error("encodePng: zlib failed");
+  }
+  stream.next_in = raw.data();
+  stream.avail_in = static_cast<uInt>(raw.size());
+  stream.next_out = compressed.data();
+  stream.avail_out = static_cast<uInt>(compressed.size());
+  const int status = deflate(&stream, Z_FINISH);
+  deflateEnd(&stream);
+  if (status != Z_STREAM_END) throw std::runtime_error("encodePng: zlib failed");
+  compressed.resize(stream.total_out);
+  chunk(png, "IDAT", compressed);
   chunk(png, "IEND", {});
   return png;
 }

@@ -17,13 +17,10 @@ struct Image {
   Rgba pixel(int x, int y) const;
 };
 
-/// The image as a PNG file's bytes: 8-bit RGB, filter "none" on every row, one IDAT chunk
-/// compressed by internal/deflate.h (matches one pixel and one row back, fixed Huffman codes).
-/// Deterministic. Not stb_image_write: its compressor clamps every level below 5 to 5 and then
-/// compares up to 10 hash-chain candidates of up to 258 bytes at each match; on the benchmark's
-/// 800 × 800 frame it took 22 ms (202 kB) with filter "none", 45 ms with its per-row filters,
-/// over the whole 20 ms budget. This encoder takes 3.5 ms (227 kB). stb_image decodes its
-/// output back to the same pixels (tests/render/canvas_test.cpp).
+/// The image as a PNG file's bytes: 8-bit RGB, filter "Sub" on every row, one IDAT chunk
+/// compressed by zlib (level 1, run-length strategy). Not stb_image_write: its compressor clamps
+/// every level below 5 to 5 and took 22 ms for an 800 × 800 frame, more than the whole frame's
+/// 20 ms budget; this takes a few ms for a file of about the same size. Deterministic.
 std::vector<std::uint8_t> encodePng(const Image& image);
 
 /// Writes the PNG to `path` through a temporary file and a rename, so that a reader never sees
