@@ -52,7 +52,7 @@ Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
   Figure f;
   f.width = 900;
   f.height = 520;
-  const double left = 40, right = 150, top = 70, bottom = 60, node_w = 16, gap = 10;
+  const double left = 70, right = 150, top = 70, bottom = 60, node_w = 16, gap = 10;
   const double plot_h = f.height - top - bottom;
   const int n_states = static_cast<int>(stats.states.size());
   f.shapes.push_back(Label{Vec2(f.width / 2.0, 32), title, 14, Anchor::middle, kInk});
@@ -135,15 +135,19 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs, const
                       const std::vector<std::string>& target_names, const std::string& title) {
   Figure f;
   const int panels = static_cast<int>(target_names.size());
-  const double left = 70, right = 30, top = 80, panel_h = 170, panel_gap = 45;
+  const double left = 70, right = 30, panel_h = 170, panel_gap = 45, legend_row = 18;
+  const double top = 75 + legend_row * static_cast<double>(configs.size());  // legend above the panels
   f.width = 900;
   f.height = static_cast<int>(top + panels * (panel_h + panel_gap) + 20);
   f.shapes.push_back(Label{Vec2(f.width / 2.0, 30), title, 14, Anchor::middle, kInk});
-  for (std::size_t c = 0; c < configs.size(); ++c) {  // legend along the top
-    const double lx = left + 200.0 * static_cast<double>(c);
-    f.shapes.push_back(Line{{Vec2(lx, 55), Vec2(lx + 30, 55)}, 3, seriesColour(static_cast<int>(c))});
-    f.shapes.push_back(Label{Vec2(lx + 36, 60), labels[c], 10, Anchor::start, kInk});
+  for (std::size_t c = 0; c < configs.size(); ++c) {  // one legend row per configuration
+    const double ly = 55 + legend_row * static_cast<double>(c);
+    f.shapes.push_back(Line{{Vec2(left, ly), Vec2(left + 30, ly)}, 3, seriesColour(static_cast<int>(c))});
+    f.shapes.push_back(Label{Vec2(left + 38, ly + 5), labels[c], 10, Anchor::start, kInk});
   }
+  f.shapes.push_back(FilledPolygon{{Vec2(f.width - 250.0, 48), Vec2(f.width - 220.0, 48), Vec2(f.width - 220.0, 62),
+                                    Vec2(f.width - 250.0, 62)}, kShade});
+  f.shapes.push_back(Label{Vec2(f.width - 212.0, 60), "target under a crown", 10, Anchor::start, kInk});
   if (configs.empty() || configs.front()->coverage.empty()) return f;
   const int steps = static_cast<int>(configs.front()->coverage.front().size());
   const double dt = configs.front()->dt;

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "analysis/figure_png.h"
 #include "analysis/plots.h"
 #include "scenarios/loader.h"
 #include "scenarios/sweep.h"
@@ -94,14 +95,13 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 
 namespace canopy::analysis {
 
-std::vector<fs::path> writeSvgFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
+void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
   fs::create_directories(out_dir);
-  std::vector<fs::path> written;
   auto write = [&](const fs::path& stem, const Figure& figure) {
     std::ofstream out(stem.string() + ".svg", std::ios::trunc);
     out << toSvg(figure);
     if (!out) throw std::runtime_error("cannot write " + stem.string() + ".svg");
-    written.push_back(stem);
+    writeFigurePng(figure, stem.string() + ".png");
   };
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
@@ -115,7 +115,6 @@ std::vector<fs::path> writeSvgFigures(const SweepAnalysis& analysis, const fs::p
     for (const auto& target : analysis.specs.front().targets) targets.push_back(target.name);
     write(out_dir / "coverage", coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"));
   }
-  return written;
 }
 
 }  // namespace canopy::analysis

@@ -34,9 +34,8 @@ void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out
 
 namespace canopy::analysis {
 
-/// Writes sankey_<config>.svg per configuration and coverage.svg (one line per configuration)
-/// into out_dir; returns the files written (without extension), so PNGs can follow.
-std::vector<std::filesystem::path> writeSvgFigures(const SweepAnalysis& analysis,
-                                                   const std::filesystem::path& out_dir);
+/// Writes sankey_<config>.{svg,png} per configuration and coverage.{svg,png} (one line per
+/// configuration, one panel per trajectory) into out_dir.
+void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
 
 }  // namespace canopy::analysis

@@ -37,7 +37,7 @@ int reproduceCommand(Args& args) {
     ran += runSweepWithProgress(experiment.sweep, dir, jobs);
     analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
     analysis::writeTables(analysed, dir / "analysis");
-    writeFigures(analysed, dir / "analysis");
+    analysis::writeFigures(analysed, dir / "analysis");
     results.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
   }
   analysis::ReportContext context;

@@ -49,10 +49,6 @@ int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesyste
   return scenarios::runSweep(sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
 }
 
-void writeFigures(const analysis::SweepAnalysis& analysis, const std::filesystem::path& dir) {
-  analysis::writeSvgFigures(analysis, dir);
-}
-
 int sweepCommand(Args& args) {
   std::string file, out;
   int jobs = defaultJobs();
@@ -97,7 +93,7 @@ int analyzeCommand(Args& args) {
   if (out.empty()) out = dir + "/analysis";
   const analysis::SweepAnalysis result = analysis::analyseSweep(dir);
   analysis::writeTables(result, out);
-  writeFigures(result, out);
+  analysis::writeFigures(result, out);
   for (const analysis::ConfigStatistics& config : result.configs) {
     std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {

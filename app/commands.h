@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <string>
 
-#include "analysis/sweep_analysis.h"
 #include "app/cli.h"
 #include "render/viewport.h"
 #include "scenarios/sweep.h"
@@ -23,8 +22,6 @@ int reproduceCommand(Args& args); // canopy reproduce --out DIR [--trials N] [--
 render::ImageSize imageSizeValue(Args& args, const std::string& name);
 /// Runs a sweep with a progress bar on stderr; returns the number of trials run now.
 int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs);
-/// Writes a sweep analysis's figures (SVG and PNG) into dir.
-void writeFigures(const analysis::SweepAnalysis& analysis, const std::filesystem::path& dir);
 
 /// The scenario `canopy run` uses when none is given.
 inline constexpr const char* kDefaultScenario = "demo";

@@ -69,6 +69,9 @@ struct Text {
 
 using Primitive = std::variant<Polygon, Disc, Ring, Polyline, Marker, Text>;
 
+/// The width (px) a Text with this string and scale takes on the image, for aligning labels.
+double textWidthPx(const std::string& text, double scale);
+
 /// Appends a primitive, constructed in place. Prefer it to push_back(T{…}): GCC 12 misreports
 /// the move of a temporary variant as a read of uninitialised memory (-Wmaybe-uninitialized).
 template <class T>

@@ -9,6 +9,9 @@
 #include "render/internal/text.h"
 
 namespace canopy::render {
+
+double textWidthPx(const std::string& text, double scale) { return internal::textWidth(text) * scale; }
+
 namespace {
 
 using internal::kTextLineHeight;
