@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "core/text_file.h"
 #include "render/coverage.h"
 #include "render/frame_writer.h"
 #include "scenarios/error.h"
@@ -27,11 +28,9 @@ std::string readText(const fs::path& path, const std::string& what) {
     throw ScenarioError(path.string(), "",
                         "missing: expected the " + what + " that `canopy run` writes");
   }
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw ScenarioError(path.string(), "", "cannot be read");
-  return text.str();
+  std::optional<std::string> text = readTextFile(path);
+  if (!text) throw ScenarioError(path.string(), "", "cannot be read");
+  return std::move(*text);
 }
 
 scenarios::ScenarioSpec loadManifest(const fs::path& path) {

@@ -1,9 +1,10 @@
 #include "render/image.h"
 
+#include "core/text_file.h"
+
 #include <array>
 #include <cstring>
 #include <span>
-#include <fstream>
 #include <stdexcept>
 #include <string_view>
 
@@ -81,16 +82,7 @@ std::vector<std::uint8_t> encodePng(const Image& image) {
 
 void writePng(const std::filesystem::path& path, const Image& image) {
   const std::vector<std::uint8_t> png = encodePng(image);
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+  writeFileAtomically(path, std::string(png.begin(), png.end()));
 }
 
 }  // namespace canopy::render

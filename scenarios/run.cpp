@@ -2,24 +2,15 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/random.h"
+#include "core/text_file.h"
 #include "scenarios/recorder.h"
 #include "scenarios/summary.h"
 
 namespace canopy::scenarios {
-namespace {
-
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text << '\n';
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
-}  // namespace
 
 std::string manifestJson(const ScenarioSpec& spec, const std::string& command_line) {
   using Json = nlohmann::json;
@@ -41,7 +32,7 @@ std::string manifestJson(const ScenarioSpec& spec, const std::string& command_li
 
 RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
   std::filesystem::create_directories(options.out_dir);
-  writeFile(options.out_dir / "manifest.json", manifestJson(spec, options.command_line));
+  writeFileAtomically(options.out_dir / "manifest.json", manifestJson(spec, options.command_line) + "\n");
 
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
@@ -57,7 +48,7 @@ RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
   result.steps = summary.steps();
   result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.summary_json = summary.json(result.wall_seconds);
-  writeFile(options.out_dir / "summary.json", result.summary_json);
+  writeFileAtomically(options.out_dir / "summary.json", result.summary_json + "\n");
   return result;
 }
 

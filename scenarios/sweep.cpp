@@ -5,12 +5,11 @@
 #include <bit>
 #include <cctype>
 #include <cstdio>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "core/random.h"
+#include "core/text_file.h"
 #include "scenarios/internal/json_reader.h"
 
 namespace canopy::scenarios {
@@ -20,26 +19,6 @@ using internal::Json;
 using internal::ObjectReader;
 
 namespace {
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Temp file + rename: a reader never sees a half-written file, even if we are killed.
-void writeAtomically(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  const fs::path temp = path.string() + ".tmp";
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temp.string());
-  }
-  fs::rename(temp, path);
-}
 
 // "planner.horizon" = 5 → "horizon-5", "planner.algorithm" = "sma" → "algorithm-sma"; characters unsafe in a directory name become '_'.
 std::string slug(const std::string& path, const std::string& value) {
@@ -137,11 +116,11 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
 
 int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   const fs::path manifest = options.out_dir / "sweep.json";
-  if (fs::exists(manifest) && readText(manifest) != sweep.effective_json + "\n") {
+  if (fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
     throw ScenarioError(manifest.string(), "", "this directory holds a different sweep; choose another --out");
   }
   fs::create_directories(options.out_dir);
-  writeAtomically(manifest, sweep.effective_json + "\n");
+  writeFileAtomically(manifest, sweep.effective_json + "\n");
 
   const std::vector<SweepConfig> configs = configurations(sweep);
   std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
@@ -174,7 +153,7 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
         ScenarioSpec spec = specs[todo[j].config];
         spec.seed = trialSeed(sweep.seed, todo[j].trial);
         const TrialResult trial = runTrial(spec, configs[todo[j].config].id);
-        writeAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial), trialToJson(trial) + "\n");
+        writeFileAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial), trialToJson(trial) + "\n");
       } catch (...) {
         const std::lock_guard lock(progress_mutex);
         if (!failure) failure = std::current_exception();
@@ -191,7 +170,7 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   for (int w = 0; w < jobs; ++w) pool.emplace_back(worker);
   pool.clear();  // joins
   if (failure) std::rethrow_exception(failure);
-  writeAtomically(options.out_dir / "summary.json", summariseSweep(loadSweepResults(options.out_dir)));
+  writeFileAtomically(options.out_dir / "summary.json", summariseSweep(loadSweepResults(options.out_dir)));
   return static_cast<int>(todo.size());
 }
 
@@ -201,13 +180,13 @@ SweepResults loadSweepResults(const fs::path& out_dir) {
   if (!fs::is_regular_file(manifest)) {
     throw ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
   }
-  results.sweep = loadSweepText(readText(manifest), manifest.string());
+  results.sweep = loadSweepText(readTextFile(manifest).value_or(""), manifest.string());
   results.configs = configurations(results.sweep);
   for (const SweepConfig& config : results.configs) {
     std::vector<TrialResult> trials;
     for (int t = 0; t < results.sweep.trials; ++t) {
       const fs::path path = trialPath(out_dir, config.id, t);
-      if (fs::is_regular_file(path)) trials.push_back(trialFromJson(readText(path), path.string()));
+      if (const auto text = readTextFile(path)) trials.push_back(trialFromJson(*text, path.string()));
     }
     results.trials.push_back(std::move(trials));
   }

@@ -1,9 +1,9 @@
 #include "scenarios/internal/json_reader.h"
 
+#include "core/text_file.h"
+
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace canopy::scenarios::internal {
 namespace {
@@ -68,14 +68,12 @@ Json parseJson(const std::string& text, const std::string& file) {
 }
 
 Json readJsonFile(const std::string& path, const std::string& referenced_from) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const std::optional<std::string> text = readTextFile(path);
+  if (!text) {
     throw ScenarioError(referenced_from.empty() ? path : referenced_from, "",
                         "cannot read file '" + path + "'");
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseJson(text.str(), path);
+  return parseJson(*text, path);
 }
 
 std::string describe(const Json& value) {
