@@ -10,23 +10,23 @@ namespace canopy::agents {
 
 /// Local tracking (algorithms.md §4).
 struct TrackingConfig {
-  double sigma_a = 1.0;                // m/s², NCV process-noise intensity σ_a
-  double gate_probability = 0.98;      // P_G; the χ²₂ gate is −2 ln(1 − P_G) = 7.824
+  double sigma_a = 1.0;            // m/s², NCV process-noise intensity σ_a
+  double gate_probability = 0.98;  // P_G; the χ²₂ gate is −2 ln(1 − P_G) = 7.824
   // A measurement starts a track only outside every track's wider birth gate (χ²₂ at this
   // probability, 18.4 at 0.9999): a target's own measurements that miss its association gate
   // would otherwise start confirmed duplicates (agents/tracking/jpdaf.h has the measurement).
   double birth_gate_probability = 0.9999;
-  double p_detect = 0.9;               // P_D assumed by the JPDAF
-  double clutter_density = 1e-4;       // 1/m², spatial density of false detections λ
-  int max_hypotheses = 10000;          // exact joint-event enumeration up to this many events
-  double birth_velocity_sigma = 1.0;   // m/s, σ of the velocity of a newborn track
-  int confirm_hits = 2;                // confirmed after this many hits ...
-  int confirm_window = 3;              // ... within the first this many scans
-  double delete_trace = 400.0;         // m², delete when tr(P_pos) exceeds this
-  int delete_misses = 0;               // > 0: also delete after this many expected-visible misses
-  bool preseed = true;                 // start every agent with a confirmed track per target
+  double p_detect = 0.9;                 // P_D assumed by the JPDAF
+  double clutter_density = 1e-4;         // 1/m², spatial density of false detections λ
+  int max_hypotheses = 10000;            // exact joint-event enumeration up to this many events
+  double birth_velocity_sigma = 1.0;     // m/s, σ of the velocity of a newborn track
+  int confirm_hits = 2;                  // confirmed after this many hits ...
+  int confirm_window = 3;                // ... within the first this many scans
+  double delete_trace = 400.0;           // m², delete when tr(P_pos) exceeds this
+  int delete_misses = 0;                 // > 0: also delete after this many expected-visible misses
+  bool preseed = true;                   // start every agent with a confirmed track per target
   Vec4 preseed_variance = Vec4::Ones();  // m², m², m²/s², m²/s²: diagonal of P₀ for pre-seeds
-  double tree_min_radius = 0.1;        // m, a tree estimate's radius never goes below this
+  double tree_min_radius = 0.1;          // m, a tree estimate's radius never goes below this
 };
 
 enum class FusionMethod { ci, hcmci, observer_average };
@@ -34,10 +34,10 @@ enum class FusionMethod { ci, hcmci, observer_average };
 /// Distributed fusion (algorithms.md §5).
 struct FusionConfig {
   FusionMethod method = FusionMethod::ci;
-  int rounds = 5;                      // L consensus rounds per step
+  int rounds = 5;                                               // L consensus rounds per step
   double comm_range = std::numeric_limits<double>::infinity();  // m, neighbours within this range
-  double comm_drop = 0.0;              // probability that a message is lost
-  double association_gate = 9.21;      // χ²₂ (99 %) gate on the position Mahalanobis distance
+  double comm_drop = 0.0;          // probability that a message is lost
+  double association_gate = 9.21;  // χ²₂ (99 %) gate on the position Mahalanobis distance
 };
 
 enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized };
@@ -58,15 +58,15 @@ struct PsoConfig {
 /// Nominal belief optimisation (algorithms.md §6).
 struct PlannerConfig {
   PlannerAlgorithm algorithm = PlannerAlgorithm::none;  // none: UAVs follow scripted paths
-  int horizon = 5;                   // H planning steps
-  double plan_period = 1.0;          // s, Δ between planning steps and between epochs
+  int horizon = 5;                                      // H planning steps
+  double plan_period = 1.0;  // s, Δ between planning steps and between epochs
   OcclusionMapMode occlusion_map = OcclusionMapMode::dynamic;
-  double discount = 1.0;             // γ
-  bool full_trace = false;           // cost on tr(P) instead of tr(P_pos)
+  double discount = 1.0;    // γ
+  bool full_trace = false;  // cost on tr(P) instead of tr(P_pos)
   bool terminal_penalty = true;
   double terminal_penalty_weight = 0.5;  // w
   PsoConfig pso;
-  std::vector<int> order;            // SMA planning order (UAV indices); empty: 0..N−1
+  std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
 };
 
 }  // namespace canopy::agents

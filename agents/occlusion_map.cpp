@@ -26,10 +26,14 @@ OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move
   // Counting sort of (cell, tree) pairs into CSR arrays: each tree goes into every cell its box
   // touches.
   auto forEachCell = [this](const Aabb& box, auto&& visit) {
-    const int c0 = std::clamp(static_cast<int>((box.lo.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
-    const int c1 = std::clamp(static_cast<int>((box.hi.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
-    const int r0 = std::clamp(static_cast<int>((box.lo.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
-    const int r1 = std::clamp(static_cast<int>((box.hi.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
+    const int c0 =
+        std::clamp(static_cast<int>((box.lo.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
+    const int c1 =
+        std::clamp(static_cast<int>((box.hi.x() - bounds_.lo.x()) / cell_), 0, cols_ - 1);
+    const int r0 =
+        std::clamp(static_cast<int>((box.lo.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
+    const int r1 =
+        std::clamp(static_cast<int>((box.hi.y() - bounds_.lo.y()) / cell_), 0, rows_ - 1);
     for (int r = r0; r <= r1; ++r) {
       for (int c = c0; c <= c1; ++c) visit(r * cols_ + c);
     }
@@ -46,7 +50,8 @@ OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move
   }
 }
 
-OcclusionMap OcclusionMap::fromEstimates(const std::vector<TreeEstimate>& trees, double min_radius) {
+OcclusionMap OcclusionMap::fromEstimates(const std::vector<TreeEstimate>& trees,
+                                         double min_radius) {
   std::vector<world::TreeDef> discs;
   discs.reserve(trees.size());
   for (const TreeEstimate& tree : trees) {

@@ -25,9 +25,9 @@ class OcclusionMap {
  private:
   std::vector<world::TreeDef> trees_;
   Aabb bounds_;
-  double cell_ = 1.0;                    // m, grid cell size
+  double cell_ = 1.0;  // m, grid cell size
   int cols_ = 0, rows_ = 0;
-  std::vector<int> cell_start_;          // CSR: trees of cell c are cell_trees_[start[c], start[c+1])
+  std::vector<int> cell_start_;  // CSR: trees of cell c are cell_trees_[start[c], start[c+1])
   std::vector<int> cell_trees_;
 };
 

@@ -52,7 +52,7 @@ bool occlusionAware(const SetHistory& M, const SetHistory& in_footprint,
   auto ownedBySome = [&](int k) {
     return std::any_of(M[k].begin(), M[k].end(), [b](TargetSet s) { return (s & b) != 0; });
   };
-  if (!ownedBySome(k0)) return false;  // condition 1
+  if (!ownedBySome(k0)) return false;       // condition 1
   for (std::size_t i = 0; i < uavs; ++i) {  // condition 2: nobody waits idle over t
     bool waits_throughout = true;
     for (int k = first; k <= last && waits_throughout; ++k) {

@@ -12,7 +12,9 @@ namespace canopy::analysis {
 /// A set of targets as bits: bit t set ⇔ target t is in the set (analysis supports ≤ 64 targets).
 using TargetSet = std::uint64_t;
 inline constexpr int kMaxAnalysedTargets = 64;
-inline TargetSet bit(int t) { return TargetSet{1} << t; }
+inline TargetSet bit(int t) {
+  return TargetSet{1} << t;
+}
 
 /// sets[k][i]: UAV i's set at step k (visible targets V_{i,k}, footprint membership, or M_{i,k}).
 using SetHistory = std::vector<std::vector<TargetSet>>;

@@ -11,9 +11,9 @@ namespace canopy::analysis {
 
 /// One row group of the paper's table.
 struct Experiment {
-  std::string scenario;          // library name; also the sweep's name and directory
+  std::string scenario;  // library name; also the sweep's name and directory
   scenarios::SweepSpec sweep;
-  bool ownership = false;        // analysed by ownership (TH, RA) or by occlusion (JE, OS)
+  bool ownership = false;  // analysed by ownership (TH, RA) or by occlusion (JE, OS)
 };
 
 /// TH and RA: SMA-NBO and Dec-POMDP × H ∈ {1, 5}; JE and OS: SMA-NBO, H = 5, × occlusion map
@@ -24,8 +24,8 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed);
 struct PaperOwnership {
   std::string scenario, algorithm;  // "sma" / "dec_pomdp"
   int horizon = 0;
-  std::optional<double> at_half;    // fraction of trials in M* at k = L/2
-  std::optional<double> at_end;     // … at k = L
+  std::optional<double> at_half;  // fraction of trials in M* at k = L/2
+  std::optional<double> at_end;   // … at k = L
   std::string note;
 };
 const std::vector<PaperOwnership>& paperOwnership();

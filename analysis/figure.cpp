@@ -15,10 +15,14 @@ std::string rgb(const Colour& c) {
 std::string escaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
   }
   return out;
 }
@@ -41,15 +45,17 @@ std::string toSvg(const Figure& figure) {
       svg << "<polygon points=\"" << points(p->points) << "\" fill=\"" << rgb(p->fill)
           << "\" fill-opacity=\"" << p->fill.alpha << "\"/>\n";
     } else if (const auto* l = std::get_if<Line>(&shape)) {
-      svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\"" << rgb(l->colour)
-          << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\"" << l->width
-          << "\" stroke-linejoin=\"round\"/>\n";
+      svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\""
+          << rgb(l->colour) << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\""
+          << l->width << "\" stroke-linejoin=\"round\"/>\n";
     } else if (const auto* t = std::get_if<Label>(&shape)) {
-      const char* anchor = t->anchor == Anchor::start ? "start" : t->anchor == Anchor::middle ? "middle" : "end";
+      const char* anchor = t->anchor == Anchor::start    ? "start"
+                           : t->anchor == Anchor::middle ? "middle"
+                                                         : "end";
       // A capital letter is about 0.7 em high in sans-serif fonts.
-      svg << "<text x=\"" << t->at.x() << "\" y=\"" << t->at.y() << "\" font-family=\"sans-serif\" font-size=\""
-          << t->size / 0.7 << "\" text-anchor=\"" << anchor << "\" fill=\"" << rgb(t->colour) << "\">"
-          << escaped(t->text) << "</text>\n";
+      svg << "<text x=\"" << t->at.x() << "\" y=\"" << t->at.y()
+          << "\" font-family=\"sans-serif\" font-size=\"" << t->size / 0.7 << "\" text-anchor=\""
+          << anchor << "\" fill=\"" << rgb(t->colour) << "\">" << escaped(t->text) << "</text>\n";
     }
   }
   svg << "</svg>\n";
@@ -57,8 +63,9 @@ std::string toSvg(const Figure& figure) {
 }
 
 Colour seriesColour(int index) {
-  static const Colour kColours[] = {{31, 119, 180},  {214, 39, 40},  {44, 160, 44},   {255, 127, 14},
-                                    {148, 103, 189}, {23, 190, 207}, {140, 86, 75},   {227, 119, 194}};
+  static const Colour kColours[] = {{31, 119, 180}, {214, 39, 40},   {44, 160, 44},
+                                    {255, 127, 14}, {148, 103, 189}, {23, 190, 207},
+                                    {140, 86, 75},  {227, 119, 194}};
   return kColours[index % 8];
 }
 

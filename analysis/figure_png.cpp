@@ -11,11 +11,14 @@ namespace canopy::analysis {
 namespace {
 
 render::Rgba rgba(const Colour& c) {
-  return {c.r, c.g, c.b, static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(c.alpha, 0.0, 1.0)))};
+  return {c.r, c.g, c.b,
+          static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(c.alpha, 0.0, 1.0)))};
 }
 // Figure pixels (y down) as renderer world coordinates under a 1 px = 1 unit viewport whose
 // top-left corner is the origin: world y = −pixel y.
-Vec2 world(const Vec2& p) { return {p.x(), -p.y()}; }
+Vec2 world(const Vec2& p) {
+  return {p.x(), -p.y()};
+}
 
 }  // namespace
 
@@ -41,7 +44,9 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
       render::Text text;
       text.scale = t->size / 7.0;  // a capital letter is 7 font units high
       const double width = render::textWidthPx(t->text, text.scale);
-      const double shift = t->anchor == Anchor::start ? 0.0 : t->anchor == Anchor::middle ? width / 2 : width;
+      const double shift = t->anchor == Anchor::start    ? 0.0
+                           : t->anchor == Anchor::middle ? width / 2
+                                                         : width;
       text.at = t->at - Vec2(shift, t->size);  // the label's top-left corner
       text.text = t->text;
       text.colour = rgba(t->colour);

@@ -24,7 +24,8 @@ void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill)
 
 // A band from the vertical edge (x0, [a0, b0]) to (x1, [a1, b1]) along a smoothstep, as convex
 // quads.
-void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, double b1, Colour fill) {
+void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, double b1,
+             Colour fill) {
   constexpr int kSegments = 24;
   auto at = [&](int i) {
     const double u = static_cast<double>(i) / kSegments;
@@ -33,7 +34,8 @@ void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, d
   };
   for (int i = 0; i < kSegments; ++i) {
     const auto p = at(i), q = at(i + 1);
-    f.shapes.push_back(FilledPolygon{{Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])}, fill});
+    f.shapes.push_back(FilledPolygon{
+        {Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])}, fill});
   }
 }
 
@@ -44,7 +46,8 @@ Colour stateColour(const ConfigStatistics& stats, int index) {
   if (name == "Miss 1") return {253, 141, 60};
   if (name == "Miss >1") return {215, 48, 39};
   if (name == "Other") return {150, 150, 150};
-  static const Colour kNamed[] = {{49, 130, 189}, {49, 163, 84}, {117, 107, 177}, {23, 190, 207}, {140, 86, 75}};
+  static const Colour kNamed[] = {
+      {49, 130, 189}, {49, 163, 84}, {117, 107, 177}, {23, 190, 207}, {140, 86, 75}};
   return kNamed[index % 5];
 }
 
@@ -81,13 +84,15 @@ Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
     std::vector<double> out_y(node_top[g]), in_y(node_top[g + 1]);
     const double scale_out = [&] {
       for (int s = 0; s < n_states; ++s) {
-        if (stats.state_counts[g][s]) return (node_bottom[g][s] - node_top[g][s]) / stats.state_counts[g][s];
+        if (stats.state_counts[g][s])
+          return (node_bottom[g][s] - node_top[g][s]) / stats.state_counts[g][s];
       }
       return 0.0;
     }();
     const double scale_in = [&] {
       for (int s = 0; s < n_states; ++s) {
-        if (stats.state_counts[g + 1][s]) return (node_bottom[g + 1][s] - node_top[g + 1][s]) / stats.state_counts[g + 1][s];
+        if (stats.state_counts[g + 1][s])
+          return (node_bottom[g + 1][s] - node_top[g + 1][s]) / stats.state_counts[g + 1][s];
       }
       return 0.0;
     }();
@@ -101,7 +106,8 @@ Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
         Colour fill = stateColour(stats, a);
         fill.alpha = 0.45;
         addBand(f, x[g] + node_w, out_y[a], out_y[a] + count * scale_out, x[g + 1],
-                node_top[g + 1][b] + in_offset, node_top[g + 1][b] + in_offset + count * scale_in, fill);
+                node_top[g + 1][b] + in_offset, node_top[g + 1][b] + in_offset + count * scale_in,
+                fill);
         out_y[a] += count * scale_out;
       }
     }
@@ -112,49 +118,61 @@ Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
       if (stats.state_counts[c][s] == 0) continue;
       addRect(f, x[c], node_top[c][s], x[c] + node_w, node_bottom[c][s], stateColour(stats, s));
       const double fraction = static_cast<double>(stats.state_counts[c][s]) / stats.trials;
-      f.shapes.push_back(Label{Vec2(x[c] + node_w + 4, 0.5 * (node_top[c][s] + node_bottom[c][s]) + 4),
-                               percent(fraction), 9, Anchor::start, kInk});
+      f.shapes.push_back(
+          Label{Vec2(x[c] + node_w + 4, 0.5 * (node_top[c][s] + node_bottom[c][s]) + 4),
+                percent(fraction), 9, Anchor::start, kInk});
     }
     char caption[48];
-    std::snprintf(caption, sizeof caption, "%s (%.1f s)", kColumnNames[c], stats.columns[c] * stats.dt);
-    f.shapes.push_back(Label{Vec2(x[c] + node_w / 2, f.height - bottom + 28), caption, 10, Anchor::middle, kInk});
+    std::snprintf(caption, sizeof caption, "%s (%.1f s)", kColumnNames[c],
+                  stats.columns[c] * stats.dt);
+    f.shapes.push_back(
+        Label{Vec2(x[c] + node_w / 2, f.height - bottom + 28), caption, 10, Anchor::middle, kInk});
   }
   double legend_y = top + 10;
   for (int s = 0; s < n_states; ++s) {
-    addRect(f, f.width - right + 30, legend_y - 10, f.width - right + 42, legend_y + 2, stateColour(stats, s));
-    f.shapes.push_back(Label{Vec2(f.width - right + 50, legend_y), stats.states[s], 10, Anchor::start, kInk});
+    addRect(f, f.width - right + 30, legend_y - 10, f.width - right + 42, legend_y + 2,
+            stateColour(stats, s));
+    f.shapes.push_back(
+        Label{Vec2(f.width - right + 50, legend_y), stats.states[s], 10, Anchor::start, kInk});
     legend_y += 22;
   }
   char trials[32];
   std::snprintf(trials, sizeof trials, "%d trials", stats.trials);
-  f.shapes.push_back(Label{Vec2(f.width - right + 30, legend_y + 10), trials, 9, Anchor::start, kInk});
+  f.shapes.push_back(
+      Label{Vec2(f.width - right + 30, legend_y + 10), trials, 9, Anchor::start, kInk});
   return f;
 }
 
-Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs, const std::vector<std::string>& labels,
+Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
+                      const std::vector<std::string>& labels,
                       const std::vector<std::string>& target_names, const std::string& title) {
   Figure f;
   const int panels = static_cast<int>(target_names.size());
   const double left = 70, right = 30, panel_h = 170, panel_gap = 45, legend_row = 18;
-  const double top = 75 + legend_row * static_cast<double>(configs.size());  // legend above the panels
+  const double top =
+      75 + legend_row * static_cast<double>(configs.size());  // legend above the panels
   f.width = 900;
   f.height = static_cast<int>(top + panels * (panel_h + panel_gap) + 20);
   f.shapes.push_back(Label{Vec2(f.width / 2.0, 30), title, 14, Anchor::middle, kInk});
   for (std::size_t c = 0; c < configs.size(); ++c) {  // one legend row per configuration
     const double ly = 55 + legend_row * static_cast<double>(c);
-    f.shapes.push_back(Line{{Vec2(left, ly), Vec2(left + 30, ly)}, 3, seriesColour(static_cast<int>(c))});
+    f.shapes.push_back(
+        Line{{Vec2(left, ly), Vec2(left + 30, ly)}, 3, seriesColour(static_cast<int>(c))});
     f.shapes.push_back(Label{Vec2(left + 38, ly + 5), labels[c], 10, Anchor::start, kInk});
   }
-  f.shapes.push_back(FilledPolygon{{Vec2(f.width - 250.0, 48), Vec2(f.width - 220.0, 48), Vec2(f.width - 220.0, 62),
-                                    Vec2(f.width - 250.0, 62)}, kShade});
-  f.shapes.push_back(Label{Vec2(f.width - 212.0, 60), "target under a crown", 10, Anchor::start, kInk});
+  f.shapes.push_back(FilledPolygon{{Vec2(f.width - 250.0, 48), Vec2(f.width - 220.0, 48),
+                                    Vec2(f.width - 220.0, 62), Vec2(f.width - 250.0, 62)},
+                                   kShade});
+  f.shapes.push_back(
+      Label{Vec2(f.width - 212.0, 60), "target under a crown", 10, Anchor::start, kInk});
   if (configs.empty() || configs.front()->coverage.empty()) return f;
   const int steps = static_cast<int>(configs.front()->coverage.front().size());
   const double dt = configs.front()->dt;
   const double t_end = (steps - 1) * dt;
   double y_max = 1.0;
   for (const ConfigStatistics* c : configs) {
-    for (const auto& curve : c->coverage) y_max = std::max(y_max, *std::max_element(curve.begin(), curve.end()));
+    for (const auto& curve : c->coverage)
+      y_max = std::max(y_max, *std::max_element(curve.begin(), curve.end()));
   }
   y_max = std::ceil(y_max * 2.0) / 2.0;  // to the next 0.5
   const double plot_w = f.width - left - right;
@@ -181,11 +199,13 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs, const
       f.shapes.push_back(Label{px(time, 0) + Vec2(0, 16), text, 9, Anchor::middle, kInk});
     }
     f.shapes.push_back(Line{{px(0, y_max), px(0, 0), px(t_end, 0)}, 1.5, kInk});
-    f.shapes.push_back(Label{Vec2(left, y0 - 8), "trajectory " + target_names[t] + ": mean number of footprints",
-                             10, Anchor::start, kInk});
+    f.shapes.push_back(Label{Vec2(left, y0 - 8),
+                             "trajectory " + target_names[t] + ": mean number of footprints", 10,
+                             Anchor::start, kInk});
     for (std::size_t c = 0; c < configs.size(); ++c) {
       Line curve{{}, 2.5, seriesColour(static_cast<int>(c))};
-      for (int k = 0; k < steps; ++k) curve.points.push_back(px(k * dt, configs[c]->coverage[t][k]));
+      for (int k = 0; k < steps; ++k)
+        curve.points.push_back(px(k * dt, configs[c]->coverage[t][k]));
       f.shapes.push_back(std::move(curve));
     }
   }

@@ -17,8 +17,8 @@ struct ExperimentResult {
 };
 
 struct ReportContext {
-  int trials = 0;           // per configuration
-  std::uint64_t seed = 0;   // the sweeps' seed
+  int trials = 0;          // per configuration
+  std::uint64_t seed = 0;  // the sweeps' seed
   int jobs = 1;
   double wall_seconds = 0;  // of the whole reproduction (sweeps run now, analysis, figures)
   int trials_run = 0;       // trials run now (the rest were resumed from disk)
@@ -27,6 +27,7 @@ struct ReportContext {
 /// Mean of `curve` over the inclusive steps of `hidden`.
 double meanOver(const std::vector<double>& curve, const Interval& hidden);
 
-std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& context);
+std::string reportMarkdown(const std::vector<ExperimentResult>& results,
+                           const ReportContext& context);
 
 }  // namespace canopy::analysis

@@ -18,8 +18,10 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
   for (std::size_t c = 0; c < results.configs.size(); ++c) {
     if (results.trials[c].empty()) continue;
     const scenarios::SweepConfig& config = results.configs[c];
-    analysis.specs.push_back(scenarios::loadScenario(results.sweep.scenario, {config.overrides, std::nullopt}));
-    analysis.configs.push_back(summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
+    analysis.specs.push_back(
+        scenarios::loadScenario(results.sweep.scenario, {config.overrides, std::nullopt}));
+    analysis.configs.push_back(
+        summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
   }
   return analysis;
 }
@@ -33,19 +35,27 @@ std::ofstream openCsv(const fs::path& path, const char* header) {
   return out;
 }
 
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+std::string quoted(const std::string& text) {
+  return "\"" + text + "\"";
+}
 
 }  // namespace
 
 void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
   fs::create_directories(out_dir);
-  auto states = openCsv(out_dir / "ownership_states.csv", "config,column,step,t_s,state,trials,fraction");
-  auto flows = openCsv(out_dir / "ownership_flows.csv", "config,from_column,to_column,from_state,to_state,trials");
-  auto changes = openCsv(out_dir / "ownership_changes.csv", "config,from_uav,to_uav,target,trials,fraction");
+  auto states =
+      openCsv(out_dir / "ownership_states.csv", "config,column,step,t_s,state,trials,fraction");
+  auto flows = openCsv(out_dir / "ownership_flows.csv",
+                       "config,from_column,to_column,from_state,to_state,trials");
+  auto changes =
+      openCsv(out_dir / "ownership_changes.csv", "config,from_uav,to_uav,target,trials,fraction");
   auto aware = openCsv(out_dir / "occlusion_aware.csv",
-                       "config,target,hidden_from_s,hidden_to_s,trials,p_aware,trials_with_event,p_aware_given_event");
-  auto coverage = openCsv(out_dir / "coverage.csv", "config,target,step,t_s,mean_coverage,occluded");
-  auto tracking = openCsv(out_dir / "tracking.csv", "config,step,t_s,mean_ospa_m,mean_trace_pos_m2");
+                       "config,target,hidden_from_s,hidden_to_s,trials,p_aware,trials_with_event,p_"
+                       "aware_given_event");
+  auto coverage =
+      openCsv(out_dir / "coverage.csv", "config,target,step,t_s,mean_coverage,occluded");
+  auto tracking =
+      openCsv(out_dir / "tracking.csv", "config,step,t_s,mean_ospa_m,mean_trace_pos_m2");
 
   for (std::size_t c = 0; c < analysis.configs.size(); ++c) {
     const ConfigStatistics& s = analysis.configs[c];
@@ -62,21 +72,23 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
       for (std::size_t a = 0; a < s.states.size(); ++a) {
         for (std::size_t b = 0; b < s.states.size(); ++b) {
           if (s.flows[g][a][b] == 0) continue;
-          flows << id << ',' << g << ',' << g + 1 << ',' << quoted(s.states[a]) << ',' << quoted(s.states[b])
-                << ',' << s.flows[g][a][b] << '\n';
+          flows << id << ',' << g << ',' << g + 1 << ',' << quoted(s.states[a]) << ','
+                << quoted(s.states[b]) << ',' << s.flows[g][a][b] << '\n';
         }
       }
     }
     for (const ChangeCount& change : s.changes) {
       changes << id << ',' << quoted(spec.uavs[change.change.from].name) << ','
-              << quoted(spec.uavs[change.change.to].name) << ',' << quoted(spec.targets[change.change.target].name)
-              << ',' << change.trials << ',' << static_cast<double>(change.trials) / s.trials << '\n';
+              << quoted(spec.uavs[change.change.to].name) << ','
+              << quoted(spec.targets[change.change.target].name) << ',' << change.trials << ','
+              << static_cast<double>(change.trials) / s.trials << '\n';
     }
-    std::vector<std::vector<bool>> occluded(spec.targets.size(), std::vector<bool>(s.ospa.size(), false));
+    std::vector<std::vector<bool>> occluded(spec.targets.size(),
+                                            std::vector<bool>(s.ospa.size(), false));
     for (const OcclusionStatistics& o : s.occlusions) {
-      aware << id << ',' << quoted(spec.targets[o.target].name) << ',' << o.hidden.first * s.dt << ','
-            << o.hidden.last * s.dt << ',' << o.trials << ',' << o.pAware() << ',' << o.with_event << ','
-            << o.pAwareGivenEvent() << '\n';
+      aware << id << ',' << quoted(spec.targets[o.target].name) << ',' << o.hidden.first * s.dt
+            << ',' << o.hidden.last * s.dt << ',' << o.trials << ',' << o.pAware() << ','
+            << o.with_event << ',' << o.pAwareGivenEvent() << '\n';
       for (int k = o.hidden.first; k <= o.hidden.last; ++k) occluded[o.target][k] = true;
     }
     for (std::size_t t = 0; t < s.coverage.size(); ++t) {
@@ -86,7 +98,8 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
       }
     }
     for (int k = 0; k < static_cast<int>(s.ospa.size()); ++k) {
-      tracking << id << ',' << k << ',' << k * s.dt << ',' << s.ospa[k] << ',' << s.trace[k] << '\n';
+      tracking << id << ',' << k << ',' << k * s.dt << ',' << s.ospa[k] << ',' << s.trace[k]
+               << '\n';
     }
   }
 }
@@ -113,7 +126,8 @@ void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
   if (!analysis.specs.empty()) {
     std::vector<std::string> targets;
     for (const auto& target : analysis.specs.front().targets) targets.push_back(target.name);
-    write(out_dir / "coverage", coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"));
+    write(out_dir / "coverage",
+          coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"));
   }
 }
 

@@ -11,9 +11,9 @@
 namespace canopy::analysis {
 
 struct SweepAnalysis {
-  std::string name;                        // the sweep's name
+  std::string name;                            // the sweep's name
   std::vector<scenarios::ScenarioSpec> specs;  // per configuration
-  std::vector<ConfigStatistics> configs;   // per configuration, in sweep order (those with trials)
+  std::vector<ConfigStatistics> configs;  // per configuration, in sweep order (those with trials)
 };
 
 /// Loads every finished trial of the sweep in `sweep_dir` and summarises each configuration.

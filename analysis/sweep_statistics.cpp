@@ -40,14 +40,16 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
   stats.ospa.assign(steps, 0.0);
   stats.trace.assign(steps, 0.0);
   auto stateIndex = [&](const std::string& s) {
-    return static_cast<std::size_t>(std::find(stats.states.begin(), stats.states.end(), s) - stats.states.begin());
+    return static_cast<std::size_t>(std::find(stats.states.begin(), stats.states.end(), s) -
+                                    stats.states.begin());
   };
   const double n = static_cast<double>(trials.size());
 
   for (const scenarios::TrialResult& trial : trials) {
     const TrialBehaviour b = analyseTrial(trial, spec);
     for (int c = 0; c < 5; ++c) ++stats.state_counts[c][stateIndex(b.states[c])];
-    for (int g = 0; g < 4; ++g) ++stats.flows[g][stateIndex(b.states[g])][stateIndex(b.states[g + 1])];
+    for (int g = 0; g < 4; ++g)
+      ++stats.flows[g][stateIndex(b.states[g])][stateIndex(b.states[g + 1])];
     for (const OwnershipChange& change : b.changes) {
       auto it = std::find_if(stats.changes.begin(), stats.changes.end(),
                              [&](const ChangeCount& c) { return c.change == change; });
@@ -55,9 +57,10 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
       ++it->trials;
     }
     for (const OcclusionEpisode& e : b.occlusions) {
-      auto it = std::find_if(stats.occlusions.begin(), stats.occlusions.end(), [&](const OcclusionStatistics& o) {
-        return o.target == e.target && o.hidden == e.hidden;
-      });
+      auto it = std::find_if(stats.occlusions.begin(), stats.occlusions.end(),
+                             [&](const OcclusionStatistics& o) {
+                               return o.target == e.target && o.hidden == e.hidden;
+                             });
       if (it == stats.occlusions.end()) {
         it = stats.occlusions.insert(stats.occlusions.end(), OcclusionStatistics{});
         it->target = e.target;
@@ -76,12 +79,15 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
       stats.trace[k] += trial.trace[k] / n;
     }
   }
-  std::sort(stats.changes.begin(), stats.changes.end(), [](const ChangeCount& a, const ChangeCount& b) {
-    return std::tie(a.change.from, a.change.to, a.change.target) < std::tie(b.change.from, b.change.to, b.change.target);
-  });
-  std::sort(stats.occlusions.begin(), stats.occlusions.end(), [](const OcclusionStatistics& a, const OcclusionStatistics& b) {
-    return std::tie(a.target, a.hidden.first) < std::tie(b.target, b.hidden.first);
-  });
+  std::sort(stats.changes.begin(), stats.changes.end(),
+            [](const ChangeCount& a, const ChangeCount& b) {
+              return std::tie(a.change.from, a.change.to, a.change.target) <
+                     std::tie(b.change.from, b.change.to, b.change.target);
+            });
+  std::sort(stats.occlusions.begin(), stats.occlusions.end(),
+            [](const OcclusionStatistics& a, const OcclusionStatistics& b) {
+              return std::tie(a.target, a.hidden.first) < std::tie(b.target, b.hidden.first);
+            });
   return stats;
 }
 

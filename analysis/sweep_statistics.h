@@ -14,13 +14,15 @@ namespace canopy::analysis {
 
 struct OcclusionStatistics {
   int target = 0;
-  Interval hidden;             // steps
-  int trials = 0;              // trials with this interval
-  int aware = 0;               // … judged Occlusion_Aware
-  int with_event = 0;          // … where the hiding tree was seen before the window (event e)
+  Interval hidden;     // steps
+  int trials = 0;      // trials with this interval
+  int aware = 0;       // … judged Occlusion_Aware
+  int with_event = 0;  // … where the hiding tree was seen before the window (event e)
   int aware_with_event = 0;
   double pAware() const { return trials ? static_cast<double>(aware) / trials : 0.0; }
-  double pAwareGivenEvent() const { return with_event ? static_cast<double>(aware_with_event) / with_event : 0.0; }
+  double pAwareGivenEvent() const {
+    return with_event ? static_cast<double>(aware_with_event) / with_event : 0.0;
+  }
 };
 
 struct ChangeCount {
@@ -29,14 +31,14 @@ struct ChangeCount {
 };
 
 struct ConfigStatistics {
-  std::string id;                          // the sweep configuration
-  std::vector<std::string> overrides;      // its --set values
+  std::string id;                      // the sweep configuration
+  std::vector<std::string> overrides;  // its --set values
   int trials = 0;
-  double dt = 0.2;                         // s
-  std::array<int, 5> columns{};            // steps of the Sankey columns
-  std::vector<std::string> states;         // named states, then "Miss 1", "Miss >1", "Other"
-  std::array<std::vector<int>, 5> state_counts;            // [column][state]
-  std::array<std::vector<std::vector<int>>, 4> flows;      // [gap][from][to] trial counts
+  double dt = 0.2;                               // s
+  std::array<int, 5> columns{};                  // steps of the Sankey columns
+  std::vector<std::string> states;               // named states, then "Miss 1", "Miss >1", "Other"
+  std::array<std::vector<int>, 5> state_counts;  // [column][state]
+  std::array<std::vector<std::vector<int>>, 4> flows;  // [gap][from][to] trial counts
   std::vector<ChangeCount> changes;
   std::vector<OcclusionStatistics> occlusions;
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t

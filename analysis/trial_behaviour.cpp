@@ -24,12 +24,14 @@ int hidingTree(const scenarios::ScenarioSpec& spec, int target, int step) {
 
 }  // namespace
 
-TrialBehaviour analyseTrial(const scenarios::TrialResult& trial, const scenarios::ScenarioSpec& spec) {
+TrialBehaviour analyseTrial(const scenarios::TrialResult& trial,
+                            const scenarios::ScenarioSpec& spec) {
   TrialBehaviour out;
   const int K = trial.steps() - 1;
   const SetHistory M = mOwnership(trial.visible, spec.analysis.m);
   const std::array<int, 5> columns = sankeyColumns(K);
-  for (int c = 0; c < 5; ++c) out.states[c] = ownershipState(M[columns[c]], spec.analysis.states, trial.targets);
+  for (int c = 0; c < 5; ++c)
+    out.states[c] = ownershipState(M[columns[c]], spec.analysis.states, trial.targets);
   out.changes = ownershipChanges(M, 0, K, trial.targets);
 
   const int margin = static_cast<int>(std::lround(spec.analysis.oa_margin / trial.dt));
@@ -42,7 +44,8 @@ TrialBehaviour analyseTrial(const scenarios::TrialResult& trial, const scenarios
       episode.h = std::min({margin, hidden.first, K - hidden.last});
       episode.k0 = hidden.first - episode.h;
       episode.L = hidden.last - hidden.first + 2 * episode.h;
-      episode.aware = occlusionAware(M, trial.in_footprint, trial.occluded, t, episode.k0, episode.L, episode.h);
+      episode.aware = occlusionAware(M, trial.in_footprint, trial.occluded, t, episode.k0,
+                                     episode.L, episode.h);
       episode.tree = hidingTree(spec, t, hidden.first);
       if (episode.tree >= 0) {
         const int seen = trial.tree_first_seen[episode.tree];

@@ -45,10 +45,12 @@ int reproduceCommand(Args& args) {
   context.seed = seed;
   context.jobs = jobs;
   context.trials_run = ran;
-  context.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  context.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path report = std::filesystem::path(out) / "report.md";
   std::ofstream(report) << analysis::reportMarkdown(results, context);
-  std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds, report.string().c_str());
+  std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds,
+              report.string().c_str());
   return kExitOk;
 }
 

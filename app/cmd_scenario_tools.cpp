@@ -54,7 +54,8 @@ int forestCommand(Args& args) {
     if (arg == "--aoi") {
       const std::vector<double> v = args.listValue(arg, 4);
       def.region = {Vec2(v[0], v[1]), Vec2(v[2], v[3])};
-      if (!(v[2] > v[0] && v[3] > v[1])) usageError(arg, "expected x0,y0,x1,y1 with x1 > x0 and y1 > y0");
+      if (!(v[2] > v[0] && v[3] > v[1]))
+        usageError(arg, "expected x0,y0,x1,y1 with x1 > x0 and y1 > y0");
       has_aoi = true;
     } else if (arg == "--lambda") {
       def.lambda = args.doubleValue(arg);
@@ -65,7 +66,8 @@ int forestCommand(Args& args) {
       const auto comma = text.find(',');
       char* end = nullptr;
       def.radius.lo = std::strtod(text.c_str(), &end);
-      def.radius.hi = comma == std::string::npos ? def.radius.lo : std::strtod(text.c_str() + comma + 1, &end);
+      def.radius.hi =
+          comma == std::string::npos ? def.radius.lo : std::strtod(text.c_str() + comma + 1, &end);
       if (!(def.radius.lo > 0.0) || def.radius.hi < def.radius.lo || *end != '\0') {
         usageError(arg, "expected a positive radius R or a range R_MIN,R_MAX, got '" + text + "'");
       }
@@ -82,12 +84,15 @@ int forestCommand(Args& args) {
   if (!has_aoi || !has_lambda || !has_radius) {
     usageError("forest", "expected --aoi, --lambda and --radius");
   }
-  if (def.lambda * def.region.area() > 2e6) usageError("--lambda", "expected at most 2 million trees");
+  if (def.lambda * def.region.area() > 2e6)
+    usageError("--lambda", "expected at most 2 million trees");
   using Json = nlohmann::json;
   const std::vector<world::TreeDef> trees = scenarios::poissonForest(def);
   Json occluders = Json::array();
   for (const world::TreeDef& tree : trees) {
-    occluders.push_back({{"type", "disc"}, {"centre", {tree.centre.x(), tree.centre.y()}}, {"radius", tree.radius}});
+    occluders.push_back({{"type", "disc"},
+                         {"centre", {tree.centre.x(), tree.centre.y()}},
+                         {"radius", tree.radius}});
   }
   char description[256];
   std::snprintf(description, sizeof description,

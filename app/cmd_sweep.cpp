@@ -18,7 +18,8 @@ class ProgressBar {
   explicit ProgressBar(std::string label) : label_(std::move(label)), tty_(isatty(STDERR_FILENO)) {}
   void update(const scenarios::SweepProgress& p) {
     if (p.total == 0) return;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const int ran = p.done - p.resumed;
     const double rate = elapsed > 0 ? ran / elapsed : 0.0;
     const double eta = rate > 0 ? (p.total - p.done) / rate : 0.0;
@@ -29,8 +30,9 @@ class ProgressBar {
     const int filled = 30 * p.done / p.total;
     for (int i = 0; i < 30; ++i) bar[i] = i < filled ? '#' : '.';
     bar[30] = '\0';
-    std::fprintf(stderr, "%s%s [%s] %d/%d trials (%d resumed), %.1f trials/s, ETA %.0f s%s", tty_ ? "\r" : "",
-                 label_.c_str(), bar, p.done, p.total, p.resumed, rate, eta, tty_ && p.done < p.total ? "" : "\n");
+    std::fprintf(stderr, "%s%s [%s] %d/%d trials (%d resumed), %.1f trials/s, ETA %.0f s%s",
+                 tty_ ? "\r" : "", label_.c_str(), bar, p.done, p.total, p.resumed, rate, eta,
+                 tty_ && p.done < p.total ? "" : "\n");
   }
 
  private:
@@ -40,13 +42,17 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-int defaultJobs() { return std::max(1u, std::thread::hardware_concurrency()); }
+int defaultJobs() {
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 }  // namespace
 
-int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs) {
+int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
+                         int jobs) {
   ProgressBar bar(sweep.name);
-  return scenarios::runSweep(sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
+  return scenarios::runSweep(
+      sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
 }
 
 int sweepCommand(Args& args) {
@@ -70,8 +76,10 @@ int sweepCommand(Args& args) {
   const scenarios::SweepSpec sweep = scenarios::loadSweep(file);
   const auto start = std::chrono::steady_clock::now();
   const int ran = runSweepWithProgress(sweep, out, jobs);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n", sweep.name.c_str(), ran, seconds, jobs, out.c_str());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n", sweep.name.c_str(), ran,
+              seconds, jobs, out.c_str());
   return kExitOk;
 }
 
@@ -98,7 +106,8 @@ int analyzeCommand(Args& args) {
     std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {
       if (config.state_counts[4][i] > 0) {
-        std::printf("  %s %.0f%%", config.states[i].c_str(), 100.0 * config.state_counts[4][i] / config.trials);
+        std::printf("  %s %.0f%%", config.states[i].c_str(),
+                    100.0 * config.state_counts[4][i] / config.trials);
       }
     }
     std::printf("\n");

@@ -20,7 +20,7 @@ using namespace canopy;
 constexpr int kUavs = 16;
 constexpr int kTargetsPerUav = 4;
 constexpr double kDensity = 0.01;  // trees per m² in BM_WorldStepAndSense
-constexpr double kDt = 0.2;       // s
+constexpr double kDt = 0.2;        // s
 
 // A target walking around a circle of radius 15 m at 1.2 m/s, sampled as timed waypoints.
 world::Path circlingPath(const Vec2& centre, double phase) {
@@ -51,7 +51,8 @@ world::WorldDef makeWorld(double side, double trees_per_m2) {
 }
 
 void runTicks(benchmark::State& state, world::World& world) {
-  const sensing::SensorDef sensor{{sensing::FootprintShape::rectangle, Vec2(20, 20), 0.0}, {0.3, 2.0}};
+  const sensing::SensorDef sensor{{sensing::FootprintShape::rectangle, Vec2(20, 20), 0.0},
+                                  {0.3, 2.0}};
   const sensing::SensingConfig config;
   const std::vector<sensing::LabelId> labels(kUavs * kTargetsPerUav, 1);
   std::vector<RandomStream> rng;
@@ -62,7 +63,8 @@ void runTicks(benchmark::State& state, world::World& world) {
   for (auto _ : state) {
     // UAVs circle at 4 m/s so every body moves every step.
     const double a = 0.05 * static_cast<double>(k++);
-    for (int i = 0; i < kUavs; ++i) world.commandUav(i, 4.0 * Vec2(std::cos(a + i), std::sin(a + i)));
+    for (int i = 0; i < kUavs; ++i)
+      world.commandUav(i, 4.0 * Vec2(std::cos(a + i), std::sin(a + i)));
     world.step(kDt);
     const world::WorldSnapshot truth = world.snapshot();
     for (int i = 0; i < kUavs; ++i) {
@@ -73,7 +75,8 @@ void runTicks(benchmark::State& state, world::World& world) {
   }
   state.counters["trees"] = static_cast<double>(world.trees().size());
   state.counters["visible_per_tick"] = static_cast<double>(visible) / static_cast<double>(k);
-  state.counters["observations_per_tick"] = static_cast<double>(observations) / static_cast<double>(k);
+  state.counters["observations_per_tick"] =
+      static_cast<double>(observations) / static_cast<double>(k);
 }
 void BM_WorldStepAndSense(benchmark::State& state) {
   const double trees = static_cast<double>(state.range(0));

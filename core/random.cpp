@@ -13,7 +13,9 @@ std::uint64_t splitMix64(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+std::uint64_t rotl(std::uint64_t x, int k) {
+  return (x << k) | (x >> (64 - k));
+}
 
 }  // namespace
 
@@ -26,7 +28,8 @@ std::uint64_t fnv1a64(std::string_view text) {
   return h;
 }
 
-RandomStream::RandomStream(std::uint64_t trial_seed, std::string_view purpose, std::uint64_t index) {
+RandomStream::RandomStream(std::uint64_t trial_seed, std::string_view purpose,
+                           std::uint64_t index) {
   std::uint64_t state = trial_seed;
   state ^= splitMix64(state) ^ fnv1a64(purpose);
   state ^= splitMix64(state) ^ (index * 0xd1b54a32d192ed03ULL);
@@ -45,9 +48,13 @@ std::uint64_t RandomStream::nextU64() {
   return result;
 }
 
-double RandomStream::uniform() { return static_cast<double>(nextU64() >> 11) * 0x1.0p-53; }
+double RandomStream::uniform() {
+  return static_cast<double>(nextU64() >> 11) * 0x1.0p-53;
+}
 
-double RandomStream::uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+double RandomStream::uniform(double lo, double hi) {
+  return lo + (hi - lo) * uniform();
+}
 
 double RandomStream::normal() {
   if (has_spare_normal_) {
@@ -66,7 +73,9 @@ double RandomStream::normal() {
   return u * scale;
 }
 
-double RandomStream::exponential(double rate) { return -std::log1p(-uniform()) / rate; }
+double RandomStream::exponential(double rate) {
+  return -std::log1p(-uniform()) / rate;
+}
 
 int RandomStream::poisson(double mean) {
   if (!(mean > 0.0)) return 0;
@@ -76,7 +85,9 @@ int RandomStream::poisson(double mean) {
   return count;
 }
 
-bool RandomStream::bernoulli(double p) { return uniform() < p; }
+bool RandomStream::bernoulli(double p) {
+  return uniform() < p;
+}
 
 Vec2 RandomStream::gaussian(const Mat2& covariance) {
   const Vec2 w(normal(), normal());

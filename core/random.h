@@ -17,13 +17,13 @@ class RandomStream {
   RandomStream(std::uint64_t trial_seed, std::string_view purpose, std::uint64_t index = 0);
 
   std::uint64_t nextU64();
-  double uniform();                                 // [0, 1), 53 random bits
-  double uniform(double lo, double hi);             // [lo, hi)
-  double normal();                                  // N(0, 1), Marsaglia's polar method
-  double exponential(double rate);                  // Exp(rate), mean 1/rate
-  int poisson(double mean);                         // exact: counts Exp(mean) arrivals in [0, 1)
-  bool bernoulli(double p);                         // true with probability p
-  Vec2 gaussian(const Mat2& covariance);            // N(0, covariance), via Cholesky (LDLᵀ if singular)
+  double uniform();                       // [0, 1), 53 random bits
+  double uniform(double lo, double hi);   // [lo, hi)
+  double normal();                        // N(0, 1), Marsaglia's polar method
+  double exponential(double rate);        // Exp(rate), mean 1/rate
+  int poisson(double mean);               // exact: counts Exp(mean) arrivals in [0, 1)
+  bool bernoulli(double p);               // true with probability p
+  Vec2 gaussian(const Mat2& covariance);  // N(0, covariance), via Cholesky (LDLᵀ if singular)
 
  private:
   std::uint64_t s_[4];

@@ -4,12 +4,12 @@
 
 namespace canopy {
 
-using Vec2 = Eigen::Vector2d;                // position or velocity in the plane (m, m/s)
-using Mat2 = Eigen::Matrix2d;                // 2x2 covariance (m²)
-using Vec4 = Eigen::Matrix<double, 4, 1>;    // target state ξ = (px, py, vx, vy)
-using Mat4 = Eigen::Matrix<double, 4, 4>;    // 4x4 state covariance
-using Mat24 = Eigen::Matrix<double, 2, 4>;   // H_obs = [I₂ 0]
-using Mat42 = Eigen::Matrix<double, 4, 2>;   // Kalman gain
+using Vec2 = Eigen::Vector2d;               // position or velocity in the plane (m, m/s)
+using Mat2 = Eigen::Matrix2d;               // 2x2 covariance (m²)
+using Vec4 = Eigen::Matrix<double, 4, 1>;   // target state ξ = (px, py, vx, vy)
+using Mat4 = Eigen::Matrix<double, 4, 4>;   // 4x4 state covariance
+using Mat24 = Eigen::Matrix<double, 2, 4>;  // H_obs = [I₂ 0]
+using Mat42 = Eigen::Matrix<double, 4, 2>;  // Kalman gain
 
 /// Axis-aligned box [lo, hi] (m).
 struct Aabb {

@@ -1,6 +1,6 @@
 #include "render/image.h"
 
-#include "core/text_file.h"
+#include <zlib.h>
 
 #include <array>
 #include <cstring>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
-#include <zlib.h>
+#include "core/text_file.h"
 
 namespace canopy::render {
 namespace {

@@ -10,7 +10,9 @@
 
 namespace canopy::render {
 
-double textWidthPx(const std::string& text, double scale) { return internal::textWidth(text) * scale; }
+double textWidthPx(const std::string& text, double scale) {
+  return internal::textWidth(text) * scale;
+}
 
 namespace {
 

@@ -23,23 +23,23 @@ struct RadiusRange {
 /// Kendall & Mecke, Stochastic Geometry, §5.4). Points are generated in the region dilated by the
 /// largest interaction distance, so there is no edge effect.
 struct PoissonForestDef {
-  Aabb region;                     // m
-  double lambda = 0.01;            // trees per m²
+  Aabb region;           // m
+  double lambda = 0.01;  // trees per m²
   RadiusRange radius;
   std::uint64_t seed = 1;
-  std::optional<double> min_gap;   // m, crown edge to crown edge
+  std::optional<double> min_gap;  // m, crown edge to crown edge
 };
 
 /// rows × cols trees: centre(r, c) = origin + Rot(angle) · (c · spacing.x, r · spacing.y), plus
 /// optional Gaussian jitter of σ = jitter on each coordinate. A row is a grid with one row.
 struct GridForestDef {
-  Vec2 origin = Vec2::Zero();      // m
-  Vec2 spacing = Vec2(10.0, 10.0); // m
+  Vec2 origin = Vec2::Zero();       // m
+  Vec2 spacing = Vec2(10.0, 10.0);  // m
   int rows = 1;
   int cols = 1;
-  double angle = 0.0;              // rad
+  double angle = 0.0;  // rad
   RadiusRange radius;
-  double jitter = 0.0;             // m
+  double jitter = 0.0;  // m
   std::uint64_t seed = 1;
 };
 
@@ -48,12 +48,12 @@ struct GridForestDef {
 /// thinning as in PoissonForestDef.
 struct ClusterForestDef {
   Aabb region;
-  double parent_lambda = 1e-4;     // clusters per m²
-  double mean_trees = 10.0;        // trees per cluster
-  double spread = 10.0;            // m, σ of a tree around its cluster centre
+  double parent_lambda = 1e-4;  // clusters per m²
+  double mean_trees = 10.0;     // trees per cluster
+  double spread = 10.0;         // m, σ of a tree around its cluster centre
   RadiusRange radius;
   std::uint64_t seed = 1;
-  std::optional<double> min_gap;   // m
+  std::optional<double> min_gap;  // m
 };
 
 std::vector<world::TreeDef> poissonForest(const PoissonForestDef& def);

@@ -34,9 +34,9 @@ void readClock(ObjectReader& root, ScenarioSpec& spec) {
   spec.duration = clock.number("duration", spec.duration, internal::Bound::positive);
   clock.finish();
   if (spec.duration < spec.dt) {
-    throw ScenarioError(field->file(), field->path() + ".duration",
-                        "expected a duration of at least one step (dt = " +
-                            std::to_string(spec.dt) + " s)");
+    throw ScenarioError(
+        field->file(), field->path() + ".duration",
+        "expected a duration of at least one step (dt = " + std::to_string(spec.dt) + " s)");
   }
   if (spec.duration / spec.dt > 1e7) {
     throw ScenarioError(field->file(), field->path() + ".duration",
@@ -54,12 +54,14 @@ void resolveLabels(const std::vector<std::string>& target_labels, const std::str
     spec.labels.push_back(label);
     return static_cast<sensing::LabelId>(spec.labels.size() - 1);
   };
-  for (std::size_t t = 0; t < spec.targets.size(); ++t) spec.targets[t].label = idOf(target_labels[t]);
+  for (std::size_t t = 0; t < spec.targets.size(); ++t)
+    spec.targets[t].label = idOf(target_labels[t]);
   spec.sensing.clutter_label = idOf(clutter_label);
 }
 
 ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOptions& options) {
-  for (const std::string& assignment : options.overrides) internal::applyOverride(document, assignment);
+  for (const std::string& assignment : options.overrides)
+    internal::applyOverride(document, assignment);
 
   ScenarioSpec spec;
   spec.file = file;
@@ -136,13 +138,15 @@ fs::path resolveScenario(const std::string& scenario) {
   for (const fs::path& candidate : {libraryDir() / scenario, libraryDir() / (scenario + ".json")}) {
     if (fs::is_regular_file(candidate, error)) return candidate;
   }
-  throw ScenarioError(scenario, "", "no such scenario file, and no built-in scenario of that name "
-                                    "(see `canopy list`)");
+  throw ScenarioError(scenario, "",
+                      "no such scenario file, and no built-in scenario of that name "
+                      "(see `canopy list`)");
 }
 
 std::vector<world::TreeDef> loadLayout(const std::string& path) {
   Json document = internal::readJsonFile(path);
-  Json list = document.is_object() && document.contains("occluders") ? document["occluders"] : document;
+  Json list =
+      document.is_object() && document.contains("occluders") ? document["occluders"] : document;
   std::vector<world::TreeDef> trees;
   Json effective = Json::array();
   std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(path)).string()};

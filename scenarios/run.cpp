@@ -32,7 +32,8 @@ std::string manifestJson(const ScenarioSpec& spec, const std::string& command_li
 
 RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
   std::filesystem::create_directories(options.out_dir);
-  writeFileAtomically(options.out_dir / "manifest.json", manifestJson(spec, options.command_line) + "\n");
+  writeFileAtomically(options.out_dir / "manifest.json",
+                      manifestJson(spec, options.command_line) + "\n");
 
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
@@ -46,7 +47,8 @@ RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
   }
   RunResult result;
   result.steps = summary.steps();
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.summary_json = summary.json(result.wall_seconds);
   writeFileAtomically(options.out_dir / "summary.json", result.summary_json + "\n");
   return result;

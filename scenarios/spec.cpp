@@ -4,7 +4,9 @@
 
 namespace canopy::scenarios {
 
-int ScenarioSpec::steps() const { return static_cast<int>(std::lround(duration / dt)); }
+int ScenarioSpec::steps() const {
+  return static_cast<int>(std::lround(duration / dt));
+}
 
 world::WorldDef ScenarioSpec::worldDef() const {
   world::WorldDef def;

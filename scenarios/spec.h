@@ -16,14 +16,14 @@ namespace canopy::scenarios {
 
 struct UavSpec {
   std::string name;
-  world::UavDef body;                 // start, yaw, yaw mode, v_max
-  sensing::SensorDef sensor;          // footprint and quality (α, r0)
-  std::optional<world::Path> path;    // scripted sweep, followed when no planner runs
+  world::UavDef body;               // start, yaw, yaw mode, v_max
+  sensing::SensorDef sensor;        // footprint and quality (α, r0)
+  std::optional<world::Path> path;  // scripted sweep, followed when no planner runs
 };
 
 struct TargetSpec {
   std::string name;
-  sensing::LabelId label = 1;         // index into ScenarioSpec::labels
+  sensing::LabelId label = 1;  // index into ScenarioSpec::labels
   world::Path path;
 };
 
@@ -36,33 +36,33 @@ struct NamedOwnership {
 };
 
 struct AnalysisSpec {
-  int m = 5;                                // m of m-Ownership (steps)
-  double oa_margin = 1.0;                   // s, h of Occlusion_Aware around an occluded interval
-  std::vector<NamedOwnership> states;       // e.g. M0 and M*
+  int m = 5;                           // m of m-Ownership (steps)
+  double oa_margin = 1.0;              // s, h of Occlusion_Aware around an occluded interval
+  std::vector<NamedOwnership> states;  // e.g. M0 and M*
 };
 
 struct ScenarioSpec {
   std::string name;
   std::string description;
-  std::filesystem::path file;               // where it was loaded from (empty if built in code)
+  std::filesystem::path file;  // where it was loaded from (empty if built in code)
 
-  Aabb aoi;                                 // m
-  double dt = 0.2;                          // s, simulation step
-  double duration = 20.0;                   // s
-  std::uint64_t seed = 1;                   // the trial seed (overridden by --seed)
+  Aabb aoi;                // m
+  double dt = 0.2;         // s, simulation step
+  double duration = 20.0;  // s
+  std::uint64_t seed = 1;  // the trial seed (overridden by --seed)
 
   std::vector<std::string> labels{"tree", "human"};  // labels[0] is always "tree"
   sensing::SensingConfig sensing;
   std::vector<UavSpec> uavs;
   std::vector<TargetSpec> targets;
-  std::vector<world::TreeDef> trees;        // every occluder, explicit and generated
+  std::vector<world::TreeDef> trees;  // every occluder, explicit and generated
 
   agents::TrackingConfig tracking;
   agents::FusionConfig fusion;
   agents::PlannerConfig planner;
   AnalysisSpec analysis;
 
-  std::string effective_config;             // JSON: the file after overrides, defaults filled in
+  std::string effective_config;  // JSON: the file after overrides, defaults filled in
 
   /// K: the number of steps after the initial one (states k = 0..K).
   int steps() const;

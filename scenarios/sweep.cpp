@@ -20,10 +20,12 @@ using internal::ObjectReader;
 
 namespace {
 
-// "planner.horizon" = 5 → "horizon-5", "planner.algorithm" = "sma" → "algorithm-sma"; characters unsafe in a directory name become '_'.
+// "planner.horizon" = 5 → "horizon-5", "planner.algorithm" = "sma" → "algorithm-sma"; characters
+// unsafe in a directory name become '_'.
 std::string slug(const std::string& path, const std::string& value) {
   const bool quoted = value.size() >= 2 && value.front() == '"' && value.back() == '"';
-  std::string text = path.substr(path.rfind('.') + 1) + "-" + (quoted ? value.substr(1, value.size() - 2) : value);
+  std::string text =
+      path.substr(path.rfind('.') + 1) + "-" + (quoted ? value.substr(1, value.size() - 2) : value);
   for (char& c : text) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
   }
@@ -43,14 +45,15 @@ SweepSpec loadSweepText(const std::string& text, const std::string& file) {
   // DIR/sweep.json reloads from anywhere.
   const fs::path beside = fs::path(file).parent_path() / scenario;
   std::error_code error;
-  sweep.scenario = fs::is_regular_file(beside, error) ? fs::absolute(beside).lexically_normal().string()
-                   : fs::is_regular_file(scenario, error) ? fs::absolute(scenario).lexically_normal().string()
-                                                         : scenario;
+  sweep.scenario =
+      fs::is_regular_file(beside, error)     ? fs::absolute(beside).lexically_normal().string()
+      : fs::is_regular_file(scenario, error) ? fs::absolute(scenario).lexically_normal().string()
+                                             : scenario;
   try {
     resolveScenario(sweep.scenario);
   } catch (const ScenarioError&) {
-    root.required("scenario").fail("expected a scenario file or a built-in scenario name, got \"" +
-                                   scenario + "\"");
+    root.required("scenario")
+        .fail("expected a scenario file or a built-in scenario name, got \"" + scenario + "\"");
   }
   effective["scenario"] = sweep.scenario;
   sweep.trials = root.integer("trials", 1, 1, 1000000);
@@ -117,14 +120,16 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
 int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   const fs::path manifest = options.out_dir / "sweep.json";
   if (fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
-    throw ScenarioError(manifest.string(), "", "this directory holds a different sweep; choose another --out");
+    throw ScenarioError(manifest.string(), "",
+                        "this directory holds a different sweep; choose another --out");
   }
   fs::create_directories(options.out_dir);
   writeFileAtomically(manifest, sweep.effective_json + "\n");
 
   const std::vector<SweepConfig> configs = configurations(sweep);
   std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
-  for (const SweepConfig& config : configs) specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
+  for (const SweepConfig& config : configs)
+    specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
 
   struct Job {
     int config, trial;
@@ -153,7 +158,8 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
         ScenarioSpec spec = specs[todo[j].config];
         spec.seed = trialSeed(sweep.seed, todo[j].trial);
         const TrialResult trial = runTrial(spec, configs[todo[j].config].id);
-        writeFileAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial), trialToJson(trial) + "\n");
+        writeFileAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial),
+                            trialToJson(trial) + "\n");
       } catch (...) {
         const std::lock_guard lock(progress_mutex);
         if (!failure) failure = std::current_exception();
@@ -170,7 +176,8 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   for (int w = 0; w < jobs; ++w) pool.emplace_back(worker);
   pool.clear();  // joins
   if (failure) std::rethrow_exception(failure);
-  writeFileAtomically(options.out_dir / "summary.json", summariseSweep(loadSweepResults(options.out_dir)));
+  writeFileAtomically(options.out_dir / "summary.json",
+                      summariseSweep(loadSweepResults(options.out_dir)));
   return static_cast<int>(todo.size());
 }
 
@@ -186,7 +193,8 @@ SweepResults loadSweepResults(const fs::path& out_dir) {
     std::vector<TrialResult> trials;
     for (int t = 0; t < results.sweep.trials; ++t) {
       const fs::path path = trialPath(out_dir, config.id, t);
-      if (const auto text = readTextFile(path)) trials.push_back(trialFromJson(*text, path.string()));
+      if (const auto text = readTextFile(path))
+        trials.push_back(trialFromJson(*text, path.string()));
     }
     results.trials.push_back(std::move(trials));
   }
@@ -215,9 +223,12 @@ std::string summariseSweep(const SweepResults& results) {
                        {"mean_trace_pos_m2", trace / n},
                        {"mean_visible_fraction", visible / n}});
   }
-  return Json{{"sweep", results.sweep.name}, {"scenario", results.sweep.scenario},
-              {"trials_per_config", results.sweep.trials}, {"configs", configs}}
-             .dump(2) + "\n";
+  return Json{{"sweep", results.sweep.name},
+              {"scenario", results.sweep.scenario},
+              {"trials_per_config", results.sweep.trials},
+              {"configs", configs}}
+             .dump(2) +
+         "\n";
 }
 
 }  // namespace canopy::scenarios

@@ -21,18 +21,18 @@ struct SweepAxis {
 
 struct SweepSpec {
   std::string name;
-  std::string scenario;             // base scenario: a path (resolved beside the sweep file) or a library name
-  int trials = 1;                   // per configuration
-  std::uint64_t seed = 1;           // trial i of every configuration gets trialSeed(seed, i)
-  std::vector<std::string> fixed;   // "path=value" overrides applied to every configuration
-  std::vector<SweepAxis> axes;      // the Cartesian product of their values
-  std::string effective_json;       // the sweep as read, for DIR/sweep.json
+  std::string scenario;  // base scenario: a path (resolved beside the sweep file) or a library name
+  int trials = 1;        // per configuration
+  std::uint64_t seed = 1;          // trial i of every configuration gets trialSeed(seed, i)
+  std::vector<std::string> fixed;  // "path=value" overrides applied to every configuration
+  std::vector<SweepAxis> axes;     // the Cartesian product of their values
+  std::string effective_json;      // the sweep as read, for DIR/sweep.json
 };
 
 /// One point of the Cartesian product.
 struct SweepConfig {
-  std::string id;                       // e.g. "algorithm-sma_horizon-5" (a directory name)
-  std::vector<std::string> overrides;   // fixed, then this point's axis values
+  std::string id;                      // e.g. "algorithm-sma_horizon-5" (a directory name)
+  std::vector<std::string> overrides;  // fixed, then this point's axis values
 };
 
 /// Reads and validates a sweep file (ScenarioError: file, field, expectation).
@@ -44,9 +44,9 @@ std::vector<SweepConfig> configurations(const SweepSpec& sweep);
 std::uint64_t trialSeed(std::uint64_t sweep_seed, int index);
 
 struct SweepProgress {
-  int done = 0;         // finished trials, including those found on disk
+  int done = 0;  // finished trials, including those found on disk
   int total = 0;
-  int resumed = 0;      // found on disk at start
+  int resumed = 0;  // found on disk at start
 };
 
 struct SweepOptions {

@@ -40,7 +40,8 @@ void TrialCollector::add(const Simulation& sim) {
   TargetBits occluded = 0;
   if (masks_) {
     for (int t = 0; t < result_.targets; ++t) {
-      if (sim.world().insideOccluder(sim.truth().targets[t].position)) occluded |= TargetBits{1} << t;
+      if (sim.world().insideOccluder(sim.truth().targets[t].position))
+        occluded |= TargetBits{1} << t;
     }
   }
   truth_.clear();
@@ -75,7 +76,8 @@ TrialResult runTrial(const ScenarioSpec& spec, const std::string& config_id) {
   }
   TrialResult result = collector.take();
   result.config_id = config_id;
-  result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -125,7 +127,8 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
   for (std::size_t k = 0; k < steps; ++k) {
     if (trial.visible[k].size() != static_cast<std::size_t>(trial.uavs) ||
         trial.in_footprint[k].size() != static_cast<std::size_t>(trial.uavs)) {
-      throw ScenarioError(file, "step " + std::to_string(k), "not a trial result: expected one set per UAV");
+      throw ScenarioError(file, "step " + std::to_string(k),
+                          "not a trial result: expected one set per UAV");
     }
   }
   return trial;

@@ -17,18 +17,18 @@ using TargetBits = std::uint64_t;
 
 struct TrialResult {
   std::string scenario;
-  std::string config_id;                        // the sweep configuration it belongs to
+  std::string config_id;  // the sweep configuration it belongs to
   std::uint64_t seed = 0;
-  double dt = 0.0;                              // s
+  double dt = 0.0;  // s
   int uavs = 0, targets = 0, trees = 0;
   std::vector<std::vector<TargetBits>> visible;       // [k][i]: V_{i,k}
   std::vector<std::vector<TargetBits>> in_footprint;  // [k][i]: targets whose truth lies in φ_{i,k}
   std::vector<TargetBits> occluded;                   // [k]: targets strictly under a crown
-  std::vector<int> tree_first_seen;             // per tree: first step a footprint held its centre, −1 never
-  std::vector<double> ospa;                     // [k]: OSPA (c 50 m, p 2) averaged over agents (m)
-  std::vector<double> trace;                    // [k]: Σ_j tr(P_pos) of confirmed tracks, averaged over agents (m²)
-  std::vector<double> plan_seconds;             // every planning call's wall time (s); not written
-  double wall_seconds = 0.0;                    // not part of the result's identity
+  std::vector<int> tree_first_seen;  // per tree: first step a footprint held its centre, −1 never
+  std::vector<double> ospa;          // [k]: OSPA (c 50 m, p 2) averaged over agents (m)
+  std::vector<double> trace;  // [k]: Σ_j tr(P_pos) of confirmed tracks, averaged over agents (m²)
+  std::vector<double> plan_seconds;  // every planning call's wall time (s); not written
+  double wall_seconds = 0.0;         // not part of the result's identity
 
   int steps() const { return static_cast<int>(occluded.size()); }
 };

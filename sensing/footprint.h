@@ -16,11 +16,11 @@ struct FootprintDef {
 /// A footprint placed on the ground: centred under the UAV and rotated by its yaw. A closed set.
 struct Footprint {
   FootprintShape shape = FootprintShape::rectangle;
-  Vec2 centre = Vec2::Zero();   // m
-  double cos_yaw = 1.0;         // cos ψ
-  double sin_yaw = 0.0;         // sin ψ
-  Vec2 half = Vec2(10.0, 10.0); // m, rectangle half-extents
-  double radius = 10.0;         // m, disc
+  Vec2 centre = Vec2::Zero();    // m
+  double cos_yaw = 1.0;          // cos ψ
+  double sin_yaw = 0.0;          // sin ψ
+  Vec2 half = Vec2(10.0, 10.0);  // m, rectangle half-extents
+  double radius = 10.0;          // m, disc
 
   static Footprint place(const FootprintDef& def, const Vec2& centre, double yaw);
 

@@ -34,9 +34,9 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     if (!rng.bernoulli(config.p_detect)) continue;
     const Mat2 R_truth = rangeBearingCovariance(chi, p_i, sensor.quality);
     const Vec2 z = chi + rng.gaussian(config.truth_noise_scale * R_truth);
-    out.observations.push_back(
-        {target_labels[ref.index], z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0,
-         ref.index});
+    out.observations.push_back({target_labels[ref.index], z,
+                                rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0,
+                                ref.index});
   }
 
   // Clutter: Poisson count, uniform over the footprint.

@@ -16,10 +16,10 @@ enum class YawMode {
 
 /// A UAV: a kinematic body at fixed altitude, commanded by horizontal velocity.
 struct UavDef {
-  Vec2 start = Vec2::Zero();      // m
-  double yaw = 0.0;               // rad, initial heading ψ
+  Vec2 start = Vec2::Zero();  // m
+  double yaw = 0.0;           // rad, initial heading ψ
   YawMode yaw_mode = YawMode::fixed;
-  double v_max = 5.0;             // m/s, |commanded velocity| is clamped to this
+  double v_max = 5.0;  // m/s, |commanded velocity| is clamped to this
 };
 
 /// A target (OOI): a kinematic body driven by velocity along a scripted path.
@@ -28,7 +28,7 @@ struct TargetDef {
 };
 
 struct WorldDef {
-  Aabb aoi;                        // the area of interest (m)
+  Aabb aoi;  // the area of interest (m)
   std::vector<UavDef> uavs;
   std::vector<TargetDef> targets;
   std::vector<TreeDef> trees;

@@ -24,8 +24,8 @@ class Path {
   /// p(t) = start + velocity · t.
   static Path constantVelocity(const Vec2& start, const Vec2& velocity);
 
-  Vec2 positionAt(double t) const;   // m
-  Vec2 velocityAt(double t) const;   // m/s, the velocity of the segment that starts at or before t
+  Vec2 positionAt(double t) const;  // m
+  Vec2 velocityAt(double t) const;  // m/s, the velocity of the segment that starts at or before t
   const std::vector<TimedPoint>& points() const { return points_; }
   bool isConstantVelocity() const { return points_.empty(); }
   const Vec2& start() const { return start_; }

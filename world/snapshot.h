@@ -18,8 +18,8 @@ struct TargetState {
 };
 
 struct WorldSnapshot {
-  int step = 0;      // k
-  double time = 0.0; // s, t = k·dt
+  int step = 0;       // k
+  double time = 0.0;  // s, t = k·dt
   std::vector<UavState> uavs;
   std::vector<TargetState> targets;
 };

@@ -6,7 +6,9 @@
 
 namespace canopy::world {
 namespace {
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 }  // namespace
 
 TreeDef TreeDef::disc(const Vec2& centre, double radius) {
@@ -66,7 +68,8 @@ TreeDef TreeDef::polygon(std::vector<Vec2> vertices) {
 }
 
 bool strictlyInside(const TreeDef& tree, const Vec2& p) {
-  if (tree.shape == TreeShape::disc) return (p - tree.centre).squaredNorm() < tree.radius * tree.radius;
+  if (tree.shape == TreeShape::disc)
+    return (p - tree.centre).squaredNorm() < tree.radius * tree.radius;
   const std::size_t n = tree.vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& a = tree.vertices[i];

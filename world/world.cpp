@@ -25,8 +25,12 @@ BodyRef decode(uintptr_t data) {
   return {static_cast<BodyKind>((data & 3u) - 1), static_cast<int>(data >> 2)};
 }
 
-b2Vec2 toB2(const Vec2& v) { return {static_cast<float>(v.x()), static_cast<float>(v.y())}; }
-Vec2 fromB2(const b2Vec2& v) { return {v.x, v.y}; }
+b2Vec2 toB2(const Vec2& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y())};
+}
+Vec2 fromB2(const b2Vec2& v) {
+  return {v.x, v.y};
+}
 
 b2FixtureDef nonCollidingFixture(const b2Shape* shape, BodyKind kind, int index) {
   b2FixtureDef fixture;
@@ -203,8 +207,9 @@ void World::step(double dt) {
     max_rotation = std::max(max_rotation, std::abs(omega) * dt);
   }
 
-  const int substeps = std::max({1, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
-                                 static_cast<int>(std::ceil(max_rotation / kMaxSubstepRotation))});
+  const int substeps =
+      std::max({1, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
+                static_cast<int>(std::ceil(max_rotation / kMaxSubstepRotation))});
   const float h = static_cast<float>(dt / substeps);
   for (int s = 0; s < substeps; ++s) b2_->world.Step(h, 1, 1);
 
@@ -219,7 +224,8 @@ WorldSnapshot World::snapshot() const {
   snap.uavs.reserve(b2_->uavs.size());
   for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
     const b2Body* body = b2_->uavs[i];
-    snap.uavs.push_back({fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle())});
+    snap.uavs.push_back(
+        {fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle())});
   }
   snap.targets.reserve(b2_->targets.size());
   for (std::size_t t = 0; t < b2_->targets.size(); ++t) {

@@ -56,7 +56,7 @@ class World {
   struct Box2d;  // Box2D objects, hidden from the header
   WorldDef def_;
   std::unique_ptr<Box2d> b2_;
-  std::vector<Vec2> commands_;     // clamped UAV velocity commands (m/s)
+  std::vector<Vec2> commands_;         // clamped UAV velocity commands (m/s)
   std::vector<Vec2> uav_velocity_;     // last applied (m/s)
   std::vector<Vec2> target_velocity_;  // last applied (m/s)
   double time_ = 0.0;

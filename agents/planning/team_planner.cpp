@@ -127,7 +127,8 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
   // would, and the team does not miscoordinate through optimiser noise. Centralised planning
   // keeps the leader's own stream.
   RandomStream joint_stream(seed_, "pso.joint", static_cast<std::uint64_t>(out.epoch));
-  RandomStream& rng = config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
+  RandomStream& rng =
+      config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
   const Clock::time_point start = Clock::now();
   PlanSearch search = optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng);
   const double seconds = secondsSince(start);

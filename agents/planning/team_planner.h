@@ -55,8 +55,8 @@ struct TeamPlan {
 /// (warm starts of Dec-POMDP and centralised planning) and one "pso" RandomStream per agent (SMA
 /// and the centralised leader), so a sequence of calls is bit-for-bit reproducible for a seed.
 /// Dec-POMDP agents all draw from one stream per epoch ("pso.joint", epoch): the paper's argmax
-/// is a function of the belief, so equal beliefs must give equal joint plans. Wall time is measured for the
-/// report only and never feeds back into a decision.
+/// is a function of the belief, so equal beliefs must give equal joint plans. Wall time is measured
+/// for the report only and never feeds back into a decision.
 class TeamPlanner {
  public:
   /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index).

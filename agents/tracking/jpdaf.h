@@ -13,12 +13,12 @@
 namespace canopy::agents::tracking {
 
 /// TrackingConfig::birth_gate_probability: the χ²₂ gate that keeps a measurement from starting a
-/// track (γ = 18.4 at the default 0.9999). It is wider than the association gate (P_G = 0.98 by default) on purpose: 1 − P_G of a
-/// tracked target's own measurements fall outside its association gate, usually while the track
-/// lags the target, and a track born there shares the target's next measurements and gets
-/// confirmed as a duplicate. Measured over 150 runs × 100 steps of one target under the default
-/// settings: 218 births and 102 duplicates alive at the end with the association gate; none with
-/// the default birth gate.
+/// track (γ = 18.4 at the default 0.9999). It is wider than the association gate (P_G = 0.98 by
+/// default) on purpose: 1 − P_G of a tracked target's own measurements fall outside its association
+/// gate, usually while the track lags the target, and a track born there shares the target's next
+/// measurements and gets confirmed as a duplicate. Measured over 150 runs × 100 steps of one target
+/// under the default settings: 218 births and 102 duplicates alive at the end with the association
+/// gate; none with the default birth gate.
 
 /// Owns the step's buffers, so that a step allocates nothing in steady state.
 class Jpdaf {
@@ -26,8 +26,8 @@ class Jpdaf {
   /// Updates tracks[track_ids[k]] (whose `prior` holds this step's prediction) with the
   /// measurements observations[obs_ids[l]], all of one label and all valid
   /// (MeasurementModel<N>::valid). Sets each track's `posterior` and `detected`; sets
-  /// claimed[l] = 1 for each measurement inside some track's birth gate (config.birth_gate_probability),
-  /// 0 for those that may start a track.
+  /// claimed[l] = 1 for each measurement inside some track's birth gate
+  /// (config.birth_gate_probability), 0 for those that may start a track.
   ///
   /// Gating is on position for both targets and trees: d² = νᵀ S⁻¹ ν ≤ γ with ν = z − x̄_pos,
   /// S = P̄_pos + R and γ = −2 ln(1 − P_G) (χ²₂). Trees gate and weigh associations on their

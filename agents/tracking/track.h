@@ -12,15 +12,15 @@ enum class TrackStatus { tentative, confirmed };
 
 template <int N>
 struct Track {
-  TrackKey key;                       // global key; {-1, t} for tracks pre-seeded from the scenario
+  TrackKey key;  // global key; {-1, t} for tracks pre-seeded from the scenario
   sensing::LabelId label = 1;
-  Gaussian<N> prior;                  // this step's prediction, before the local update
-  Gaussian<N> posterior;              // after the local update; fusion overwrites it in place
+  Gaussian<N> prior;      // this step's prediction, before the local update
+  Gaussian<N> posterior;  // after the local update; fusion overwrites it in place
   TrackStatus status = TrackStatus::tentative;
-  int scans = 0;                      // scans since birth (the birth scan counts)
-  int hits = 0;                       // scans in which Σ_j β_tj ≥ ½ (see Tracker::update)
-  int expected_misses = 0;            // consecutive misses while expected visible
-  bool detected = false;              // this scan: at least one measurement in the gate
+  int scans = 0;            // scans since birth (the birth scan counts)
+  int hits = 0;             // scans in which Σ_j β_tj ≥ ½ (see Tracker::update)
+  int expected_misses = 0;  // consecutive misses while expected visible
+  bool detected = false;    // this scan: at least one measurement in the gate
 };
 
 using TargetTrack = Track<4>;

@@ -12,7 +12,8 @@ namespace {
 
 std::string aoiText(const Aabb& aoi) {
   std::ostringstream text;
-  text << "[" << aoi.lo.x() << ", " << aoi.lo.y() << ", " << aoi.hi.x() << ", " << aoi.hi.y() << "]";
+  text << "[" << aoi.lo.x() << ", " << aoi.lo.y() << ", " << aoi.hi.x() << ", " << aoi.hi.y()
+       << "]";
   return text.str();
 }
 
@@ -26,7 +27,8 @@ void requireInside(const Field& field, const Vec2& p, const Aabb& aoi, const std
 }
 
 // Strictly increasing times, each a finite number.
-void requireIncreasing(const std::vector<world::TimedPoint>& points, const std::vector<Field>& times) {
+void requireIncreasing(const std::vector<world::TimedPoint>& points,
+                       const std::vector<Field>& times) {
   for (std::size_t i = 1; i < points.size(); ++i) {
     if (!(points[i].t > points[i - 1].t)) {
       std::ostringstream text;
@@ -87,7 +89,8 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
     }
     requireIncreasing(points, times);
     if (check_inside) {
-      for (std::size_t i = 0; i < points.size(); ++i) requireInside(positions[i], points[i].p, aoi, "a waypoint");
+      for (std::size_t i = 0; i < points.size(); ++i)
+        requireInside(positions[i], points[i].p, aoi, "a waypoint");
     }
     path = world::Path::throughPoints(std::move(points));
   } else if (kind == "velocity") {
@@ -110,7 +113,8 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
       for (const Field& row : track.elements(1)) {
         const std::vector<Field> txy = row.elements(3, 3);
         times.push_back(txy[0]);
-        points.push_back({txy[0].number(Bound::non_negative), Vec2(txy[1].number(), txy[2].number())});
+        points.push_back(
+            {txy[0].number(Bound::non_negative), Vec2(txy[1].number(), txy[2].number())});
       }
       requireIncreasing(points, times);
     }
@@ -119,8 +123,9 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
     }
     path = world::Path::throughPoints(std::move(points));
   } else {
-    field.fail("expected a path: {\"waypoints\": [{\"t\": …, \"p\": [x, y]}, …]}, "
-               "{\"start\": [x, y], \"velocity\": [vx, vy]} or {\"track\": \"file.csv\"}");
+    field.fail(
+        "expected a path: {\"waypoints\": [{\"t\": …, \"p\": [x, y]}, …]}, "
+        "{\"start\": [x, y], \"velocity\": [vx, vy]} or {\"track\": \"file.csv\"}");
   }
   reader.finish();
   return path;
@@ -137,7 +142,8 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     if (!names.insert(uav.name).second) {
       reader.required("name").fail("expected a unique UAV name, got \"" + uav.name + "\" twice");
     }
-    if (auto path = reader.optional("path")) uav.path = readPath(*path, spec.aoi, spec.duration, true);
+    if (auto path = reader.optional("path"))
+      uav.path = readPath(*path, spec.aoi, spec.duration, true);
     if (auto start = reader.optional("start")) {
       uav.body.start = start->vec2();
       requireInside(*start, uav.body.start, spec.aoi, "a start");
@@ -192,12 +198,14 @@ std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec) {
     TargetSpec target;
     target.name = reader.string("name", "T" + std::to_string(i + 1));
     if (!names.insert(target.name).second) {
-      reader.required("name").fail("expected a unique target name, got \"" + target.name + "\" twice");
+      reader.required("name").fail("expected a unique target name, got \"" + target.name +
+                                   "\" twice");
     }
     const std::string label = reader.string("label", "human");
     if (label == "tree" || label.empty()) {
-      reader.required("label").fail("expected a target label other than \"tree\" (reserved for "
-                                    "occluders) and not empty");
+      reader.required("label").fail(
+          "expected a target label other than \"tree\" (reserved for "
+          "occluders) and not empty");
     }
     target.path = readPath(reader.required("path"), spec.aoi, spec.duration, true);
     reader.finish();

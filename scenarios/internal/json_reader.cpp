@@ -1,9 +1,9 @@
 #include "scenarios/internal/json_reader.h"
 
-#include "core/text_file.h"
-
 #include <cmath>
 #include <limits>
+
+#include "core/text_file.h"
 
 namespace canopy::scenarios::internal {
 namespace {
@@ -20,24 +20,36 @@ std::string joinPath(const std::string& parent, const std::string& key) {
 
 const char* boundText(Bound bound) {
   switch (bound) {
-    case Bound::any: return "a finite number";
-    case Bound::positive: return "a positive number";
-    case Bound::non_negative: return "a number >= 0";
-    case Bound::probability: return "a probability in [0, 1]";
-    case Bound::open_probability: return "a probability in (0, 1)";
-    case Bound::unit_interval: return "a number in (0, 1]";
+    case Bound::any:
+      return "a finite number";
+    case Bound::positive:
+      return "a positive number";
+    case Bound::non_negative:
+      return "a number >= 0";
+    case Bound::probability:
+      return "a probability in [0, 1]";
+    case Bound::open_probability:
+      return "a probability in (0, 1)";
+    case Bound::unit_interval:
+      return "a number in (0, 1]";
   }
   return "a number";
 }
 
 bool satisfies(double x, Bound bound) {
   switch (bound) {
-    case Bound::any: return true;
-    case Bound::positive: return x > 0.0;
-    case Bound::non_negative: return x >= 0.0;
-    case Bound::probability: return x >= 0.0 && x <= 1.0;
-    case Bound::open_probability: return x > 0.0 && x < 1.0;
-    case Bound::unit_interval: return x > 0.0 && x <= 1.0;
+    case Bound::any:
+      return true;
+    case Bound::positive:
+      return x > 0.0;
+    case Bound::non_negative:
+      return x >= 0.0;
+    case Bound::probability:
+      return x >= 0.0 && x <= 1.0;
+    case Bound::open_probability:
+      return x > 0.0 && x < 1.0;
+    case Bound::unit_interval:
+      return x > 0.0 && x <= 1.0;
   }
   return false;
 }
@@ -78,36 +90,47 @@ Json readJsonFile(const std::string& path, const std::string& referenced_from) {
 
 std::string describe(const Json& value) {
   switch (value.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return "the boolean " + value.dump();
-    case Json::value_t::string: return "the string " + shortDump(value);
-    case Json::value_t::array: return "an array " + shortDump(value);
-    case Json::value_t::object: return "an object " + shortDump(value);
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::boolean:
+      return "the boolean " + value.dump();
+    case Json::value_t::string:
+      return "the string " + shortDump(value);
+    case Json::value_t::array:
+      return "an array " + shortDump(value);
+    case Json::value_t::object:
+      return "an object " + shortDump(value);
     case Json::value_t::number_float:
       if (!std::isfinite(value.get<double>())) return "a non-finite number";
       return "the number " + value.dump();
-    default: return "the number " + value.dump();
+    default:
+      return "the number " + value.dump();
   }
 }
 
-void Field::fail(const std::string& message) const { throw ScenarioError(file_, path_, message); }
+void Field::fail(const std::string& message) const {
+  throw ScenarioError(file_, path_, message);
+}
 
 double Field::number(Bound bound) const {
-  if (!value_->is_number()) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  if (!value_->is_number())
+    fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
   const double x = value_->get<double>();
-  if (!std::isfinite(x)) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
-  if (!satisfies(x, bound)) fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  if (!std::isfinite(x))
+    fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
+  if (!satisfies(x, bound))
+    fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
   if (out_) *out_ = x;
   return x;
 }
 
 int Field::integer(int min_value, int max_value) const {
-  const std::string expected = "an integer in [" + std::to_string(min_value) + ", " +
-                               std::to_string(max_value) + "]";
+  const std::string expected =
+      "an integer in [" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
   if (!value_->is_number_integer()) fail("expected " + expected + ", got " + describe(*value_));
   const auto x = value_->get<long long>();
-  if (value_->is_number_unsigned() && value_->get<unsigned long long>() >
-                                          static_cast<unsigned long long>(max_value)) {
+  if (value_->is_number_unsigned() &&
+      value_->get<unsigned long long>() > static_cast<unsigned long long>(max_value)) {
     fail("expected " + expected + ", got " + describe(*value_));
   }
   if (x < min_value || x > max_value) fail("expected " + expected + ", got " + describe(*value_));
@@ -161,8 +184,8 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
   if (min_size == max_size) {
     expected = "an array of " + std::to_string(min_size) + " elements";
   } else if (max_size != SIZE_MAX) {
-    expected = "an array of " + std::to_string(min_size) + " to " + std::to_string(max_size) +
-               " elements";
+    expected =
+        "an array of " + std::to_string(min_size) + " to " + std::to_string(max_size) + " elements";
   } else if (min_size > 0) {
     expected = "an array of at least " + std::to_string(min_size) + " element" +
                (min_size == 1 ? "" : "s");
@@ -185,7 +208,9 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
   return fields;
 }
 
-ObjectReader Field::object() const { return ObjectReader(*this); }
+ObjectReader Field::object() const {
+  return ObjectReader(*this);
+}
 
 void Field::keepAsIs() const {
   if (out_) *out_ = *value_;
@@ -196,7 +221,9 @@ ObjectReader::ObjectReader(const Field& field) : field_(field) {
   if (field_.out() && !field_.out()->is_object()) *field_.out() = Json::object();
 }
 
-bool ObjectReader::has(const std::string& key) const { return field_.json().contains(key); }
+bool ObjectReader::has(const std::string& key) const {
+  return field_.json().contains(key);
+}
 
 Field ObjectReader::required(const std::string& key) {
   if (auto f = optional(key)) return *f;

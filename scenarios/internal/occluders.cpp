@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kMaxGeneratedTrees = 2e6;  // refuse layouts that would take minutes to build
 constexpr int kMaxIncludeDepth = 16;
-constexpr double kMinPolygonEdge = 0.05;    // m; Box2D welds vertices closer than its linear slop
+constexpr double kMinPolygonEdge = 0.05;  // m; Box2D welds vertices closer than its linear slop
 
 RadiusRange readRadius(const Field& field) {
   if (field.json().is_array()) {
@@ -131,7 +131,8 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
     def.min_gap = readMinGap(reader);
     const double margin = 5.0 * def.spread;
-    const double dilated_area = (def.region.width() + 2 * margin) * (def.region.height() + 2 * margin);
+    const double dilated_area =
+        (def.region.width() + 2 * margin) * (def.region.height() + 2 * margin);
     requireFeasibleCount(field, def.parent_lambda * def.mean_trees * dilated_area);
     const auto trees = clusterForest(def);
     out.insert(out.end(), trees.begin(), trees.end());
@@ -144,7 +145,8 @@ fs::path resolveInclude(const Field& field, const std::string& name) {
   if (fs::path(name).is_absolute() && fs::is_regular_file(name, error)) return name;
   if (fs::is_regular_file(relative, error)) return relative;
   if (fs::is_regular_file(libraryDir() / name, error)) return libraryDir() / name;
-  field.fail("cannot find the layout file '" + name + "' (looked beside this file and in the "
+  field.fail("cannot find the layout file '" + name +
+             "' (looked beside this file and in the "
              "scenario library)");
 }
 

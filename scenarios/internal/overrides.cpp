@@ -27,21 +27,27 @@ void applyOverride(Json& document, const std::string& assignment) {
   std::size_t start = 0;
   while (true) {
     const auto dot = key.find('.', start);
-    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (part.empty()) throw ScenarioError("--set", key, "expected a dotted path without empty parts");
-    const bool is_index = std::all_of(part.begin(), part.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    const std::string part =
+        key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (part.empty())
+      throw ScenarioError("--set", key, "expected a dotted path without empty parts");
+    const bool is_index = std::all_of(part.begin(), part.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c));
+    });
     Json* next = nullptr;
     if (node->is_array()) {
       if (!is_index || std::stoull(part) >= node->size()) {
-        throw ScenarioError("--set", key, "'" + walked + "' is an array of " +
-                                              std::to_string(node->size()) + " elements; expected an index below that, got '" + part + "'");
+        throw ScenarioError("--set", key,
+                            "'" + walked + "' is an array of " + std::to_string(node->size()) +
+                                " elements; expected an index below that, got '" + part + "'");
       }
       next = &(*node)[std::stoull(part)];
     } else if (node->is_object() || node->is_null()) {
       if (node->is_null()) *node = Json::object();
       next = &(*node)[part];
     } else {
-      throw ScenarioError("--set", key, "'" + walked + "' is " + describe(*node) + ", not an object or array");
+      throw ScenarioError("--set", key,
+                          "'" + walked + "' is " + describe(*node) + ", not an object or array");
     }
     walked += (walked.empty() ? "" : ".") + part;
     node = next;

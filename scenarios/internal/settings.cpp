@@ -45,8 +45,10 @@ std::string readSensing(ObjectReader& root, ScenarioSpec& spec) {
   if (clutter_label == "tree" || clutter_label.empty()) {
     reader.required("clutter_label").fail("expected a target label other than \"tree\"");
   }
-  s.truth_noise_scale = reader.number("truth_noise_scale", s.truth_noise_scale, Bound::non_negative);
-  s.tree_radius_sigma = reader.number("tree_radius_sigma", s.tree_radius_sigma, Bound::non_negative);
+  s.truth_noise_scale =
+      reader.number("truth_noise_scale", s.truth_noise_scale, Bound::non_negative);
+  s.tree_radius_sigma =
+      reader.number("tree_radius_sigma", s.tree_radius_sigma, Bound::non_negative);
   reader.finish();
   return clutter_label;
 }
@@ -55,13 +57,15 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "tracking");
   agents::TrackingConfig& t = spec.tracking;
   t.sigma_a = reader.number("sigma_a", t.sigma_a, Bound::positive);
-  t.gate_probability = reader.number("gate_probability", t.gate_probability, Bound::open_probability);
+  t.gate_probability =
+      reader.number("gate_probability", t.gate_probability, Bound::open_probability);
   t.birth_gate_probability =
       reader.number("birth_gate_probability", t.birth_gate_probability, Bound::open_probability);
   t.p_detect = reader.number("p_detect", t.p_detect, Bound::unit_interval);
   t.clutter_density = reader.number("clutter_density", t.clutter_density, Bound::positive);
   t.max_hypotheses = reader.integer("max_hypotheses", t.max_hypotheses, 1, 10000000);
-  t.birth_velocity_sigma = reader.number("birth_velocity_sigma", t.birth_velocity_sigma, Bound::positive);
+  t.birth_velocity_sigma =
+      reader.number("birth_velocity_sigma", t.birth_velocity_sigma, Bound::positive);
   t.confirm_hits = reader.integer("confirm_hits", t.confirm_hits, 1, 100);
   t.confirm_window = reader.integer("confirm_window", std::max(t.confirm_window, t.confirm_hits),
                                     t.confirm_hits, 100);
@@ -139,7 +143,8 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
 void readAnalysis(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "analysis");
   spec.analysis.m = reader.integer("m", spec.analysis.m, 1, 100000);
-  spec.analysis.oa_margin = reader.number("oa_margin", spec.analysis.oa_margin, Bound::non_negative);
+  spec.analysis.oa_margin =
+      reader.number("oa_margin", spec.analysis.oa_margin, Bound::non_negative);
   if (auto states = reader.optional("states")) {
     std::set<std::string> names;
     for (const Field& element : states->elements()) {

@@ -67,7 +67,7 @@ TEST(OwnershipState, NamedStatesThenMissesThenOther) {
   EXPECT_EQ(ownershipState({II | IV, I | III}, named, 4), "Other");  // M0 is not permutable
   EXPECT_EQ(ownershipState({I | II, III | IV}, named, 4), "M*");
   EXPECT_EQ(ownershipState({III | IV, I | II}, named, 4), "M*");  // either robot order
-  EXPECT_EQ(ownershipState({I | II, III}, named, 4), "Miss 1");    // IV owned by nobody
+  EXPECT_EQ(ownershipState({I | II, III}, named, 4), "Miss 1");   // IV owned by nobody
   EXPECT_EQ(ownershipState({I, kNone}, named, 4), "Miss >1");
   EXPECT_EQ(ownershipState({I | II | III, II | IV}, named, 4), "Other");
   EXPECT_EQ(ownershipState({I | II | III | IV, kNone}, {}, 4), "Other");
@@ -82,7 +82,7 @@ struct JointEffect {
   JointEffect() {
     for (int k = 5; k <= 10; ++k) occluded[k] = I;
     for (int k = 0; k < 13; ++k) {
-      M[k] = {k < 5 || k > 10 ? I : II, II};       // UAV1 leaves I for II while I is hidden
+      M[k] = {k < 5 || k > 10 ? I : II, II};  // UAV1 leaves I for II while I is hidden
       in_footprint[k] = {k < 5 || k > 10 ? I : II, II};
     }
   }
@@ -96,8 +96,8 @@ TEST(OcclusionAware, LeavingTheHiddenTargetAndReturningIsAware) {
 TEST(OcclusionAware, WaitingIdleOverTheHiddenTargetIsNotAware) {
   JointEffect je;
   for (int k = 5; k <= 10; ++k) {
-    je.M[k][0] = kNone;          // owns nothing ...
-    je.in_footprint[k][0] = I;   // ... and keeps the occluded target in view
+    je.M[k][0] = kNone;         // owns nothing ...
+    je.in_footprint[k][0] = I;  // ... and keeps the occluded target in view
   }
   EXPECT_FALSE(je.aware());
 }
@@ -116,7 +116,7 @@ TEST(OcclusionAware, NeedsOwnershipBeforeAndAfter) {
   before.M[3] = {kNone, II};  // condition 1 fails at k0
   EXPECT_FALSE(before.aware());
   JointEffect after;
-  after.M[12] = {II, II};     // condition 3 fails at k0 + L
+  after.M[12] = {II, II};  // condition 3 fails at k0 + L
   EXPECT_FALSE(after.aware());
 }
 
@@ -128,7 +128,8 @@ TEST(OcclusionAware, PresumesOcclusionOverTheWholeWindowIncludingItsBorders) {
   early_end.occluded[10] = kNone;
   EXPECT_FALSE(early_end.aware());
   JointEffect out_of_range;
-  EXPECT_FALSE(occlusionAware(out_of_range.M, out_of_range.in_footprint, out_of_range.occluded, 0, 3, 10, 2));
+  EXPECT_FALSE(occlusionAware(out_of_range.M, out_of_range.in_footprint, out_of_range.occluded, 0,
+                              3, 10, 2));
 }
 
 TEST(RunsOf, FindsMaximalInclusiveIntervals) {

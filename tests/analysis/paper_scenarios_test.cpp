@@ -25,7 +25,8 @@ std::vector<std::vector<Interval>> occludedIntervals(const ScenarioSpec& spec) {
     occluded.push_back(s);
   }
   std::vector<std::vector<Interval>> runs;
-  for (int t = 0; t < static_cast<int>(spec.targets.size()); ++t) runs.push_back(runsOf(occluded, t));
+  for (int t = 0; t < static_cast<int>(spec.targets.size()); ++t)
+    runs.push_back(runsOf(occluded, t));
   return runs;
 }
 
@@ -60,7 +61,8 @@ TEST(PaperScenarios, TrajectoryHandoverStartsInM0AndEndsWithPairsApart) {
   EXPECT_TRUE(north.contains(at(0)) && north.contains(at(1)));
   EXPECT_GT((at(0) - at(2)).norm(), 40.0);
   for (int t = 0; t < 4; ++t) {
-    const double speed = (spec.targets[t].path.positionAt(L) - spec.targets[t].path.positionAt(0)).norm() / L;
+    const double speed =
+        (spec.targets[t].path.positionAt(L) - spec.targets[t].path.positionAt(0)).norm() / L;
     EXPECT_NEAR(speed, 2.0, 0.1);
   }
 }
@@ -112,7 +114,8 @@ TEST(PaperScenarios, OcclusionSharingHidesIThenIIIUnderOneTree) {
   EXPECT_NEAR(runs[2][0].last * spec.dt, 9.4, 1e-9);
   EXPECT_TRUE(runs[1].empty());
   const Vec2 gap = spec.targets[0].path.positionAt(0) - spec.targets[1].path.positionAt(0);
-  EXPECT_GT(gap.norm(), spec.uavs[0].sensor.footprint.size.maxCoeff());  // I and II: one footprint each
+  EXPECT_GT(gap.norm(),
+            spec.uavs[0].sensor.footprint.size.maxCoeff());  // I and II: one footprint each
   // A footprint centred on I holds the tree's centre well before I is hidden; one centred on III
   // only from about 7.2 s.
   auto firstSight = [&](int uav, int target) {

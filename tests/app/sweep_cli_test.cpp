@@ -15,7 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 
 int run(const std::string& arguments) {
-  const int status = std::system((std::string(CANOPY_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
+  const int status =
+      std::system((std::string(CANOPY_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -29,7 +30,8 @@ std::string slurp(const fs::path& path) {
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
-    if (entry.is_regular_file()) files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
+    if (entry.is_regular_file())
+      files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
   }
   return files;
 }
@@ -37,7 +39,8 @@ std::map<std::string, std::string> trialFiles(const fs::path& dir) {
 int countTrials(const fs::path& dir) {
   int n = 0;
   std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(dir / "trials", error); !error && it != fs::end(it); it.increment(error)) {
+  for (auto it = fs::recursive_directory_iterator(dir / "trials", error);
+       !error && it != fs::end(it); it.increment(error)) {
     n += it->path().extension() == ".json";
   }
   return n;
@@ -45,7 +48,8 @@ int countTrials(const fs::path& dir) {
 
 fs::path sweepFile() {
   const fs::path file = fs::temp_directory_path() / "canopy_cli_sweep.json";
-  std::ofstream(file) << R"({"name": "cli", "scenario": "trajectory_handover", "trials": 5, "seed": 3,
+  std::ofstream(file)
+      << R"({"name": "cli", "scenario": "trajectory_handover", "trials": 5, "seed": 3,
     "axes": [{"path": "planner.algorithm", "values": ["sma", "dec_pomdp"]},
              {"path": "planner.horizon", "values": [1, 5]}]})";
   return file;
@@ -99,7 +103,8 @@ TEST(SweepCommand, OneAndTwoJobsGiveIdenticalResults) {
   EXPECT_EQ(slurp(one / "summary.json"), slurp(two / "summary.json"));
   ASSERT_EQ(run("analyze " + one.string()), 0);
   ASSERT_EQ(run("analyze " + two.string()), 0);
-  EXPECT_EQ(slurp(one / "analysis" / "ownership_states.csv"), slurp(two / "analysis" / "ownership_states.csv"));
+  EXPECT_EQ(slurp(one / "analysis" / "ownership_states.csv"),
+            slurp(two / "analysis" / "ownership_states.csv"));
 }
 
 TEST(AnalyzeCommand, ADirectoryThatIsNotASweepExitsWith2) {
@@ -116,7 +121,8 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
   EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
   EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
-  for (const char* scenario : {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
+  for (const char* scenario :
+       {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
     EXPECT_TRUE(fs::exists(dir / scenario / "summary.json")) << scenario;
     EXPECT_TRUE(fs::exists(dir / scenario / "analysis" / "ownership_states.csv")) << scenario;
   }

@@ -14,7 +14,8 @@ TEST(RandomStream, SameSeedPurposeAndIndexGiveSameSequence) {
 
 TEST(RandomStream, PurposeIndexAndSeedEachChangeTheSequence) {
   RandomStream base(7, "sensing", 2);
-  RandomStream other_purpose(7, "pso", 2), other_index(7, "sensing", 3), other_seed(8, "sensing", 2);
+  RandomStream other_purpose(7, "pso", 2), other_index(7, "sensing", 3),
+      other_seed(8, "sensing", 2);
   const std::uint64_t first = base.nextU64();
   EXPECT_NE(first, other_purpose.nextU64());
   EXPECT_NE(first, other_index.nextU64());

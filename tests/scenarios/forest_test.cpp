@@ -12,7 +12,8 @@ double minimumGap(const std::vector<world::TreeDef>& trees) {
   double gap = INFINITY;  // O(n²): fine for test sizes, and independent of the code under test
   for (std::size_t a = 0; a < trees.size(); ++a) {
     for (std::size_t b = a + 1; b < trees.size(); ++b) {
-      gap = std::min(gap, (trees[a].centre - trees[b].centre).norm() - trees[a].radius - trees[b].radius);
+      gap = std::min(
+          gap, (trees[a].centre - trees[b].centre).norm() - trees[a].radius - trees[b].radius);
     }
   }
   return gap;
@@ -25,7 +26,8 @@ TEST(PoissonForest, CountIsPoissonWithMeanLambdaTimesArea) {
   double sum = 0.0, sum2 = 0.0;
   const int seeds = 30;
   for (int s = 0; s < seeds; ++s) {
-    const auto trees = poissonForest({region, lambda, {1.0, 2.0}, static_cast<std::uint64_t>(s), std::nullopt});
+    const auto trees =
+        poissonForest({region, lambda, {1.0, 2.0}, static_cast<std::uint64_t>(s), std::nullopt});
     for (const auto& tree : trees) {
       ASSERT_TRUE(region.contains(tree.centre));
       ASSERT_GE(tree.radius, 1.0);
@@ -55,13 +57,16 @@ TEST(PoissonForest, PointsAreSpatiallyUniform) {
 TEST(PoissonForest, MinimumGapIsRespectedAndDensityMatchesMaternII) {
   const Aabb region{Vec2(0, 0), Vec2(300, 300)};
   const double lambda = 0.02, r = 1.5, gap = 2.0;
-  // Matérn II intensity by hand: D = 2r + gap = 5, λπD² = 1.5708, (1 − e^−1.5708)/(π·25) = 0.010221.
-  const double expected_intensity = (1.0 - std::exp(-lambda * std::numbers::pi * 25.0)) / (std::numbers::pi * 25.0);
+  // Matérn II intensity by hand: D = 2r + gap = 5, λπD² = 1.5708, (1 − e^−1.5708)/(π·25) =
+  // 0.010221.
+  const double expected_intensity =
+      (1.0 - std::exp(-lambda * std::numbers::pi * 25.0)) / (std::numbers::pi * 25.0);
   EXPECT_NEAR(maternIIIntensity(lambda, r, gap), expected_intensity, 1e-15);
   double total = 0.0;
   const int seeds = 10;
   for (int s = 0; s < seeds; ++s) {
-    const auto trees = poissonForest({region, lambda, {r, r}, static_cast<std::uint64_t>(100 + s), gap});
+    const auto trees =
+        poissonForest({region, lambda, {r, r}, static_cast<std::uint64_t>(100 + s), gap});
     EXPECT_GE(minimumGap(trees), gap - 1e-9);
     total += static_cast<double>(trees.size());
   }

@@ -50,7 +50,8 @@ TEST(Loader, EffectiveConfigReloadsToTheSameConfig) {
   const ScenarioSpec again = loadScenarioText(spec.effective_config, spec.file.string());
   EXPECT_EQ(again.effective_config, spec.effective_config);
   EXPECT_EQ(again.trees.size(), spec.trees.size());
-  for (std::size_t k = 0; k < spec.trees.size(); ++k) EXPECT_EQ(again.trees[k].centre, spec.trees[k].centre);
+  for (std::size_t k = 0; k < spec.trees.size(); ++k)
+    EXPECT_EQ(again.trees[k].centre, spec.trees[k].centre);
 }
 
 TEST(Loader, OverridesEditDottedPathsBeforeValidation) {
@@ -94,7 +95,8 @@ TEST(Loader, UavStartDefaultsToItsScriptedPath) {
 TEST(Loader, LayoutIncludesResolveBesideTheFileAndNest) {
   const fs::path dir = fs::temp_directory_path() / "canopy_loader_include";
   fs::create_directories(dir / "layouts");
-  std::ofstream(dir / "layouts" / "inner.json") << R"([{"type": "disc", "centre": [50, 50], "radius": 2}])";
+  std::ofstream(dir / "layouts" / "inner.json")
+      << R"([{"type": "disc", "centre": [50, 50], "radius": 2}])";
   std::ofstream(dir / "layouts" / "outer.json")
       << R"({"description": "x", "occluders": [{"include": "inner.json"},
              {"type": "disc", "centre": [60, 50], "radius": 1}]})";
@@ -136,7 +138,8 @@ TEST(Loader, MutatedFilesFailCleanly) {
     std::string mutated = text;
     const int edits = 1 + static_cast<int>(rng.uniform() * 3);
     for (int e = 0; e < edits; ++e) {
-      const std::size_t at = static_cast<std::size_t>(rng.uniform() * static_cast<double>(mutated.size()));
+      const std::size_t at =
+          static_cast<std::size_t>(rng.uniform() * static_cast<double>(mutated.size()));
       const char replacement = "0-9e.,:[]{}\" -aZ"[static_cast<int>(rng.uniform() * 17)];
       if (rng.bernoulli(0.5)) {
         mutated[at] = replacement;

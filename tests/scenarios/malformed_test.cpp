@@ -16,74 +16,179 @@ namespace fs = std::filesystem;
 
 struct Case {
   std::string name;
-  std::string scenario;                     // the file under test (scenario.json)
-  std::vector<std::string> expected;        // fragments the message must contain
+  std::string scenario;               // the file under test (scenario.json)
+  std::vector<std::string> expected;  // fragments the message must contain
   std::map<std::string, std::string> extra_files = {};
   std::string extra_args = "";
-  bool names_file = true;                   // errors in --set values name "--set" instead
+  bool names_file = true;  // errors in --set values name "--set" instead
 };
 
 // A valid base; cases splice their error into it.
-std::string base(const std::string& uavs = R"([{"start": [10, 10]}])",
-                 const std::string& targets = R"([{"path": {"start": [20, 20], "velocity": [1, 0]}}])",
-                 const std::string& rest = "") {
+std::string base(
+    const std::string& uavs = R"([{"start": [10, 10]}])",
+    const std::string& targets = R"([{"path": {"start": [20, 20], "velocity": [1, 0]}}])",
+    const std::string& rest = "") {
   return R"({"aoi": [0, 0, 100, 50], "uavs": )" + uavs + R"(, "targets": )" + targets + rest + "}";
 }
 
+// clang-format off: one case per line reads as a table.
 const std::vector<Case>& cases() {
   static const std::vector<Case> table = {
       {"SyntaxError", R"({"aoi": [0, 0, 100, 50] "uavs": []})", {"line 1, column", "invalid JSON"}},
       {"InfiniteNumber", R"({"aoi": [0, 0, 1e999, 50]})", {"number overflow", "finite"}},
       {"NaNLiteral", R"({"aoi": [0, 0, NaN, 50]})", {"invalid JSON"}},
       {"NotAnObject", R"([1, 2, 3])", {"expected an object, got an array"}},
-      {"UnknownTopLevelField", base("[{\"start\": [10, 10]}]", "[]", R"(, "speed": 3)"), {"speed: unknown field"}},
-      {"UnknownNestedField", base(R"([{"start": [10, 10], "fov": {"sise": [10, 10]}}])"), {"uavs[0].fov.sise: unknown field"}},
-      {"AoiWrongType", R"({"aoi": "big", "uavs": [{"start": [1, 1]}]})", {"aoi: expected an array of 4 elements, got the string \"big\""}},
-      {"AoiInverted", R"({"aoi": [10, 0, 0, 50], "uavs": [{"start": [1, 1]}]})", {"aoi: expected [x_min, y_min, x_max, y_max]"}},
-      {"NegativeDt", base("[{\"start\": [10, 10]}]", "[]", R"(, "clock": {"dt": -0.2})"), {"clock.dt: expected a positive number, got the number -0.2"}},
-      {"DurationShorterThanAStep", base("[{\"start\": [10, 10]}]", "[]", R"(, "clock": {"dt": 0.5, "duration": 0.1})"), {"clock.duration: expected a duration of at least one step"}},
+      {"UnknownTopLevelField",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "speed": 3)"),
+       {"speed: unknown field"}},
+      {"UnknownNestedField",
+       base(R"([{"start": [10, 10], "fov": {"sise": [10, 10]}}])"),
+       {"uavs[0].fov.sise: unknown field"}},
+      {"AoiWrongType",
+       R"({"aoi": "big", "uavs": [{"start": [1, 1]}]})",
+       {"aoi: expected an array of 4 elements, got the string \"big\""}},
+      {"AoiInverted",
+       R"({"aoi": [10, 0, 0, 50], "uavs": [{"start": [1, 1]}]})",
+       {"aoi: expected [x_min, y_min, x_max, y_max]"}},
+      {"NegativeDt",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "clock": {"dt": -0.2})"),
+       {"clock.dt: expected a positive number, got the number -0.2"}},
+      {"DurationShorterThanAStep",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "clock": {"dt": 0.5, "duration": 0.1})"),
+       {"clock.duration: expected a duration of at least one step"}},
       {"MissingUavs", R"({"aoi": [0, 0, 100, 50]})", {"uavs: missing required field"}},
       {"EmptyUavs", base("[]"), {"uavs: expected an array of 1 to 256 elements, got 0 elements"}},
-      {"UavOutsideAoi", base(R"([{"start": [10, 60]}])"), {"uavs[0].start: expected a start inside the AOI [0, 0, 100, 50], got (10, 60)"}},
+      {"UavOutsideAoi",
+       base(R"([{"start": [10, 60]}])"),
+       {"uavs[0].start: expected a start inside the AOI [0, 0, 100, 50], got (10, 60)"}},
       {"UavMissingStart", base(R"([{"v_max": 3}])"), {"uavs[0].start: missing required field"}},
-      {"NegativeFootprint", base(R"([{"start": [10, 10], "fov": {"size": [10, -4]}}])"), {"uavs[0].fov.size[1]: expected a positive number, got the number -4"}},
-      {"FootprintTwoShapes", base(R"([{"start": [10, 10], "fov": {"size": [10, 4], "radius": 3}}])"), {"uavs[0].fov: give only one of \"size\" and \"radius\""}},
-      {"ZeroVmax", base(R"([{"start": [10, 10], "v_max": 0}])"), {"uavs[0].v_max: expected a positive number, got the number 0"}},
-      {"BadYawMode", base(R"([{"start": [10, 10], "yaw": "north"}])"), {"uavs[0].yaw: expected one of \"velocity\", got the string \"north\""}},
-      {"DuplicateUavNames", base(R"([{"name": "a", "start": [1, 1]}, {"name": "a", "start": [2, 2]}])"), {"uavs[1].name: expected a unique UAV name"}},
-      {"EmptyWaypoints", base("[{\"start\": [10, 10]}]", R"([{"path": {"waypoints": []}}])"), {"targets[0].path.waypoints: expected an array of at least 1 element, got 0 elements"}},
-      {"NonMonotonicWaypoints", base("[{\"start\": [10, 10]}]", R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}, {"t": 5, "p": [2, 2]}, {"t": 5, "p": [3, 3]}]}}])"), {"targets[0].path.waypoints[2].t: expected a time greater than the previous point's (5 s)"}},
-      {"WaypointOutsideAoi", base("[{\"start\": [10, 10]}]", R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}, {"t": 5, "p": [200, 2]}]}}])"), {"targets[0].path.waypoints[1].p: expected a waypoint inside the AOI"}},
-      {"VelocityPathLeavesAoi", base("[{\"start\": [10, 10]}]", R"([{"path": {"start": [20, 20], "velocity": [10, 0]}}])"), {"targets[0].path: expected the position at the end of the run"}},
-      {"PathWithNoKind", base("[{\"start\": [10, 10]}]", R"([{"path": {}}])"), {"targets[0].path: expected a path"}},
-      {"PathWithTwoKinds", base("[{\"start\": [10, 10]}]", R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}], "track": [[0, 1, 1]]}}])"), {"targets[0].path: give only one of"}},
-      {"TargetLabelTree", base("[{\"start\": [10, 10]}]", R"([{"label": "tree", "path": {"start": [20, 20], "velocity": [0, 0]}}])"), {"targets[0].label: expected a target label other than \"tree\""}},
-      {"MissingTrackFile", base("[{\"start\": [10, 10]}]", R"([{"path": {"track": "nowhere.csv"}}])"), {"targets[0].path.track: cannot read the track file"}},
-      {"MalformedTrackFile", base("[{\"start\": [10, 10]}]", R"([{"path": {"track": "walk.csv"}}])"), {"walk.csv: line 3: expected \"t,x,y\""}, {{"walk.csv", "t,x,y\n0,1,1\n2,oops,1\n"}}},
-      {"UnknownOccluderType", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "bush"}])"), {"occluders[0].type: expected one of \"disc\", \"polygon\", \"poisson\", \"grid\", \"cluster\""}},
-      {"NegativeTreeRadius", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "disc", "centre": [5, 5], "radius": -1}])"), {"occluders[0].radius: expected a positive number"}},
-      {"TreeOutsideAoi", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "disc", "centre": [500, 5], "radius": 1}])"), {"occluders[0].centre: expected every tree inside the AOI"}},
-      {"ConcavePolygon", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "polygon", "vertices": [[0, 0], [4, 0], [2, 1], [4, 4], [0, 4]]}])"), {"occluders[0].vertices: expected the vertices of a convex polygon"}},
-      {"HugePoissonForest", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "poisson", "lambda": 1000, "radius": 1}])"), {"occluders[0]: expected a layout of at most"}},
-      {"MissingInclude", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "none.json"}])"), {"occluders[0].include: cannot find the layout file 'none.json'"}},
-      {"IncludeCycle", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "loop.json"}])"), {"loop.json: occluders[0].include: include cycle"}, {{"loop.json", R"({"occluders": [{"include": "loop.json"}]})"}}},
-      {"BrokenIncludedLayout", base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "bad.json"}])"), {"bad.json: occluders[0].radius: expected a positive number"}, {{"bad.json", R"({"occluders": [{"type": "disc", "centre": [1, 1], "radius": "big"}]})"}}},
-      {"UnknownPlanner", base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"algorithm": "greedy"})"), {"planner.algorithm: expected one of \"none\", \"sma\", \"dec_pomdp\", \"centralized\""}},
-      {"ZeroHorizon", base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"horizon": 0})"), {"planner.horizon: expected an integer in [1, 50], got the number 0"}},
-      {"FractionalHorizon", base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"horizon": 2.5})"), {"planner.horizon: expected an integer in [1, 50], got the number 2.5"}},
-      {"PlanPeriodNotAMultipleOfDt", base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"plan_period": 0.3})"), {"planner.plan_period: expected a whole multiple of clock.dt (0.2 s)"}},
-      {"GateProbabilityOne", base("[{\"start\": [10, 10]}]", "[]", R"(, "tracking": {"gate_probability": 1.0})"), {"tracking.gate_probability: expected a probability in (0, 1)"}},
-      {"UnknownFusionMethod", base("[{\"start\": [10, 10]}]", "[]", R"(, "fusion": {"method": "kalman"})"), {"fusion.method: expected one of \"ci\", \"hcmci\", \"observer_average\""}},
-      {"CommDropOne", base("[{\"start\": [10, 10]}]", "[]", R"(, "fusion": {"comm_drop": 1})"), {"fusion.comm_drop: expected a probability below 1"}},
-      {"OwnershipNamesUnknownTarget", base("[{\"start\": [10, 10]}]", "[]", R"(, "analysis": {"states": [{"name": "M0", "sets": [["ghost"]]}]})"), {"analysis.states[0].sets[0][0]: expected the name of a target, got \"ghost\""}},
-      {"NegativeSeed", base("[{\"start\": [10, 10]}]", "[]", R"(, "seed": -3)"), {"seed: expected a non-negative integer, got the number -3"}},
-      {"BadOverridePath", base(), {"--set: uavs.5.v_max: 'uavs' is an array of 1 elements"}, {}, "--set uavs.5.v_max=3", false},
-      {"OverrideMakesValueInvalid", base(), {"planner.horizon: expected an integer in [1, 50], got the string \"abc\""}, {}, "--set planner.horizon=abc"},
+      {"NegativeFootprint",
+       base(R"([{"start": [10, 10], "fov": {"size": [10, -4]}}])"),
+       {"uavs[0].fov.size[1]: expected a positive number, got the number -4"}},
+      {"FootprintTwoShapes",
+       base(R"([{"start": [10, 10], "fov": {"size": [10, 4], "radius": 3}}])"),
+       {"uavs[0].fov: give only one of \"size\" and \"radius\""}},
+      {"ZeroVmax",
+       base(R"([{"start": [10, 10], "v_max": 0}])"),
+       {"uavs[0].v_max: expected a positive number, got the number 0"}},
+      {"BadYawMode",
+       base(R"([{"start": [10, 10], "yaw": "north"}])"),
+       {"uavs[0].yaw: expected one of \"velocity\", got the string \"north\""}},
+      {"DuplicateUavNames",
+       base(R"([{"name": "a", "start": [1, 1]}, {"name": "a", "start": [2, 2]}])"),
+       {"uavs[1].name: expected a unique UAV name"}},
+      {"EmptyWaypoints",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {"waypoints": []}}])"),
+       {"targets[0].path.waypoints: expected an array of at least 1 element, got 0 elements"}},
+      {"NonMonotonicWaypoints",
+       base(
+           "[{\"start\": [10, 10]}]",
+           R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}, {"t": 5, "p": [2, 2]}, {"t": 5, "p": [3, 3]}]}}])"),
+       {"targets[0].path.waypoints[2].t: expected a time greater than the previous point's (5 s)"}},
+      {"WaypointOutsideAoi",
+       base("[{\"start\": [10, 10]}]",
+            R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}, {"t": 5, "p": [200, 2]}]}}])"),
+       {"targets[0].path.waypoints[1].p: expected a waypoint inside the AOI"}},
+      {"VelocityPathLeavesAoi",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {"start": [20, 20], "velocity": [10, 0]}}])"),
+       {"targets[0].path: expected the position at the end of the run"}},
+      {"PathWithNoKind",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {}}])"),
+       {"targets[0].path: expected a path"}},
+      {"PathWithTwoKinds",
+       base("[{\"start\": [10, 10]}]",
+            R"([{"path": {"waypoints": [{"t": 0, "p": [1, 1]}], "track": [[0, 1, 1]]}}])"),
+       {"targets[0].path: give only one of"}},
+      {"TargetLabelTree",
+       base("[{\"start\": [10, 10]}]",
+            R"([{"label": "tree", "path": {"start": [20, 20], "velocity": [0, 0]}}])"),
+       {"targets[0].label: expected a target label other than \"tree\""}},
+      {"MissingTrackFile",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {"track": "nowhere.csv"}}])"),
+       {"targets[0].path.track: cannot read the track file"}},
+      {"MalformedTrackFile",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {"track": "walk.csv"}}])"),
+       {"walk.csv: line 3: expected \"t,x,y\""},
+       {{"walk.csv", "t,x,y\n0,1,1\n2,oops,1\n"}}},
+      {"UnknownOccluderType",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"type": "bush"}])"),
+       {"occluders[0].type: expected one of \"disc\", \"polygon\", \"poisson\", \"grid\", "
+        "\"cluster\""}},
+      {"NegativeTreeRadius",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "disc", "centre": [5, 5], "radius": -1}])"),
+       {"occluders[0].radius: expected a positive number"}},
+      {"TreeOutsideAoi",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "disc", "centre": [500, 5], "radius": 1}])"),
+       {"occluders[0].centre: expected every tree inside the AOI"}},
+      {"ConcavePolygon",
+       base(
+           "[{\"start\": [10, 10]}]", "[]",
+           R"(, "occluders": [{"type": "polygon", "vertices": [[0, 0], [4, 0], [2, 1], [4, 4], [0, 4]]}])"),
+       {"occluders[0].vertices: expected the vertices of a convex polygon"}},
+      {"HugePoissonForest",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "poisson", "lambda": 1000, "radius": 1}])"),
+       {"occluders[0]: expected a layout of at most"}},
+      {"MissingInclude",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "none.json"}])"),
+       {"occluders[0].include: cannot find the layout file 'none.json'"}},
+      {"IncludeCycle",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "loop.json"}])"),
+       {"loop.json: occluders[0].include: include cycle"},
+       {{"loop.json", R"({"occluders": [{"include": "loop.json"}]})"}}},
+      {"BrokenIncludedLayout",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "bad.json"}])"),
+       {"bad.json: occluders[0].radius: expected a positive number"},
+       {{"bad.json", R"({"occluders": [{"type": "disc", "centre": [1, 1], "radius": "big"}]})"}}},
+      {"UnknownPlanner",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"algorithm": "greedy"})"),
+       {"planner.algorithm: expected one of \"none\", \"sma\", \"dec_pomdp\", \"centralized\""}},
+      {"ZeroHorizon",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"horizon": 0})"),
+       {"planner.horizon: expected an integer in [1, 50], got the number 0"}},
+      {"FractionalHorizon",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"horizon": 2.5})"),
+       {"planner.horizon: expected an integer in [1, 50], got the number 2.5"}},
+      {"PlanPeriodNotAMultipleOfDt",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"plan_period": 0.3})"),
+       {"planner.plan_period: expected a whole multiple of clock.dt (0.2 s)"}},
+      {"GateProbabilityOne",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "tracking": {"gate_probability": 1.0})"),
+       {"tracking.gate_probability: expected a probability in (0, 1)"}},
+      {"UnknownFusionMethod",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "fusion": {"method": "kalman"})"),
+       {"fusion.method: expected one of \"ci\", \"hcmci\", \"observer_average\""}},
+      {"CommDropOne",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "fusion": {"comm_drop": 1})"),
+       {"fusion.comm_drop: expected a probability below 1"}},
+      {"OwnershipNamesUnknownTarget",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "analysis": {"states": [{"name": "M0", "sets": [["ghost"]]}]})"),
+       {"analysis.states[0].sets[0][0]: expected the name of a target, got \"ghost\""}},
+      {"NegativeSeed",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "seed": -3)"),
+       {"seed: expected a non-negative integer, got the number -3"}},
+      {"BadOverridePath",
+       base(),
+       {"--set: uavs.5.v_max: 'uavs' is an array of 1 elements"},
+       {},
+       "--set uavs.5.v_max=3",
+       false},
+      {"OverrideMakesValueInvalid",
+       base(),
+       {"planner.horizon: expected an integer in [1, 50], got the string \"abc\""},
+       {},
+       "--set planner.horizon=abc"},
   };
   return table;
 }
+// clang-format on
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.name;
+}
 
 struct Outcome {
   int exit_code = -1;
@@ -116,7 +221,8 @@ TEST_P(MalformedScenario, ExitsWithCode2AndNamesFileFieldAndExpectation) {
   const Outcome outcome = runCanopy("validate " + file.string() + " " + c.extra_args);
   EXPECT_EQ(outcome.exit_code, 2) << outcome.output;
   if (c.names_file) {
-    EXPECT_NE(outcome.output.find(dir.string()), std::string::npos) << "file not named: " << outcome.output;
+    EXPECT_NE(outcome.output.find(dir.string()), std::string::npos)
+        << "file not named: " << outcome.output;
   }
   for (const std::string& fragment : c.expected) {
     EXPECT_NE(outcome.output.find(fragment), std::string::npos)
@@ -125,9 +231,13 @@ TEST_P(MalformedScenario, ExitsWithCode2AndNamesFileFieldAndExpectation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, MalformedScenario, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& param) { return param.param.name; });
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return param.param.name;
+                         });
 
-TEST(MalformedScenarioTable, HoldsAtLeast25Cases) { EXPECT_GE(cases().size(), 25u); }
+TEST(MalformedScenarioTable, HoldsAtLeast25Cases) {
+  EXPECT_GE(cases().size(), 25u);
+}
 
 TEST(CommandLine, MissingScenarioAndBadOptionsExitWith2) {
   EXPECT_EQ(runCanopy("validate /nonexistent/file.json").exit_code, 2);

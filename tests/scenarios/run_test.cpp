@@ -60,7 +60,8 @@ TEST(Run, ScriptedUavsFollowTheirSweeps) {
     for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
       // The sweeps never ask for more than v_max, so the UAVs are on their paths at every step.
       const Vec2 expected = spec.uavs[i].path->positionAt(t);
-      EXPECT_NEAR((sim.truth().uavs[i].position - expected).norm(), 0.0, 1e-3) << "uav " << i << " t " << t;
+      EXPECT_NEAR((sim.truth().uavs[i].position - expected).norm(), 0.0, 1e-3)
+          << "uav " << i << " t " << t;
     }
   }
 }

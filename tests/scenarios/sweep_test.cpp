@@ -34,7 +34,8 @@ std::string slurp(const fs::path& path) {
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
-    if (entry.is_regular_file()) files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
+    if (entry.is_regular_file())
+      files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
   }
   return files;
 }
@@ -83,7 +84,8 @@ TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
   std::ofstream(resumed / (it->first + ".tmp")) << "{\"scenario\": \"dem";
   fs::remove(resumed / (++it)->first);
   int last_resumed = -1;
-  EXPECT_EQ(runSweep(sweep, {resumed, 2, [&](const SweepProgress& p) { last_resumed = p.resumed; }}), 2);
+  EXPECT_EQ(
+      runSweep(sweep, {resumed, 2, [&](const SweepProgress& p) { last_resumed = p.resumed; }}), 2);
   EXPECT_EQ(last_resumed, 10);
   EXPECT_EQ(trialFiles(resumed), trialFiles(whole));
   EXPECT_EQ(runSweep(sweep, {resumed, 2, {}}), 0);  // nothing left to do
@@ -113,9 +115,11 @@ TEST(Sweep, LoadsBackEveryTrialGroupedByConfiguration) {
 TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
   EXPECT_THROW(loadSweepText(R"({"scenario": "no_such_scenario"})", "s.json"), ScenarioError);
   EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "trials": 0})", "s.json"), ScenarioError);
-  EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "axes": [{"path": "x"}]})", "s.json"), ScenarioError);
+  EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "axes": [{"path": "x"}]})", "s.json"),
+               ScenarioError);
   const fs::path dir = freshDir("bad");
-  const SweepSpec bad = loadSweepText(R"({"scenario": "demo", "axes": [{"path": "planner.horizon", "values": [0]}]})", "s.json");
+  const SweepSpec bad = loadSweepText(
+      R"({"scenario": "demo", "axes": [{"path": "planner.horizon", "values": [0]}]})", "s.json");
   try {
     runSweep(bad, {dir, 1, {}});
     FAIL() << "expected a ScenarioError";

@@ -8,13 +8,15 @@
 namespace canopy::sensing {
 namespace {
 
-FootprintDef rectangle(double w, double h) { return {FootprintShape::rectangle, Vec2(w, h), 0.0}; }
+FootprintDef rectangle(double w, double h) {
+  return {FootprintShape::rectangle, Vec2(w, h), 0.0};
+}
 
 TEST(Footprint, AxisAlignedRectangleIsClosed) {
   const Footprint f = Footprint::place(rectangle(20, 10), Vec2(5, 5), 0.0);
-  EXPECT_TRUE(f.contains(Vec2(15, 10)));    // corner
-  EXPECT_TRUE(f.contains(Vec2(-5, 0)));     // opposite corner
-  EXPECT_TRUE(f.contains(Vec2(15, 5)));     // edge midpoint
+  EXPECT_TRUE(f.contains(Vec2(15, 10)));  // corner
+  EXPECT_TRUE(f.contains(Vec2(-5, 0)));   // opposite corner
+  EXPECT_TRUE(f.contains(Vec2(15, 5)));   // edge midpoint
   EXPECT_FALSE(f.contains(Vec2(15.001, 10)));
   EXPECT_FALSE(f.contains(Vec2(5, 10.001)));
   EXPECT_DOUBLE_EQ(f.area(), 200.0);
@@ -23,9 +25,9 @@ TEST(Footprint, AxisAlignedRectangleIsClosed) {
 TEST(Footprint, RectangleWidthLiesAlongTheHeading) {
   // Heading north (ψ = π/2): 20 m along y, 10 m along x.
   const Footprint f = Footprint::place(rectangle(20, 10), Vec2(5, 5), std::numbers::pi / 2);
-  EXPECT_TRUE(f.contains(Vec2(10, 15)));   // corner (5 + 5, 5 + 10)
-  EXPECT_TRUE(f.contains(Vec2(0, -5)));    // corner (5 − 5, 5 − 10)
-  EXPECT_FALSE(f.contains(Vec2(11, 5)));   // 6 m across the heading
+  EXPECT_TRUE(f.contains(Vec2(10, 15)));  // corner (5 + 5, 5 + 10)
+  EXPECT_TRUE(f.contains(Vec2(0, -5)));   // corner (5 − 5, 5 − 10)
+  EXPECT_FALSE(f.contains(Vec2(11, 5)));  // 6 m across the heading
   EXPECT_TRUE(f.contains(Vec2(5, 14.9)));
 }
 
@@ -59,7 +61,8 @@ TEST(Footprint, DiscIsClosed) {
 
 TEST(Footprint, PointsFromTheUnitSquareFallInside) {
   const Footprint rect = Footprint::place(rectangle(8, 4), Vec2(3, -2), 1.1);
-  const Footprint disc = Footprint::place({FootprintShape::disc, Vec2::Zero(), 5.0}, Vec2(3, -2), 0.0);
+  const Footprint disc =
+      Footprint::place({FootprintShape::disc, Vec2::Zero(), 5.0}, Vec2(3, -2), 0.0);
   for (int i = 0; i < 20; ++i) {
     for (int j = 0; j < 20; ++j) {
       EXPECT_TRUE(rect.contains(rect.pointFromUnitSquare(i / 20.0, j / 20.0)));

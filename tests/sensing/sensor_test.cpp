@@ -40,11 +40,11 @@ Bench oneUavAtOrigin() {
 TEST(Sense, CanopyAndLineOfSightDifferOnAHandBuiltLayout) {
   Bench b = oneUavAtOrigin();
   b.def.trees.push_back(TreeDef::disc(Vec2(5, 0), 1.0));
-  b.target(Vec2(10, 0));    // 0: behind the tree, not under it
-  b.target(Vec2(5, 0.5));   // 1: under the crown
-  b.target(Vec2(0, 8));     // 2: in the open
-  b.target(Vec2(30, 0));    // 3: outside the 40 x 40 footprint
-  b.target(Vec2(5, 1.0));   // 4: on the rim: not strictly inside, but the ray cuts the crown
+  b.target(Vec2(10, 0));   // 0: behind the tree, not under it
+  b.target(Vec2(5, 0.5));  // 1: under the crown
+  b.target(Vec2(0, 8));    // 2: in the open
+  b.target(Vec2(30, 0));   // 3: outside the 40 x 40 footprint
+  b.target(Vec2(5, 1.0));  // 4: on the rim: not strictly inside, but the ray cuts the crown
   RandomStream rng(1, "sensing");
   const Scan canopy = b.scan(rng);
   EXPECT_EQ(canopy.in_footprint, (std::vector<int>{0, 1, 2, 4}));
@@ -128,8 +128,8 @@ TEST(Sense, ClutterIsPoissonAndUniformOverTheFootprint) {
 
 TEST(Sense, TreesAreSeenWhenTheirCentreIsInTheFootprintAndNeverHideThemselves) {
   Bench b = oneUavAtOrigin();
-  b.def.trees.push_back(TreeDef::disc(Vec2(19, 0), 3.0));   // centre inside
-  b.def.trees.push_back(TreeDef::disc(Vec2(21, 0), 3.0));   // centre outside, crown overlaps
+  b.def.trees.push_back(TreeDef::disc(Vec2(19, 0), 3.0));  // centre inside
+  b.def.trees.push_back(TreeDef::disc(Vec2(21, 0), 3.0));  // centre outside, crown overlaps
   b.config.tree_radius_sigma = 0.2;
   world::World w(b.def);
   RandomStream rng(6, "sensing");

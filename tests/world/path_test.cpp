@@ -6,9 +6,10 @@ namespace canopy::world {
 namespace {
 
 TEST(Path, WaypointsInterpolateLinearlyAndHoldAtTheEnds) {
-  const Path path = Path::throughPoints({{2.0, Vec2(0, 0)}, {4.0, Vec2(10, 0)}, {8.0, Vec2(10, 20)}});
-  EXPECT_EQ(path.positionAt(0.0), Vec2(0, 0));   // waits at the first point
-  EXPECT_EQ(path.positionAt(3.0), Vec2(5, 0));   // halfway along 0→10 in 2 s
+  const Path path =
+      Path::throughPoints({{2.0, Vec2(0, 0)}, {4.0, Vec2(10, 0)}, {8.0, Vec2(10, 20)}});
+  EXPECT_EQ(path.positionAt(0.0), Vec2(0, 0));  // waits at the first point
+  EXPECT_EQ(path.positionAt(3.0), Vec2(5, 0));  // halfway along 0→10 in 2 s
   EXPECT_EQ(path.positionAt(4.0), Vec2(10, 0));
   EXPECT_EQ(path.positionAt(6.0), Vec2(10, 10));
   EXPECT_EQ(path.positionAt(99.0), Vec2(10, 20));  // stays at the last point

@@ -11,7 +11,7 @@ namespace {
 TEST(Tree, DiscInteriorIsStrictRimIsNotInside) {
   const TreeDef tree = TreeDef::disc(Vec2(0, 0), 2.0);
   EXPECT_TRUE(strictlyInside(tree, Vec2(1.999, 0)));
-  EXPECT_FALSE(strictlyInside(tree, Vec2(2.0, 0)));    // on the rim: visible
+  EXPECT_FALSE(strictlyInside(tree, Vec2(2.0, 0)));  // on the rim: visible
   EXPECT_FALSE(strictlyInside(tree, Vec2(0, -2.0)));
   EXPECT_FALSE(strictlyInside(tree, Vec2(1.5, 1.5)));  // |p| = 2.12
 }
@@ -30,10 +30,10 @@ TEST(Tree, PolygonStoresCounterClockwiseCentroidAndEqualAreaRadius) {
 
 TEST(Tree, ConvexityRejectsReflexCollinearAndSelfIntersectingPolygons) {
   EXPECT_TRUE(isStrictlyConvex({{0, 0}, {1, 0}, {0, 1}}));
-  EXPECT_TRUE(isStrictlyConvex({{0, 0}, {0, 1}, {1, 0}}));                 // clockwise is fine
+  EXPECT_TRUE(isStrictlyConvex({{0, 0}, {0, 1}, {1, 0}}));                     // clockwise is fine
   EXPECT_FALSE(isStrictlyConvex({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}));  // reflex vertex
-  EXPECT_FALSE(isStrictlyConvex({{0, 0}, {1, 0}, {2, 0}, {1, 1}}));        // three in a line
-  EXPECT_FALSE(isStrictlyConvex({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));        // a bow tie
+  EXPECT_FALSE(isStrictlyConvex({{0, 0}, {1, 0}, {2, 0}, {1, 1}}));            // three in a line
+  EXPECT_FALSE(isStrictlyConvex({{0, 0}, {2, 2}, {2, 0}, {0, 2}}));            // a bow tie
   EXPECT_FALSE(isStrictlyConvex({{0, 0}, {1, 0}}));
 }
 
@@ -55,10 +55,10 @@ TEST(Tree, SegmentEntryIntoADiscMatchesTheQuadraticRoot) {
 TEST(Tree, SegmentEntryIntoAPolygonByClipping) {
   const TreeDef square = TreeDef::polygon({{2, -1}, {4, -1}, {4, 1}, {2, 1}});
   EXPECT_NEAR(segmentEntry(square, Vec2(0, 0), Vec2(10, 0)), 0.2, 1e-12);
-  EXPECT_LT(segmentEntry(square, Vec2(0, 1), Vec2(10, 1)), 0.0);     // along an edge
-  EXPECT_LT(segmentEntry(square, Vec2(2, 3), Vec2(6, -1)), 0.0);     // x + y = 5 touches (4, 1)
-  EXPECT_EQ(segmentEntry(square, Vec2(3, 0), Vec2(3, 10)), 0.0);     // starts inside
-  EXPECT_LT(segmentEntry(square, Vec2(0, 0), Vec2(1.5, 0)), 0.0);    // stops short
+  EXPECT_LT(segmentEntry(square, Vec2(0, 1), Vec2(10, 1)), 0.0);   // along an edge
+  EXPECT_LT(segmentEntry(square, Vec2(2, 3), Vec2(6, -1)), 0.0);   // x + y = 5 touches (4, 1)
+  EXPECT_EQ(segmentEntry(square, Vec2(3, 0), Vec2(3, 10)), 0.0);   // starts inside
+  EXPECT_LT(segmentEntry(square, Vec2(0, 0), Vec2(1.5, 0)), 0.0);  // stops short
 }
 
 TEST(Tree, BoundsHoldTheCrown) {

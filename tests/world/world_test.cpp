@@ -21,10 +21,10 @@ TEST(World, TargetsPassTheirWaypointsAtTheScriptedTimes) {
   // Waypoint times that are not multiples of dt, a stop, and a fast leg (20 m/s: 4 m per step of
   // 0.2 s, twice Box2D's per-step translation limit).
   def.targets.push_back({Path::throughPoints({{0.0, Vec2(0, 0)},
-                                               {1.3, Vec2(2.6, 0)},
-                                               {2.0, Vec2(2.6, 0)},
-                                               {4.0, Vec2(2.6, 40)},
-                                               {6.0, Vec2(-10, 10)}})});
+                                              {1.3, Vec2(2.6, 0)},
+                                              {2.0, Vec2(2.6, 0)},
+                                              {4.0, Vec2(2.6, 40)},
+                                              {6.0, Vec2(-10, 10)}})});
   World world(def);
   const double dt = 0.2;
   for (int k = 1; k <= 40; ++k) {
@@ -59,7 +59,7 @@ TEST(World, CommandedUavSpeedIsClampedToVmax) {
   EXPECT_NEAR(snap.uavs[0].position.x(), 3.0, 1e-5);
   EXPECT_NEAR(snap.uavs[0].position.y(), 4.0, 1e-5);
   EXPECT_DOUBLE_EQ(snap.uavs[0].yaw, 0.0);  // fixed yaw
-  world.commandUav(0, Vec2(1, 0));            // below v_max: unchanged
+  world.commandUav(0, Vec2(1, 0));          // below v_max: unchanged
   EXPECT_EQ(world.commandedVelocity(0), Vec2(1, 0));
 }
 
@@ -86,7 +86,8 @@ TEST(World, AabbQueryReturnsOverlappingBodiesInIdOrder) {
   World world(def);
   std::vector<BodyRef> found;
   world.queryAabb({Vec2(-5, -5), Vec2(5, 5)}, found);
-  const std::vector<BodyRef> expected{{BodyKind::target, 0}, {BodyKind::target, 2}, {BodyKind::tree, 0}};
+  const std::vector<BodyRef> expected{
+      {BodyKind::target, 0}, {BodyKind::target, 2}, {BodyKind::tree, 0}};
   EXPECT_EQ(found, expected);
 }
 
@@ -104,23 +105,24 @@ TEST(World, OccluderPointTestIsStrict) {
 
 TEST(World, RayCastFindsTheNearestOccluderOnTheSegment) {
   WorldDef def = emptyWorld();
-  def.trees.push_back(TreeDef::disc(Vec2(20, 0), 1.0));   // tree 0: far
-  def.trees.push_back(TreeDef::disc(Vec2(10, 0), 1.0));   // tree 1: near
-  def.trees.push_back(TreeDef::disc(Vec2(15, 5), 1.0));   // off the line
+  def.trees.push_back(TreeDef::disc(Vec2(20, 0), 1.0));  // tree 0: far
+  def.trees.push_back(TreeDef::disc(Vec2(10, 0), 1.0));  // tree 1: near
+  def.trees.push_back(TreeDef::disc(Vec2(15, 5), 1.0));  // off the line
   World world(def);
   EXPECT_EQ(world.firstOccluderOnSegment(Vec2(0, 0), Vec2(30, 0)), 1);
   EXPECT_EQ(world.firstOccluderOnSegment(Vec2(30, 0), Vec2(0, 0)), 0);
   EXPECT_EQ(world.firstOccluderOnSegment(Vec2(0, 0), Vec2(8.5, 0)), std::nullopt);
   EXPECT_EQ(world.firstOccluderOnSegment(Vec2(0, 1), Vec2(30, 1)), std::nullopt);  // grazes rims
-  EXPECT_EQ(world.firstOccluderOnSegment(Vec2(10.5, 0), Vec2(10.5, 0)), 1);      // zero length, inside
-  EXPECT_EQ(world.firstOccluderOnSegment(Vec2(10.2, 0.2), Vec2(0, 0)), 1);       // starts inside
+  EXPECT_EQ(world.firstOccluderOnSegment(Vec2(10.5, 0), Vec2(10.5, 0)), 1);  // zero length, inside
+  EXPECT_EQ(world.firstOccluderOnSegment(Vec2(10.2, 0.2), Vec2(0, 0)), 1);   // starts inside
 }
 
 TEST(World, RayCastAgreesWithBruteForceOnARandomForest) {
   WorldDef def = emptyWorld();
   for (int i = 0; i < 40; ++i) {
     for (int j = 0; j < 40; ++j) {
-      def.trees.push_back(TreeDef::disc(Vec2(-97.5 + 5 * i + (j % 3) * 0.7, -97.5 + 5 * j), 0.6 + 0.05 * ((i * j) % 7)));
+      def.trees.push_back(TreeDef::disc(Vec2(-97.5 + 5 * i + (j % 3) * 0.7, -97.5 + 5 * j),
+                                        0.6 + 0.05 * ((i * j) % 7)));
     }
   }
   World world(def);
