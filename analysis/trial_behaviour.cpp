@@ -58,7 +58,7 @@ TrialBehaviour analyseTrial(const scenarios::TrialResult& trial,
   out.coverage.assign(trial.targets, std::vector<int>(trial.steps(), 0));
   for (int k = 0; k < trial.steps(); ++k) {
     for (const TargetSet s : trial.in_footprint[k]) {
-      for (int t = 0; t < trial.targets; ++t) out.coverage[t][k] += (s >> t) & 1;
+      for (int t = 0; t < trial.targets; ++t) out.coverage[t][k] += static_cast<int>((s >> t) & 1);
     }
   }
   return out;
