@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
+#include "core/text_file.h"
 #include "scenarios/error.h"
 
 namespace canopy::scenarios {
@@ -23,19 +23,12 @@ constexpr const char* kSweep = R"({
            {"path": "sensing.occlusion_model", "values": ["canopy", "line_of_sight"]}]
 })";
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // Every trial file of a sweep directory, by relative path.
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
     if (entry.is_regular_file())
-      files[fs::relative(entry.path(), dir).string()] = slurp(entry.path());
+      files[fs::relative(entry.path(), dir).string()] = readTextFile(entry.path()).value();
   }
   return files;
 }
@@ -54,6 +47,19 @@ TEST(Sweep, ConfigurationsAreTheCartesianProductInAxisOrder) {
   EXPECT_EQ(configs[3].overrides,
             (std::vector<std::string>{"clock.duration=4.0", "sensing.p_detect=0.5",
                                       "sensing.occlusion_model=\"line_of_sight\""}));
+}
+
+TEST(Sweep, TheExampleSweepFileLoadsAsTwoTimesTwoConfigurations) {
+  const SweepSpec sweep = loadSweep(CANOPY_SOURCE_DIR "/scenarios/sweeps/handover_horizons.json");
+  EXPECT_EQ(sweep.trials, 10);
+  const std::vector<SweepConfig> configs = configurations(sweep);
+  ASSERT_EQ(configs.size(), 4u);
+  EXPECT_EQ(configs[1].overrides,
+            (std::vector<std::string>{"fusion.method=\"ci\"", "planner.algorithm=\"sma\"",
+                                      "planner.horizon=5"}));
+  for (const SweepConfig& config : configs) {  // every configuration is a valid scenario
+    EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt})) << config.id;
+  }
 }
 
 TEST(Sweep, TrialSeedsDependOnTheIndexOnly) {
