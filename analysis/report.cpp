@@ -277,8 +277,8 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
        << (!both_leave                                         ? "cannot be checked here"
            : std::stod(dynamic_time) > std::stod(apriori_time) ? "holds"
                                                                : "does not hold")
-       << ": coverage of I falls below 0.5 at " << apriori_time << " with the a-priori map and at "
-       << dynamic_time << " with the dynamic map.\n\n";
+       << ": the first time the coverage of I falls below 0.5 is " << apriori_time
+       << " (a-priori map) and " << dynamic_time << " (dynamic map).\n\n";
   }
 
   // Each bullet is one line of the report; the source breaks them at sentence boundaries.
@@ -325,7 +325,7 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "large UAV reaches the II–III midpoint after 35 m / 6 m/s ≈ 5.8 s. "
           "The planner's own cost at t = 0 ranks keeping M0 (the small UAV zig-zagging between II "
           "and III, the large one following I) below the swap: 87 against 460 at H = 5 and 284 "
-          "against 371 at H = 10 with the scenario's P0 = I (test ResourceAllocationCost, "
+          "against 371 at H = 10 with the scenario's P0 = I (test PaperScenarioCosts, "
           "tests/analysis/paper_scenario_costs_test.cpp). "
           "The paper's distances are not in its text; a layout with the targets closer together "
           "breaks the premise (the large footprint, 30 m wide, then holds all three).\n";
