@@ -1,11 +1,17 @@
 // Why two of the paper's findings do not reproduce (report.md, "Why some findings do not
-// reproduce"): the planner's own NBO cost, evaluated on hand-built joint plans, prefers the
-// non-cooperative plan. These tests pin that explanation: if the cost changes so that the
-// cooperative plan wins, they fail and the report's text must be revisited.
+// reproduce"): the planner's own NBO cost, evaluated on hand-built joint plans, does not reward the
+// cooperative plan. In Resource Allocation keeping M0 is far cheaper than the swap; in Joint Effect
+// joining II while I is hidden gains less than the swarm's stall tolerance. Both hold for the
+// position trace (our default) and the full trace of P (the paper's eq. 5), with and without the
+// terminal penalty. If the cost changes so that the cooperative plan wins, these tests fail and
+// the report's text must be revisited.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "agents/occlusion_map.h"
@@ -26,8 +32,20 @@ struct Problem {
   PlanningProblem view() const { return {targets, uavs, &map, settings}; }
 };
 
+// The cost's variants the explanation is checked under.
+struct CostVariant {
+  bool full_trace = false;
+  bool terminal_penalty = true;
+};
+const CostVariant kVariants[] = {{false, true}, {true, true}, {false, false}, {true, false}};
+
+std::string describe(const CostVariant& v) {
+  return std::string(v.full_trace ? "tr P" : "tr P_pos") +
+         (v.terminal_penalty ? ", terminal penalty" : ", no terminal penalty");
+}
+
 Problem problemAt(const ScenarioSpec& spec, double t0, std::vector<Vec2> uav_positions, int horizon,
-                  double variance) {
+                  double variance, const CostVariant& variant) {
   Problem p;
   for (const scenarios::TargetSpec& t : spec.targets) {
     TargetGaussian g;
@@ -49,6 +67,8 @@ Problem problemAt(const ScenarioSpec& spec, double t0, std::vector<Vec2> uav_pos
   p.map = OcclusionMap(spec.trees);  // the a-priori map: the true trees
   PlannerConfig config = spec.planner;
   config.horizon = horizon;
+  config.full_trace = variant.full_trace;
+  config.terminal_penalty = variant.terminal_penalty;
   p.settings = CostSettings::from(config, spec.tracking.sigma_a);
   return p;
 }
@@ -78,10 +98,10 @@ struct Costs {
 
 // Resource Allocation at t = 0. Alone (keeps M0): UAV2 follows I; UAV1 alternates between III and
 // II, 4 s per leg. Cooperative (M*): UAV1 heads for I, UAV2 for the II–III midpoint, at full speed.
-Costs resourceAllocationCosts(int horizon, double variance) {
+Costs resourceAllocationCosts(int horizon, double variance, const CostVariant& variant) {
   const ScenarioSpec spec = scenarios::loadScenario("resource_allocation");
-  const Problem problem =
-      problemAt(spec, 0.0, {spec.uavs[0].body.start, spec.uavs[1].body.start}, horizon, variance);
+  const Problem problem = problemAt(spec, 0.0, {spec.uavs[0].body.start, spec.uavs[1].body.start},
+                                    horizon, variance, variant);
   const double period = problem.settings.period;
   const auto I = walkOf(spec, 0), II = walkOf(spec, 1), III = walkOf(spec, 2);
   const Plan follow_I = pursue(problem.uavs[1], 0.0, horizon, period, I);
@@ -95,22 +115,37 @@ Costs resourceAllocationCosts(int horizon, double variance) {
   return {nominalCost(problem.view(), keep), nominalCost(problem.view(), swap)};
 }
 
-// Joint Effect at t0 = 2 s, just before I passes under the crown (2.2 s – 5.0 s), the UAVs over
-// their targets. Alone: UAV1 follows I. Cooperative: UAV1 joins UAV2 over II for the steps while I
-// is hidden (t ≤ 4 s), then heads back to I. UAV2 follows II in both.
-Costs jointEffectCosts(double variance) {
-  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
-  const double t0 = 2.0;
+// Joint Effect at a planning epoch t0 before or as I passes under the crown (2.2 s – 5.0 s), the
+// UAVs over their targets, the a-priori map. Alone: UAV1 follows I, UAV2 follows II. Cooperative:
+// the cheapest of a family of plans in which UAV1 leaves I at step a, flies to a point on II's
+// side (over II, halfway, or with II 0.5 m inside its footprint's edge) and stays there
+// (moving east with the walkers) until step b, then heads back to I; UAV2 follows II throughout.
+Costs jointEffectCosts(const ScenarioSpec& spec, double t0, double variance,
+                       const CostVariant& variant) {
   const auto I = walkOf(spec, 0), II = walkOf(spec, 1);
-  const Problem problem = problemAt(spec, t0, {I(t0), II(t0)}, spec.planner.horizon, variance);
+  const Problem problem =
+      problemAt(spec, t0, {I(t0), II(t0)}, spec.planner.horizon, variance, variant);
   const double period = problem.settings.period;
   const int H = problem.settings.horizon;
   const Plan follow_I = pursue(problem.uavs[0], t0, H, period, I);
   const Plan follow_II = pursue(problem.uavs[1], t0, H, period, II);
-  const Plan visit_II =
-      pursue(problem.uavs[0], t0, H, period, [&](double t) { return t <= 4.0 ? II(t) : I(t); });
-  const std::vector<Plan> alone{follow_I, follow_II}, joint{visit_II, follow_II};
-  return {nominalCost(problem.view(), alone), nominalCost(problem.view(), joint)};
+  const std::vector<Plan> alone{follow_I, follow_II};
+  const double half = 0.5 * spec.uavs[0].sensor.footprint.size.y();
+  const double y_II = II(t0).y();
+  double best_join = std::numeric_limits<double>::infinity();
+  for (const double y : {y_II, y_II + 0.5 * (half - 0.5), y_II + half - 0.5}) {
+    for (int a = 1; a <= H; ++a) {
+      for (int b = a + 1; b <= H + 1; ++b) {  // b = H + 1: never back within the horizon
+        const Plan join = pursue(problem.uavs[0], t0, H, period, [&](double t) {
+          const double m = (t - t0) / period;
+          return m >= a && m < b ? Vec2(I(t).x(), y) : I(t);
+        });
+        const std::vector<Plan> joint{join, follow_II};
+        best_join = std::min(best_join, nominalCost(problem.view(), joint));
+      }
+    }
+  }
+  return {nominalCost(problem.view(), alone), best_join};
 }
 
 TEST(PaperScenarioCosts, ResourceAllocationSmallUavCannotCoverIWithinFiveSeconds) {
@@ -126,21 +161,34 @@ TEST(PaperScenarioCosts, ResourceAllocationSmallUavCannotCoverIWithinFiveSeconds
 }
 
 TEST(PaperScenarioCosts, ResourceAllocationKeepingM0CostsLessThanTheSwap) {
-  for (const int horizon : {5, 10}) {
-    for (const double variance : {1.0, 0.05}) {
-      const Costs c = resourceAllocationCosts(horizon, variance);
-      std::printf("RA H = %2d, P = %.2f I: keep M0 %.1f, swap %.1f\n", horizon, variance, c.alone,
-                  c.cooperative);
-      EXPECT_LT(c.alone, c.cooperative) << "H = " << horizon << ", P = " << variance << " I";
+  for (const CostVariant& variant : kVariants) {
+    for (const int horizon : {5, 10}) {
+      for (const double variance : {1.0, 0.05}) {
+        const Costs c = resourceAllocationCosts(horizon, variance, variant);
+        std::printf("RA %s, H = %2d, P = %.2f I: keep M0 %.1f, swap %.1f\n",
+                    describe(variant).c_str(), horizon, variance, c.alone, c.cooperative);
+        EXPECT_LT(c.alone, c.cooperative)
+            << describe(variant) << ", H = " << horizon << ", P = " << variance << " I";
+      }
     }
   }
 }
 
-TEST(PaperScenarioCosts, JointEffectStayingOverIHiddenCostsLessThanJoiningOverII) {
-  for (const double variance : {1.0, 0.05}) {
-    const Costs c = jointEffectCosts(variance);
-    std::printf("JE P = %.2f I: stay %.2f, join %.2f\n", variance, c.alone, c.cooperative);
-    EXPECT_LT(c.alone, c.cooperative) << "P = " << variance << " I";
+TEST(PaperScenarioCosts, JointEffectJoiningIIWhileIIsHiddenGainsLessThanTheSwarmTolerance) {
+  // The swarm counts an iteration as stalled when the best cost moves by less than
+  // ftol·(1 + |J|); a gain below that is invisible to it, and the warm start follows I.
+  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
+  const double ftol = spec.planner.pso.ftol;
+  for (const CostVariant& variant : kVariants) {
+    for (const double t0 : {1.0, 2.0}) {
+      for (const double variance : {1.0, 0.05}) {
+        const Costs c = jointEffectCosts(spec, t0, variance, variant);
+        std::printf("JE %s, t0 = %.0f s, P = %.2f I: stay %.4f, cheapest join %.4f\n",
+                    describe(variant).c_str(), t0, variance, c.alone, c.cooperative);
+        EXPECT_LT(std::abs(c.alone - c.cooperative), ftol * (1.0 + std::abs(c.alone)))
+            << describe(variant) << ", t0 = " << t0 << " s, P = " << variance << " I";
+      }
+    }
   }
 }
 
