@@ -341,9 +341,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "The gain is as small at t = 1 s, with P = I, with the full trace of P (the paper's "
           "eq. 5) and without the terminal penalty (test PaperScenarioCosts, "
           "tests/analysis/paper_scenario_costs_test.cpp). "
-          "UAV2 over II already measures it from close by (d at its floor r0 = 2 m, "
-          "R with eigenvalues 0.06 and 0.19 m²), so a second, farther measurement adds little, and the "
-          "trip costs I's measurements when it reappears. "
+          "UAV2 over II already measures it from close by (d at its floor r0 = 2 m, R with "
+          "eigenvalues 0.06 and 0.19 m²), so a second, farther measurement adds little, and "
+          "the trip costs I's measurements when it reappears. "
           "The swarm, warm-started from the plan that follows I, has no reason to leave. "
           "Hence the reaction times above read \"never\" where the paper reports about 1.6 s "
           "and 2.2 s.\n";
