@@ -8,8 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <thread>
+
+#include "core/text_file.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -20,11 +21,9 @@ int run(const std::string& arguments) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+// The file's text; a missing file throws, so it can never compare equal to another.
 std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return canopy::readTextFile(path).value();
 }
 
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {

@@ -2,10 +2,11 @@
 // Comparing coverage CSVs (render/coverage.h) with a stated tolerance, for the golden tests.
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "core/text_file.h"
 
 namespace canopy::render::testing {
 
@@ -27,10 +28,9 @@ inline std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
   return rows;
 }
 
+/// The file's text, empty when it cannot be read (compareCoverageCsv then reports an empty golden).
 inline std::string readFile(const std::string& path) {
-  std::stringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
+  return readTextFile(path).value_or("");
 }
 
 /// Empty when `actual` matches `expected` within the tolerance, else the first difference.

@@ -4,20 +4,13 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
+#include "core/text_file.h"
 #include "scenarios/loader.h"
 
 namespace canopy::scenarios {
 namespace {
 namespace fs = std::filesystem;
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string runAndRead(const std::string& scenario, std::uint64_t seed, const std::string& tag) {
   LoadOptions options;
@@ -28,7 +21,7 @@ std::string runAndRead(const std::string& scenario, std::uint64_t seed, const st
   runScenario(spec, {dir, "test", {}});
   EXPECT_TRUE(fs::exists(dir / "manifest.json"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
-  return slurp(dir / "record.jsonl");
+  return readTextFile(dir / "record.jsonl").value();
 }
 
 TEST(Run, SameSeedGivesByteIdenticalRecords) {
