@@ -89,7 +89,7 @@ Plan pursue(const UavState& uav, double t0, int horizon, double period, Goal goa
 }
 
 auto walkOf(const ScenarioSpec& spec, int target) {
-  return [&spec, target](double t) { return spec.targets[target].path.positionAt(t); };
+  return [&spec, target](double t) -> Vec2 { return spec.targets[target].path.positionAt(t); };
 }
 
 struct Costs {
@@ -105,12 +105,12 @@ Costs resourceAllocationCosts(int horizon, double variance, const CostVariant& v
   const double period = problem.settings.period;
   const auto I = walkOf(spec, 0), II = walkOf(spec, 1), III = walkOf(spec, 2);
   const Plan follow_I = pursue(problem.uavs[1], 0.0, horizon, period, I);
-  const Plan zig_zag = pursue(problem.uavs[0], 0.0, horizon, period, [&](double t) {
+  const Plan zig_zag = pursue(problem.uavs[0], 0.0, horizon, period, [&](double t) -> Vec2 {
     return static_cast<int>(std::floor(t / (4 * period))) % 2 == 0 ? III(t) : II(t);
   });
   const Plan to_I = pursue(problem.uavs[0], 0.0, horizon, period, I);
   const Plan to_middle = pursue(problem.uavs[1], 0.0, horizon, period,
-                                [&](double t) { return 0.5 * (II(t) + III(t)); });
+                                [&](double t) -> Vec2 { return 0.5 * (II(t) + III(t)); });
   const std::vector<Plan> keep{zig_zag, follow_I}, swap{to_I, to_middle};
   return {nominalCost(problem.view(), keep), nominalCost(problem.view(), swap)};
 }
@@ -136,7 +136,7 @@ Costs jointEffectCosts(const ScenarioSpec& spec, double t0, double variance,
   for (const double y : {y_II, y_II + 0.5 * (half - 0.5), y_II + half - 0.5}) {
     for (int a = 1; a <= H; ++a) {
       for (int b = a + 1; b <= H + 1; ++b) {  // b = H + 1: never back within the horizon
-        const Plan join = pursue(problem.uavs[0], t0, H, period, [&](double t) {
+        const Plan join = pursue(problem.uavs[0], t0, H, period, [&](double t) -> Vec2 {
           const double m = (t - t0) / period;
           return m >= a && m < b ? Vec2(I(t).x(), y) : I(t);
         });
