@@ -176,7 +176,7 @@ TEST(PaperScenarioCosts, ResourceAllocationKeepingM0CostsLessThanTheSwap) {
 
 TEST(PaperScenarioCosts, JointEffectJoiningIIWhileIIsHiddenGainsLessThanTheSwarmTolerance) {
   // The swarm counts an iteration as stalled when the best cost moves by less than
-  // ftol·(1 + |J|); a gain below that is invisible to it, and the warm start follows I.
+  // ftol·(1 + |J|): a gain below that does not keep it searching, and its warm start follows I.
   const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
   const double ftol = spec.planner.pso.ftol;
   for (const CostVariant& variant : kVariants) {
