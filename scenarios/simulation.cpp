@@ -3,7 +3,6 @@
 #include <cmath>
 
 namespace canopy::scenarios {
-namespace {
 
 agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   agents::TeamConfig config;
@@ -19,8 +18,6 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   config.seed = spec.seed;
   return config;
 }
-
-}  // namespace
 
 Simulation::Simulation(const ScenarioSpec& spec)
     : spec_(spec),

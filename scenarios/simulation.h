@@ -15,6 +15,10 @@
 
 namespace canopy::scenarios {
 
+/// The team's configuration a scenario gives: tracking, fusion and planner sections, each UAV's
+/// limits and camera at its start, the true trees when the planner uses the a-priori map.
+agents::TeamConfig teamConfig(const ScenarioSpec& spec);
+
 class Simulation {
  public:
   explicit Simulation(const ScenarioSpec& spec);

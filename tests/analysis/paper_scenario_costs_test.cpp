@@ -17,6 +17,7 @@
 #include "agents/occlusion_map.h"
 #include "agents/planning/nominal_cost.h"
 #include "scenarios/loader.h"
+#include "scenarios/simulation.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -44,8 +45,8 @@ std::string describe(const CostVariant& v) {
          (v.terminal_penalty ? ", terminal penalty" : ", no terminal penalty");
 }
 
-Problem problemAt(const ScenarioSpec& spec, double t0, std::vector<Vec2> uav_positions, int horizon,
-                  double variance, const CostVariant& variant) {
+Problem problemAt(const ScenarioSpec& spec, double t0, const std::vector<Vec2>& uav_positions,
+                  int horizon, double variance, const CostVariant& variant) {
   Problem p;
   for (const scenarios::TargetSpec& t : spec.targets) {
     TargetGaussian g;
@@ -53,17 +54,8 @@ Problem problemAt(const ScenarioSpec& spec, double t0, std::vector<Vec2> uav_pos
     g.P = variance * Mat4::Identity();
     p.targets.push_back(g);
   }
-  for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
-    const scenarios::UavSpec& u = spec.uavs[i];
-    UavState s;
-    s.position = uav_positions[i];
-    s.yaw = u.body.yaw;
-    s.yaw_mode = u.body.yaw_mode;
-    s.v_max = u.body.v_max;
-    s.footprint = u.sensor.footprint;
-    s.quality = u.sensor.quality;
-    p.uavs.push_back(s);
-  }
+  p.uavs = scenarios::teamConfig(spec).uavs;
+  for (std::size_t i = 0; i < p.uavs.size(); ++i) p.uavs[i].position = uav_positions[i];
   p.map = OcclusionMap(spec.trees);  // the a-priori map: the true trees
   PlannerConfig config = spec.planner;
   config.horizon = horizon;
@@ -98,8 +90,8 @@ struct Costs {
 
 // Resource Allocation at t = 0. Alone (keeps M0): UAV2 follows I; UAV1 alternates between III and
 // II, 4 s per leg. Cooperative (M*): UAV1 heads for I, UAV2 for the II–III midpoint, at full speed.
-Costs resourceAllocationCosts(int horizon, double variance, const CostVariant& variant) {
-  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation");
+Costs resourceAllocationCosts(const ScenarioSpec& spec, int horizon, double variance,
+                              const CostVariant& variant) {
   const Problem problem = problemAt(spec, 0.0, {spec.uavs[0].body.start, spec.uavs[1].body.start},
                                     horizon, variance, variant);
   const double period = problem.settings.period;
@@ -161,10 +153,11 @@ TEST(PaperScenarioCosts, ResourceAllocationSmallUavCannotCoverIWithinFiveSeconds
 }
 
 TEST(PaperScenarioCosts, ResourceAllocationKeepingM0CostsLessThanTheSwap) {
+  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation");
   for (const CostVariant& variant : kVariants) {
     for (const int horizon : {5, 10}) {
       for (const double variance : {1.0, 0.05}) {
-        const Costs c = resourceAllocationCosts(horizon, variance, variant);
+        const Costs c = resourceAllocationCosts(spec, horizon, variance, variant);
         std::printf("RA %s, H = %2d, P = %.2f I: keep M0 %.1f, swap %.1f\n",
                     describe(variant).c_str(), horizon, variance, c.alone, c.cooperative);
         EXPECT_LT(c.alone, c.cooperative)
