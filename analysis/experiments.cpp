@@ -10,8 +10,8 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
     sweep.scenario = scenario;
     sweep.trials = trials;
     sweep.seed = seed;
-    sweep.axes = {{"planner.algorithm", {"\"sma\"", "\"dec_pomdp\""}},
-                  {"planner.horizon", {"1", "5"}}};
+    sweep.axes = {{"planner.algorithm", {"\"sma\"", "\"dec_pomdp\""}, {}},
+                  {"planner.horizon", {"1", "5"}, {}}};
     experiments.push_back({scenario, sweep, true});
   }
   for (const char* scenario : {"joint_effect", "occlusion_sharing"}) {
@@ -21,7 +21,7 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
     sweep.trials = trials;
     sweep.seed = seed;
     sweep.fixed = {"planner.algorithm=\"sma\"", "planner.horizon=5"};
-    sweep.axes = {{"planner.occlusion_map", {"\"a_priori\"", "\"dynamic\"", "\"none\""}}};
+    sweep.axes = {{"planner.occlusion_map", {"\"a_priori\"", "\"dynamic\"", "\"none\""}, {}}};
     experiments.push_back({scenario, sweep, false});
   }
   for (Experiment& e : experiments) {

@@ -70,10 +70,30 @@ SweepSpec loadSweepText(const std::string& text, const std::string& file) {
     for (const Field& element : axes->elements()) {
       ObjectReader axis_reader = element.object();
       SweepAxis axis;
-      axis.path = axis_reader.required("path").string();
+      const auto name = axis_reader.optional("name");
+      axis.path = name ? name->string() : axis_reader.required("path").string();
       for (const Field& value : axis_reader.required("values").elements(1)) {
         value.keepAsIs();
         axis.values.push_back(value.json().dump());
+      }
+      if (name) {
+        const Field groups = axis_reader.required("set");
+        const std::vector<Field> per_value = groups.elements(1);
+        if (per_value.size() != axis.values.size()) {
+          groups.fail("expected one object of overrides per value (" +
+                      std::to_string(axis.values.size()) + "), got " +
+                      std::to_string(per_value.size()));
+        }
+        for (const Field& group : per_value) {
+          ObjectReader group_reader = group.object();
+          std::vector<std::string> overrides;
+          for (const auto& [key, value] : group.json().items()) {
+            group_reader.optional(key)->keepAsIs();
+            overrides.push_back(key + "=" + value.dump());
+          }
+          group_reader.finish();
+          axis.set.push_back(std::move(overrides));
+        }
       }
       axis_reader.finish();
       sweep.axes.push_back(std::move(axis));
@@ -90,14 +110,20 @@ SweepSpec loadSweep(const std::string& path) {
 }
 
 std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
-  std::vector<SweepConfig> configs{{"", sweep.fixed}};
+  std::vector<SweepConfig> configs{{"", sweep.fixed, {}}};
   for (const SweepAxis& axis : sweep.axes) {
     std::vector<SweepConfig> next;
     for (const SweepConfig& config : configs) {
-      for (const std::string& value : axis.values) {
+      for (std::size_t v = 0; v < axis.values.size(); ++v) {
+        const std::string& value = axis.values[v];
         SweepConfig point = config;
         point.id += (point.id.empty() ? "" : "_") + slug(axis.path, value);
-        point.overrides.push_back(axis.path + "=" + value);
+        point.point.push_back(axis.path + "=" + value);
+        if (axis.set.empty()) {
+          point.overrides.push_back(axis.path + "=" + value);
+        } else {
+          point.overrides.insert(point.overrides.end(), axis.set[v].begin(), axis.set[v].end());
+        }
         next.push_back(std::move(point));
       }
     }

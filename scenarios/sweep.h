@@ -14,9 +14,14 @@
 
 namespace canopy::scenarios {
 
+/// An axis varies one --set path over its values, or, when it is named, sets for each of its
+/// values a group of paths at once (a layout parameter that moves several things together):
+///   {"path": "planner.horizon", "values": [1, 5]}
+///   {"name": "gap", "values": [10, 14], "set": [{"targets.2.path.start.1": -10}, {…: -14}]}
 struct SweepAxis {
-  std::string path;                 // a --set path, e.g. "planner.horizon"
+  std::string path;                 // the --set path, or the axis name when `set` is not empty
   std::vector<std::string> values;  // each a JSON value as text
+  std::vector<std::vector<std::string>> set;  // per value, its "path=value" overrides (named)
 };
 
 struct SweepSpec {
@@ -33,6 +38,7 @@ struct SweepSpec {
 struct SweepConfig {
   std::string id;                      // e.g. "algorithm-sma_horizon-5" (a directory name)
   std::vector<std::string> overrides;  // fixed, then this point's axis values
+  std::vector<std::string> point;      // per axis "path-or-name=value", in axis order
 };
 
 /// Reads and validates a sweep file (ScenarioError: file, field, expectation).

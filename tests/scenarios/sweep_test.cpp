@@ -62,6 +62,38 @@ TEST(Sweep, TheExampleSweepFileLoadsAsTwoTimesTwoConfigurations) {
   }
 }
 
+TEST(Sweep, ANamedAxisSetsItsGroupOfPathsForEachValue) {
+  const SweepSpec sweep = loadSweepText(R"({
+    "scenario": "demo",
+    "axes": [{"name": "spread", "values": [2, 4],
+              "set": [{"uavs.0.v_max": 2, "clock.duration": 3},
+                      {"uavs.0.v_max": 4, "clock.duration": 5}]},
+             {"path": "planner.horizon", "values": [1]}]})",
+                                        "s.json");
+  const std::vector<SweepConfig> configs = configurations(sweep);
+  ASSERT_EQ(configs.size(), 2u);
+  EXPECT_EQ(configs[1].id, "spread-4_horizon-1");
+  EXPECT_EQ(configs[1].overrides,
+            (std::vector<std::string>{"clock.duration=5", "uavs.0.v_max=4", "planner.horizon=1"}));
+  EXPECT_EQ(configs[1].point, (std::vector<std::string>{"spread=4", "planner.horizon=1"}));
+  const ScenarioSpec spec = loadScenario(sweep.scenario, {configs[1].overrides, std::nullopt});
+  EXPECT_EQ(spec.duration, 5.0);
+}
+
+TEST(Sweep, ANamedAxisNeedsOneGroupPerValue) {
+  try {
+    loadSweepText(R"({"scenario": "demo", "axes": [{"name": "a", "values": [1, 2],
+                      "set": [{"clock.duration": 3}]}]})",
+                  "s.json");
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.field(), "axes[0].set");
+    EXPECT_NE(std::string(e.what()).find("one object of overrides per value (2), got 1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Sweep, TrialSeedsDependOnTheIndexOnly) {
   EXPECT_EQ(trialSeed(7, 2), trialSeed(7, 2));
   EXPECT_NE(trialSeed(7, 2), trialSeed(7, 3));
