@@ -42,6 +42,11 @@ struct FusionConfig {
 
 enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized };
 enum class OcclusionMapMode { a_priori, dynamic, none };
+/// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md): one swarm
+/// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
+/// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
+/// rounds — on the same joint cost.
+enum class JointSearch { swarm, block_coordinate };
 
 /// The particle swarm (algorithms.md §6).
 struct PsoConfig {
@@ -67,6 +72,8 @@ struct PlannerConfig {
   double terminal_penalty_weight = 0.5;  // w
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
+  JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
+  int joint_rounds = 2;                           // block coordinate rounds over all UAVs
 };
 
 }  // namespace canopy::agents

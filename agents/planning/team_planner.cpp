@@ -107,6 +107,33 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
   }
 }
 
+PlanSearch TeamPlanner::searchByBlocks(const PlanningProblem& problem, std::span<const Plan> warm,
+                                       RandomStream& rng) {
+  // Block coordinate descent on J(b_i, a): each UAV's 2·H variables in turn, the others held at
+  // their current plans. The block's current plan is one of its swarm's particles, so J never
+  // increases from one block to the next; the last block's cost is J of the joint plan returned.
+  const int n = static_cast<int>(problem.uavs.size());
+  PlanSearch joint;
+  joint.plans = warm.size() == static_cast<std::size_t>(n)
+                    ? std::vector<Plan>(warm.begin(), warm.end())
+                    : std::vector<Plan>(n, hoverPlan(settings_.horizon));
+  PsoConfig pso = config_.pso;
+  pso.warm_start = true;
+  for (int round = 0; round < config_.joint_rounds; ++round) {
+    for (const int i : order_) {
+      const int self[] = {i};
+      const PlanSearch block =
+          optimizer_.optimise(problem, pso, self, joint.plans, {&joint.plans[i], 1}, rng);
+      joint.plans[i] = block.plans.front();
+      joint.cost = block.cost;
+      joint.iterations += block.iterations;
+      joint.evaluations += block.evaluations;
+    }
+  }
+  for (Plan& plan : joint.plans) plan.cost = joint.cost;
+  return joint;
+}
+
 void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs,
                             const AgentView& view) {
   const int n = static_cast<int>(uavs.size());
@@ -130,7 +157,9 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
   RandomStream& rng =
       config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
   const Clock::time_point start = Clock::now();
-  PlanSearch search = optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng);
+  PlanSearch search = config_.joint_search == JointSearch::swarm
+                          ? optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng)
+                          : searchByBlocks(problem, warm, rng);
   const double seconds = secondsSince(start);
   last_joint_[planner] = search.plans;
   last_joint_epoch_[planner] = out.epoch;

@@ -78,6 +78,8 @@ class TeamPlanner {
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
                       std::span<const AgentView> views);
   void planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs, const AgentView& view);
+  PlanSearch searchByBlocks(const PlanningProblem& problem, std::span<const Plan> warm,
+                            RandomStream& rng);
 
   PlannerConfig config_;
   CostSettings settings_;

@@ -120,6 +120,9 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);
   readPso(reader, p.pso);
+  p.joint_search = static_cast<agents::JointSearch>(
+      reader.choice("joint_search", {"swarm", "block_coordinate"}, 0));
+  p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
   p.order.clear();
   if (auto order = reader.optional("order")) {
     const std::size_t n = spec.uavs.size();
