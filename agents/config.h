@@ -72,6 +72,7 @@ struct PlannerConfig {
   double terminal_penalty_weight = 0.5;  // w
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
+  int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
   JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
   int joint_rounds = 2;                           // block coordinate rounds over all UAVs
 };

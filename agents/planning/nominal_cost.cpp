@@ -88,6 +88,7 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   s.full_trace = config.full_trace;
   s.terminal_penalty = config.terminal_penalty;
   s.terminal_penalty_weight = config.terminal_penalty_weight;
+  s.substeps = config.cost_substeps;
   s.sigma_a = sigma_a;
   return s;
 }
@@ -97,6 +98,7 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
   Vec2 p = uav.position;
   double c = uav.cos_yaw, s = uav.sin_yaw;
   const double v_max_sq = uav.v_max * uav.v_max;
+  const double tau = period_ / substeps_;  // s, between samples
   for (int m = 0; m < horizon_; ++m) {
     Vec2 a = actions[m];
     double speed_sq = a.squaredNorm();
@@ -104,14 +106,16 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
       a *= uav.v_max / std::sqrt(speed_sq);
       speed_sq = v_max_sq;
     }
-    p += a * period_;  // p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
     if (uav.yaw_follows && speed_sq > kHoverSpeedSquared) {
       const double speed = std::sqrt(speed_sq);
       c = a.x() / speed;  // ψ = atan2(a_y, a_x), kept as (cos ψ, sin ψ)
       s = a.y() / speed;
     }
-    positions[m] = p;
-    footprints[m] = placeFootprint(uav.footprint, p, c, s);
+    for (int q = m * substeps_; q < (m + 1) * substeps_; ++q) {
+      p += a * tau;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
+      positions[q] = p;
+      footprints[q] = placeFootprint(uav.footprint, p, c, s);
+    }
   }
 }
 
@@ -123,27 +127,31 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
                           std::span<const Plan> assumed) {
   const CostSettings& s = problem.settings;
   const int H = horizon_ = s.horizon;
+  const int S = substeps_ = s.substeps;
+  const int T = H * S;  // samples over the horizon
   const double dt = period_ = s.period;
+  const double tau = dt / S;  // s, between samples
   full_trace_ = s.full_trace;
   terminal_ = s.terminal_penalty;
   weight_ = s.terminal_penalty_weight;
   const int n_uavs = static_cast<int>(problem.uavs.size());
   const int n_targets = static_cast<int>(problem.targets.size());
-  if (H < 1 || static_cast<int>(free_agents.size()) > kMaxFreeAgents ||
+  if (H < 1 || S < 1 || static_cast<int>(free_agents.size()) > kMaxFreeAgents ||
       static_cast<int>(assumed.size()) != n_uavs) {
     std::fprintf(
-        stderr, "NominalCost::prepare: H = %d (≥ 1), %zu free UAVs (≤ %d), %zu plans for %d UAVs\n",
-        H, free_agents.size(), kMaxFreeAgents, assumed.size(), n_uavs);
+        stderr,
+        "NominalCost::prepare: H = %d, S = %d (≥ 1), %zu free UAVs (≤ %d), %zu plans for %d UAVs\n",
+        H, S, free_agents.size(), kMaxFreeAgents, assumed.size(), n_uavs);
     std::abort();
   }
 
-  // Q(Δ) = σ_a² [[Δ⁴/4 I, Δ³/2 I], [Δ³/2 I, Δ² I]] (per axis, paper eq. 4).
+  // Q(τ) = σ_a² [[τ⁴/4 I, τ³/2 I], [τ³/2 I, τ² I]] (per axis, paper eq. 4), τ = Δ/S.
   const double q = s.sigma_a * s.sigma_a;
   Q_.setZero();
   for (int k = 0; k < 2; ++k) {
-    Q_(k, k) = q * dt * dt * dt * dt / 4.0;
-    Q_(k, k + 2) = Q_(k + 2, k) = q * dt * dt * dt / 2.0;
-    Q_(k + 2, k + 2) = q * dt * dt;
+    Q_(k, k) = q * tau * tau * tau * tau / 4.0;
+    Q_(k, k + 2) = Q_(k + 2, k) = q * tau * tau * tau / 2.0;
+    Q_(k + 2, k + 2) = q * tau * tau;
   }
   discount_.resize(H);
   for (int m = 0; m < H; ++m) discount_[m] = std::pow(s.discount, m);  // γ^{m−1}, m = 1..H
@@ -164,24 +172,24 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   // The fixed UAVs' paths and footprints over the horizon.
   all_final_.assign(n_uavs, Vec2::Zero());
   std::vector<int> fixed;
-  std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * H);
+  std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
   std::vector<sensing::Footprint> fixed_fp(fixed_pos.size());
   std::vector<Vec2> actions(H);
   for (int i = 0; i < n_uavs; ++i) {
     if (is_free[i]) continue;
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
-    fly(moverOf(problem.uavs[i]), actions, &fixed_pos[i * H], &fixed_fp[i * H]);
-    all_final_[i] = fixed_pos[i * H + H - 1];
+    fly(moverOf(problem.uavs[i]), actions, &fixed_pos[i * T], &fixed_fp[i * T]);
+    all_final_[i] = fixed_pos[i * T + T - 1];
   }
 
-  const std::size_t cells = static_cast<std::size_t>(n_targets) * H;
+  const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
   z_.resize(cells);
   occluded_.assign(cells, 0);
   fixed_seen_.assign(cells, 0);
   fixed_R_.assign(cells, Mat2::Zero());
   reach_.assign(cells, 0);
-  start_.assign(n_targets, H + 1);
+  start_.assign(n_targets, T);
   P_start_.resize(n_targets);
   cost_start_.assign(n_targets, 0.0);
   seen_final_.assign(n_targets, 0);
@@ -192,9 +200,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     Mat4 P = 0.5 * (P0 + P0.transpose());  // symmetric, so the recursion keeps it exactly so
     double cost = 0.0;
     bool started = false;
-    for (int m = 1; m <= H; ++m) {
-      const std::size_t k = static_cast<std::size_t>(j) * H + m - 1;
-      x.head<2>() += dt * x.tail<2>();  // ξ_{j,m} = F(Δ) ξ_{j,m−1}, no noise
+    for (int t = 0; t < T; ++t) {
+      const int m = t / S + 1;  // the planning step this sample belongs to
+      const std::size_t k = static_cast<std::size_t>(j) * T + t;
+      x.head<2>() += tau * x.tail<2>();  // ξ after t + 1 samples: F(τ)^{t+1} ξ_j, no noise
       const Vec2 z = x.head<2>();
       z_[k] = z;
       occluded_[k] = problem.map != nullptr && problem.map->occludes(z);
@@ -202,31 +211,33 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         Mat2 information = Mat2::Zero();  // Σ R_i⁻¹ over the fixed UAVs that see z
         int seen = 0;
         for (const int i : fixed) {
-          const std::size_t im = static_cast<std::size_t>(i) * H + m - 1;
+          const std::size_t im = static_cast<std::size_t>(i) * T + t;
           if (!fixed_fp[im].contains(z)) continue;
-          const Mat2 R = noiseCovariance(z, fixed_pos[im], problem.uavs[i].quality);
+          const Mat2 R =
+              static_cast<double>(S) * noiseCovariance(z, fixed_pos[im], problem.uavs[i].quality);
           if (seen++ == 0) fixed_R_[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
         if (seen > 1) fixed_R_[k] = information.llt().solve(Mat2::Identity());  // R_fix
         fixed_seen_[k] = seen > 0;
         for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
-          // |p_{f,m} − p_{f,0}| ≤ m·v_max·Δ, and a footprint holds points within its circumradius.
-          const double reach = m * free_[f].v_max * dt + circumradius(free_[f].footprint);
+          // |p_f − p_{f,0}| ≤ (t + 1)·v_max·τ, and a footprint holds points within its
+          // circumradius.
+          const double reach = (t + 1) * free_[f].v_max * tau + circumradius(free_[f].footprint);
           if ((z - free_[f].position).norm() <= reach + kReachSlack) reach_[k] |= 1ULL << f;
         }
       }
       if (!started && reach_[k] != 0) {
         started = true;
-        start_[j] = m;
+        start_[j] = t;
         P_start_[j] = P;
         cost_start_[j] = cost;
       }
       if (started) continue;
-      predict(P, Q_, dt);
+      predict(P, Q_, tau);
       if (fixed_seen_[k]) measurementUpdate(P, fixed_R_[k]);
-      cost += discount_[m - 1] * stageTrace(P);
-      if (m == H) seen_final_[j] = fixed_seen_[k];
+      if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
+      if (t == T - 1) seen_final_[j] = fixed_seen_[k];
     }
     if (!started) {
       P_start_[j] = P;
@@ -234,8 +245,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     }
   }
 
-  free_pos_.resize(free_.size() * H);
-  free_fp_.resize(free_.size() * H);
+  free_pos_.resize(free_.size() * T);
+  free_fp_.resize(free_.size() * T);
   trace_final_.assign(n_targets, 0.0);
   in_view_final_.assign(n_targets, 0);
   uncovered_.assign(n_targets, 0);
@@ -243,21 +254,22 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 }
 
 double NominalCost::evaluate(std::span<const Vec2> actions) {
-  const int H = horizon_;
+  const int H = horizon_, S = substeps_, T = H * S;
   for (std::size_t f = 0; f < free_.size(); ++f) {
-    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * H], &free_fp_[f * H]);
-    all_final_[free_index_[f]] = free_pos_[f * H + H - 1];
+    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * T], &free_fp_[f * T]);
+    all_final_[free_index_[f]] = free_pos_[f * T + T - 1];
   }
 
+  const double tau = period_ / S;
   double J = 0.0;
   const int n_targets = static_cast<int>(start_.size());
   for (int j = 0; j < n_targets; ++j) {
     Mat4 P = P_start_[j];
     J += cost_start_[j];
     bool seen_final = seen_final_[j];
-    for (int m = start_[j]; m <= H; ++m) {
-      const std::size_t k = static_cast<std::size_t>(j) * H + m - 1;
-      predict(P, Q_, period_);  // P⁻_{j,m}
+    for (int t = start_[j]; t < T; ++t) {
+      const std::size_t k = static_cast<std::size_t>(j) * T + t;
+      predict(P, Q_, tau);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
       bool seen = false;
       if (!occluded_[k]) {  // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map}
         if (fixed_seen_[k]) {
@@ -266,14 +278,16 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         }
         for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
           const int f = std::countr_zero(bits);
-          const std::size_t fm = static_cast<std::size_t>(f) * H + m - 1;
-          if (!free_fp_[fm].contains(z_[k])) continue;
-          measurementUpdate(P, noiseCovariance(z_[k], free_pos_[fm], free_[f].quality));
+          const std::size_t fq = static_cast<std::size_t>(f) * T + t;
+          if (!free_fp_[fq].contains(z_[k])) continue;
+          // R·S: S samples in view carry the information of one measurement per action.
+          measurementUpdate(
+              P, static_cast<double>(S) * noiseCovariance(z_[k], free_pos_[fq], free_[f].quality));
           seen = true;
         }
       }
-      J += discount_[m - 1] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
-      if (m == H) seen_final = seen;
+      if ((t + 1) % S == 0) J += discount_[t / S] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
+      if (t == T - 1) seen_final = seen;
     }
     trace_final_[j] = P(0, 0) + P(1, 1);  // tr(P_{j,H}[pos])
     in_view_final_[j] = seen_final;
@@ -284,7 +298,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   // tr(P_{j,H}[pos]) (ties: lower index first; stable insertion sort).
   int count = 0;
   for (int j = 0; j < n_targets; ++j) {
-    if (in_view_final_[j] || occluded_[static_cast<std::size_t>(j) * H + H - 1]) continue;
+    if (in_view_final_[j] || occluded_[static_cast<std::size_t>(j) * T + T - 1]) continue;
     int slot = count++;
     for (; slot > 0 && trace_final_[uncovered_[slot - 1]] < trace_final_[j]; --slot) {
       uncovered_[slot] = uncovered_[slot - 1];
@@ -294,7 +308,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   std::fill(charged_.begin(), charged_.end(), 0.0);
   for (int c = 0; c < count; ++c) {
     const int j = uncovered_[c];
-    const Vec2& z = z_[static_cast<std::size_t>(j) * H + H - 1];
+    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
     int best = 0;
     double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
     for (int i = 0; i < static_cast<int>(charged_.size()); ++i) {

@@ -24,7 +24,8 @@ struct CostSettings {
   bool full_trace = false;               // tr(P) instead of tr(P_pos) in the stage cost
   bool terminal_penalty = true;          // Miller et al. 2009 penalty at m = H
   double terminal_penalty_weight = 0.5;  // w, 1/m
-  double sigma_a = 1.0;                  // m/s², NCV process-noise intensity σ_a
+  int substeps = 1;      // S samples per action (1: the plan instants only, the paper's setting)
+  double sigma_a = 1.0;  // m/s², NCV process-noise intensity σ_a
 
   static CostSettings from(const PlannerConfig& config, double sigma_a);
 };
@@ -47,6 +48,13 @@ struct PlanningProblem {
 /// The two agree by the matrix inversion lemma, and sequential processing equals the summed
 /// information because the nominal measurements are independent given the state. The fixed UAVs'
 /// measurements at (j, m) are fused beforehand into one, R_fix = (Σ R_i⁻¹)⁻¹.
+///
+/// With S = `substeps` > 1 each action of Δ is sampled S times, every τ = Δ/S: the covariance is
+/// predicted with F(τ), Q(τ) and updated at every sample at which a footprint holds the nominal
+/// position and the map does not hide it, with S·R_i (so that a target in view throughout an
+/// action gains about the information of the single measurement of S = 1); the stage cost is
+/// still tr(P) at the plan instants t_m. Occlusions and footprint exits shorter than Δ then reach
+/// the cost (docs/design-notes.md). S = 1 is the recursion above exactly.
 ///
 /// Precomputed per call: nominal trajectories z_{j,m} = H F(Δ)^m ξ_j, occlusion flags, the fixed
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
@@ -82,6 +90,7 @@ class NominalCost {
   double stageTrace(const Mat4& P) const;
 
   int horizon_ = 0;               // H
+  int substeps_ = 1;              // S samples per action
   double period_ = 1.0;           // s, Δ
   bool full_trace_ = false;       // stage cost on tr(P) rather than tr(P_pos)
   bool terminal_ = true;          // add the terminal penalty
@@ -92,7 +101,7 @@ class NominalCost {
   std::vector<Vec2> all_final_;   // m, p_{i,H} of every UAV (free ones filled per call)
   std::vector<int> free_index_;   // UAV index of each free UAV
 
-  // Per track j and step m, at [j·H + m − 1].
+  // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
   std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown of the map
   std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}
@@ -100,7 +109,7 @@ class NominalCost {
   std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
 
   // Per track: the recursion before the first step a free UAV could see it.
-  std::vector<int> start_;                // first such m (H + 1: none)
+  std::vector<int> start_;                // first such sample t (H·S: none)
   std::vector<Mat4> P_start_;             // P_{j,start−1}
   std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
   std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)

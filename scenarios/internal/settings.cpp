@@ -119,6 +119,7 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.terminal_penalty = reader.boolean("terminal_penalty", p.terminal_penalty);
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);
+  p.cost_substeps = reader.integer("cost_substeps", p.cost_substeps, 1, 100);
   readPso(reader, p.pso);
   p.joint_search = static_cast<agents::JointSearch>(
       reader.choice("joint_search", {"swarm", "block_coordinate"}, 0));

@@ -166,11 +166,12 @@ TEST(NominalCost, TerminalPenaltyChargesDistancesGreedily) {
 }
 
 // A second, literal implementation: information form with explicit inverses, the sensing
-// library's R and Footprint::place with ψ = atan2 of the velocity.
+// library's R and Footprint::place with ψ = atan2 of the velocity. With S = s.substeps samples per
+// action (τ = Δ/S) every sample predicts with F(τ), Q(τ) and adds Hᵀ (S·R)⁻¹ H per UAV in view.
 double literalCost(const std::vector<TargetGaussian>& targets, const std::vector<UavState>& uavs,
                    const std::vector<Plan>& plans, const CostSettings& s, const OcclusionMap& map) {
-  const int H = s.horizon;
-  const double dt = s.period, q = s.sigma_a * s.sigma_a;
+  const int H = s.horizon, S = s.substeps;
+  const double dt = s.period / S, q = s.sigma_a * s.sigma_a;
   Mat4 F = Mat4::Identity();
   F(0, 2) = F(1, 3) = dt;
   Mat4 Q = Mat4::Zero();
@@ -189,33 +190,95 @@ double literalCost(const std::vector<TargetGaussian>& targets, const std::vector
     for (int m = 0; m < H; ++m) {
       Vec2 a = plans[i].velocities[m];
       if (a.norm() > uavs[i].v_max) a *= uavs[i].v_max / a.norm();
-      p += a * dt;
       if (uavs[i].yaw_mode == world::YawMode::velocity && a.norm() > 1e-6) {
         yaw = std::atan2(a.y(), a.x());
       }
-      pos[i].push_back(p);
-      fp[i].push_back(sensing::Footprint::place(uavs[i].footprint, p, yaw));
+      for (int sample = 0; sample < S; ++sample) {
+        p += a * dt;
+        pos[i].push_back(p);
+        fp[i].push_back(sensing::Footprint::place(uavs[i].footprint, p, yaw));
+      }
     }
   }
   double J = 0;
   for (const TargetGaussian& t : targets) {
     Vec4 x = t.x;
     Mat4 P = t.P;
-    for (int m = 0; m < H; ++m) {
+    for (int k = 0; k < H * S; ++k) {
       x = F * x;
       P = F * P * F.transpose() + Q;
       Mat4 information = P.inverse();
       const Vec2 z = x.head<2>();
       for (std::size_t i = 0; i < uavs.size(); ++i) {
-        if (map.occludes(z) || !fp[i][m].contains(z)) continue;
-        const Mat2 R = sensing::rangeBearingCovariance(z, pos[i][m], uavs[i].quality);
+        if (map.occludes(z) || !fp[i][k].contains(z)) continue;
+        const Mat2 R = S * sensing::rangeBearingCovariance(z, pos[i][k], uavs[i].quality);
         information += Hobs.transpose() * R.inverse() * Hobs;
       }
       P = information.inverse();
-      J += std::pow(s.discount, m) * (s.full_trace ? P.trace() : P(0, 0) + P(1, 1));
+      if ((k + 1) % S == 0) {
+        J += std::pow(s.discount, k / S) * (s.full_trace ? P.trace() : P(0, 0) + P(1, 1));
+      }
     }
   }
   return J;
+}
+
+TEST(NominalCost, SubstepsMatchTheLiteralRecursionAndPartialPreparation) {
+  // Two UAVs, one flying over a walker that passes under a small tree between plan instants.
+  std::vector<UavState> uavs(2);
+  uavs[0].position = Vec2(-3, 1);
+  uavs[0].yaw_mode = world::YawMode::velocity;
+  uavs[0].footprint.size = Vec2(12, 8);
+  uavs[1].position = Vec2(6, -4);
+  uavs[1].footprint.shape = sensing::FootprintShape::disc;
+  uavs[1].footprint.radius = 7;
+  std::vector<Plan> plans(2);
+  plans[0].velocities = {Vec2(3, 0), Vec2(2, 1), Vec2(0, 0)};
+  plans[1].velocities = {Vec2(-1, 2), Vec2(1, 0), Vec2(4, -4)};
+  const std::vector<TargetGaussian> targets{target({-2, 0}, {2.5, 0}), target({5, -3}, {0, 1})};
+  const OcclusionMap map({world::TreeDef::disc({1.2, 0}, 0.6)});  // hides the walker 0.24–0.72 s
+  for (const int substeps : {1, 5}) {
+    CostSettings s = settings(3, false);
+    s.substeps = substeps;
+    const PlanningProblem problem{targets, uavs, &map, s};
+    const double expected = literalCost(targets, uavs, plans, s, map);
+    EXPECT_NEAR(nominalCost(problem, plans), expected, 1e-9 * expected) << "S = " << substeps;
+    NominalCost partial;
+    const int free_agent[] = {0};
+    partial.prepare(problem, free_agent, plans);
+    EXPECT_NEAR(partial.evaluate(plans[0].velocities), expected, 1e-9 * expected);
+  }
+}
+
+TEST(NominalCost, SubstepsKeepTheInformationOfATargetInViewAndSeeShortOcclusions) {
+  // A target known to stand still under a hovering UAV, no process noise: S measurements of S·R
+  // carry exactly the information of one measurement of R, so S changes nothing (hand-derived per
+  // axis: p⁺ = 1 − 1/(1 + r) with r = α·0.1·r0 = 0.06 and 0.06·π).
+  std::vector<TargetGaussian> still{target({1, 0}, {0, 0})};
+  still[0].P.bottomRightCorner<2, 2>().setZero();  // known to stand still
+  const std::vector<UavState> uav{hoveringUav({0, 0})};
+  const double rx = 0.06, ry = 0.06 * kPi;
+  for (const int substeps : {1, 5}) {
+    CostSettings s = settings(1, false);
+    s.sigma_a = 0.0;
+    s.substeps = substeps;
+    EXPECT_NEAR(cost(still, uav, {hoverPlan(1)}, s), rx / (1 + rx) + ry / (1 + ry), 1e-12);
+  }
+  // A walker hidden from 0.24 s to 0.72 s of the first action: invisible at the plan instants, so
+  // with S = 1 the tree changes nothing; with S = 5 the samples at 0.4 s and 0.6 s are lost.
+  const std::vector<TargetGaussian> walker{target({-2, 0}, {2.5, 0})};
+  const OcclusionMap tree({world::TreeDef::disc({-0.8, 0}, 0.6)});
+  for (const int substeps : {1, 5}) {
+    CostSettings s = settings(2, false);
+    s.substeps = substeps;
+    const double open = cost(walker, uav, {hoverPlan(2)}, s);
+    const double hidden = cost(walker, uav, {hoverPlan(2)}, s, &tree);
+    if (substeps == 1) {
+      EXPECT_EQ(open, hidden);
+    } else {
+      EXPECT_GT(hidden, open * 1.01);
+    }
+  }
 }
 
 TEST(NominalCost, MatchesLiteralInformationFormAndPartialPreparation) {
