@@ -67,8 +67,39 @@ TEST(PaperScenarios, TrajectoryHandoverStartsInM0AndEndsWithPairsApart) {
   }
 }
 
-TEST(PaperScenarios, ResourceAllocationLeavesIIIUnseenButCoverableByTheLargeFootprint) {
+TEST(PaperScenarios, ResourceAllocationHasEveryPropertyWithATwoMetreMargin) {
+  // The calibrated layout (docs/calibration.md): each prose property holds with ≥ 2 m to spare.
   const ScenarioSpec spec = scenarios::loadScenario("resource_allocation");
+  const std::vector<TargetSet> M0 = initialOwnership(spec);
+  EXPECT_EQ(ownershipState(M0, spec.analysis.states, 3), "M0");
+  EXPECT_EQ((M0[0] | M0[1]) & bit(2), 0u);  // III seen by nobody
+  const double small = spec.uavs[0].sensor.footprint.size.maxCoeff();
+  const double large = spec.uavs[1].sensor.footprint.size.minCoeff();
+  const Vec2 I = spec.targets[0].path.positionAt(0), II = spec.targets[1].path.positionAt(0),
+             III = spec.targets[2].path.positionAt(0);
+  const double gap = (III - II).norm();
+  EXPECT_GE(gap, small + 2.0);      // no placement of the small footprint holds II and III
+  EXPECT_LE(gap, large - 2 * 2.0);  // the large one centred between them does, 2 m inside
+  const sensing::Footprint large_between = footprintAt(spec, 1, 0.5 * (II + III));
+  EXPECT_TRUE(large_between.contains(II) && large_between.contains(III));
+  // No footprint holds I with II or III: farther apart along x than the large side.
+  EXPECT_GE(std::abs(I.x() - II.x()), large + 2.0);
+  EXPECT_GE(std::abs(I.x() - III.x()), large + 2.0);
+  // Closed form of the swap at v_max, the targets walking east at 1 m/s: the large footprint holds
+  // II and III once its centre is back at their x, after (22 − 20/2) m / (5 + 1) m/s = 2 s; the
+  // small one holds I once 5 m behind it, after (22 − 10/2) m / (5 − 1) m/s = 4.25 s. Both fit
+  // inside H·Δ = 5 s but not inside 1 s.
+  const double v_max = spec.uavs[0].body.v_max, v = spec.targets[0].path.velocityAt(0).x();
+  const double large_in = (I.x() - II.x() - 0.5 * large) / (v_max + v);
+  const double small_in = (I.x() - II.x() - 0.5 * small) / (v_max - v);
+  EXPECT_NEAR(large_in, 2.0, 1e-9);
+  EXPECT_NEAR(small_in, 4.25, 1e-9);
+  EXPECT_LT(std::max(large_in, small_in), spec.planner.horizon * spec.planner.plan_period);
+  EXPECT_GT(std::min(large_in, small_in), spec.planner.plan_period);
+}
+
+TEST(PaperScenarios, ResourceAllocationV1LeavesIIIUnseenButCoverableByTheLargeFootprint) {
+  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation_v1");
   const std::vector<TargetSet> M0 = initialOwnership(spec);
   EXPECT_EQ(ownershipState(M0, spec.analysis.states, 3), "M0");
   const Vec2 II = spec.targets[1].path.positionAt(0), III = spec.targets[2].path.positionAt(0);
@@ -95,9 +126,15 @@ TEST(PaperScenarios, JointEffectHidesIFrom2_2To5_0sWithTheTreeOutsideTheInitialF
   for (int i = 0; i < 2; ++i) {
     EXPECT_FALSE(footprintAt(spec, i, spec.uavs[i].body.start).contains(spec.trees[0].centre));
   }
-  // The tracks are too far apart for one footprint.
+  // With 2 m to spare: the tree's centre is outside both initial footprints, and each target
+  // outside the other UAV's initial footprint (the tracks 8 m apart, footprints 6 m half-side).
+  const double half = 0.5 * spec.uavs[0].sensor.footprint.size.y();
+  for (int i = 0; i < 2; ++i) {
+    const Vec2 offset = spec.trees[0].centre - spec.uavs[i].body.start;
+    EXPECT_GE(offset.cwiseAbs().maxCoeff(), half + 2.0);
+  }
   const Vec2 gap = spec.targets[0].path.positionAt(0) - spec.targets[1].path.positionAt(0);
-  EXPECT_GT(std::abs(gap.y()), spec.uavs[0].sensor.footprint.size.y());
+  EXPECT_GE(std::abs(gap.y()), half + 2.0);
 }
 
 TEST(PaperScenarios, OcclusionSharingHidesIThenIIIUnderOneTree) {

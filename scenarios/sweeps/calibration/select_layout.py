@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""The calibration's selection rule (docs/calibration.md), applied to an analysed search sweep.
+
+    python3 select_layout.py SWEEP_DIR ra|je
+
+For every layout (a point of the two layout axes) the loss is the largest deviation, in
+percentage points, of our numbers from the paper's; a layout is scored by the worst loss over
+itself and its neighbours on the grid (one step along either axis), so that the choice is one whose
+behaviour holds nearby too. Lowest score wins; ties go to the layout listed first.
+"""
+import csv
+import re
+import sys
+from collections import defaultdict
+
+# The paper's numbers: RA, the percentage of trials in M* at L per (algorithm, H); JE, the time
+# (s) at which the coverage of I starts to drop, per map mode.
+PAPER = {
+    "ra": {("sma", "5"): 50.0, ("dec_pomdp", "5"): 50.0, ("sma", "1"): 12.5, ("dec_pomdp", "1"): 5.0},
+    "je": {"a_priori": 1.6, "dynamic": 2.2},
+}
+
+
+KEYS = ("gap", "distance", "algorithm", "horizon", "spacing", "speed", "occlusion_map")
+
+
+def parse(config):
+    """'spacing-8_speed-1.5_occlusion_map-a_priori' → {'spacing': '8', ...} (values may hold '_')."""
+    pattern = "(" + "|".join(KEYS) + r")-(.*?)(?=_(?:" + "|".join(KEYS) + ")-|$)"
+    return dict(re.findall(pattern, config))
+
+
+def ra_numbers(sweep_dir):
+    numbers = defaultdict(dict)
+    for row in csv.DictReader(open(f"{sweep_dir}/analysis/ownership_states.csv")):
+        if row["state"] != "M*" or row["column"] != "4":
+            continue
+        p = parse(row["config"])
+        numbers[(p["gap"], p["distance"])][(p["algorithm"], p["horizon"])] = 100 * float(row["fraction"])
+    return numbers
+
+
+def je_numbers(sweep_dir):
+    """Per layout and map: the onset of the reaction (first time the mean coverage of I is below
+    0.9, i.e. a tenth of the trials have left it), and the mean coverage of I and of II while I
+    is hidden (2.2–5.0 s)."""
+    curves = defaultdict(lambda: defaultdict(list))
+    for row in csv.DictReader(open(f"{sweep_dir}/analysis/coverage.csv")):
+        curves[row["config"]][row["target"]].append((float(row["t_s"]), float(row["mean_coverage"])))
+    numbers = defaultdict(dict)
+    for config, by_target in curves.items():
+        p = parse(config)
+        layout, mode = (p["spacing"], p["speed"]), p["occlusion_map"]
+        curve_I, curve_II = by_target["I"], by_target["II"]
+        onset = [t for t, c in curve_I if c < 0.9]
+        numbers[layout][mode] = onset[0] if onset else curve_I[-1][0]
+        for name, curve in (("I", curve_I), ("II", curve_II)):
+            hidden = [c for t, c in curve if 2.2 < t < 5.0]
+            numbers[layout][f"cover_{name}_{mode}"] = sum(hidden) / len(hidden)
+    return numbers
+
+
+JE_HALF_FOOTPRINT = 6.0  # m, the 12 x 12 m footprints of je_search.json
+
+
+def je_feasible(layout):
+    """The tree's centre (3.6·speed ahead of I's start) outside the initial footprints, 2 m spare,
+    and II outside UAV1's initial footprint (spacing > half side), 2 m spare."""
+    spacing, speed = float(layout[0]), float(layout[1])
+    return 3.6 * speed >= JE_HALF_FOOTPRINT + 2.0 and spacing >= JE_HALF_FOOTPRINT + 2.0
+
+
+def je_loss(n):
+    """Infeasible (100) unless both maps cut the coverage of hidden I and raise that of II by at
+    least 0.3 footprints against no map; else the larger onset error, in points of 2.2 s."""
+    for mode in ("a_priori", "dynamic"):
+        if n[f"cover_I_{mode}"] > n["cover_I_none"] - 0.3 or n[f"cover_II_{mode}"] < n["cover_II_none"] + 0.3:
+            return 100.0
+    return max(abs(n[mode] - target) for mode, target in PAPER["je"].items()) * 100.0 / 2.2
+
+
+def main():
+    sweep_dir, scenario = sys.argv[1], sys.argv[2]
+    numbers = ra_numbers(sweep_dir) if scenario == "ra" else je_numbers(sweep_dir)
+    paper = PAPER[scenario]
+    if scenario == "ra":
+        loss = {k: max(abs(v.get(key, 0.0) - target) for key, target in paper.items())
+                for k, v in numbers.items()}
+    else:
+        loss = {k: je_loss(v) for k, v in numbers.items() if je_feasible(k)}
+    xs = sorted({k[0] for k in loss}, key=float)
+    ys = sorted({k[1] for k in loss}, key=float)
+    best = None
+    for x in xs:
+        for y in ys:
+            if (x, y) not in loss:
+                continue
+            i, j = xs.index(x), ys.index(y)
+            around = [(xs[a], ys[b]) for a, b in ((i, j), (i - 1, j), (i + 1, j), (i, j - 1), (i, j + 1))
+                      if 0 <= a < len(xs) and 0 <= b < len(ys) and (xs[a], ys[b]) in loss]
+            score = max(loss[k] for k in around)
+            shown = " ".join(f"{key}={value:.2f}" for key, value in sorted(numbers[(x, y)].items()))
+            print(f"{x:>6} {y:>6}  loss {loss[(x, y)]:5.1f}  worst nearby {score:5.1f}  {shown}")
+            if best is None or score < best[0]:
+                best = (score, x, y)
+    print(f"chosen: {best[1]} × {best[2]} (worst loss nearby {best[0]:.1f} points)")
+
+
+if __name__ == "__main__":
+    main()
