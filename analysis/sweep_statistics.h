@@ -1,11 +1,13 @@
 #pragma once
 // Per-configuration statistics over a sweep's trials: ownership-state frequencies and flows at
 // the Sankey columns, Ownership_Change counts, Occlusion_Aware frequencies (plain and given the
-// occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time.
+// occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time — each mean with
+// its 95 % interval, and the per-trial facts behind the report's intervals.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "analysis/intervals.h"
 #include "analysis/trial_behaviour.h"
 #include "scenarios/spec.h"
 #include "scenarios/trial.h"
@@ -23,6 +25,8 @@ struct OcclusionStatistics {
   double pAwareGivenEvent() const {
     return with_event ? static_cast<double>(aware_with_event) / with_event : 0.0;
   }
+  Estimate awareEstimate() const { return proportion(aware, trials); }
+  Estimate awareGivenEventEstimate() const { return proportion(aware_with_event, with_event); }
 };
 
 struct ChangeCount {
@@ -44,9 +48,24 @@ struct ConfigStatistics {
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
   std::vector<double> ospa;                   // [k]: mean OSPA (m)
   std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
+  std::vector<std::vector<ConfidenceInterval>> coverage_ci;  // [t][k]: 95 % t interval
+  std::vector<ConfidenceInterval> ospa_ci, trace_ci;         // [k]: 95 % t intervals (m, m²)
+
+  // Per trial, in trial order.
+  std::vector<std::array<int, 5>> trial_states;  // [trial][column]: index into states
+  std::vector<std::vector<int>> first_step_in;   // [trial][named state]: first step in it, −1
+  std::vector<std::vector<std::vector<int>>> trial_coverage;  // [trial][t][k]: footprints on t
 
   /// Fraction of trials in `state` at Sankey column c (0 if the state is unknown).
   double stateFraction(const std::string& state, int c) const;
+  /// … with its Wilson interval.
+  Estimate stateEstimate(const std::string& state, int c) const;
+  /// Trials that were in the named `state` at some step k ≤ step (0 if it is not a named state).
+  int reachedBy(const std::string& state, int step) const;
+  /// Per trial, the mean number of footprints on target t over the inclusive steps of `steps`.
+  std::vector<double> trialCoverageOver(int target, const Interval& steps) const;
+  /// Their mean over trials with its 95 % interval.
+  Estimate coverageOver(int target, const Interval& steps) const;
 };
 
 /// trials: all of one configuration (at least one); spec: that configuration's scenario.

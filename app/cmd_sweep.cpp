@@ -5,6 +5,7 @@
 #include <string>
 #include <thread>
 
+#include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
 #include "scenarios/sweep.h"
@@ -106,8 +107,9 @@ int analyzeCommand(Args& args) {
     std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {
       if (config.state_counts[4][i] > 0) {
-        std::printf("  %s %.0f%%", config.states[i].c_str(),
-                    100.0 * config.state_counts[4][i] / config.trials);
+        const analysis::Estimate e = analysis::proportion(config.state_counts[4][i], config.trials);
+        std::printf("  %s %.0f%% [%.0f, %.0f]", config.states[i].c_str(), 100.0 * e.value,
+                    100.0 * e.ci.low, 100.0 * e.ci.high);
       }
     }
     std::printf("\n");
