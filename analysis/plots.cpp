@@ -180,8 +180,8 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
                                    kShade});
   f.shapes.push_back(
       Label{Vec2(f.width - 212.0, 60), "target under a crown", 10, Anchor::start, kInk});
-  f.shapes.push_back(Label{Vec2(f.width - 250.0, 80), "bands: 95 % interval of the mean", 10,
-                           Anchor::start, kInk});
+  f.shapes.push_back(
+      Label{Vec2(f.width - 250.0, 80), "bands: 95 % interval", 10, Anchor::start, kInk});
   if (configs.empty() || configs.front()->coverage.empty()) return f;
   const int steps = static_cast<int>(configs.front()->coverage.front().size());
   const double dt = configs.front()->dt;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "analysis/figure_png.h"
+#include "analysis/heatmap.h"
 #include "analysis/plots.h"
 #include "scenarios/loader.h"
 #include "scenarios/sweep.h"
@@ -16,6 +17,8 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
   const scenarios::SweepResults results = scenarios::loadSweepResults(sweep_dir);
   SweepAnalysis analysis;
   analysis.name = results.sweep.name;
+  analysis.dir = sweep_dir;
+  analysis.axes = results.sweep.axes;
   for (std::size_t c = 0; c < results.configs.size(); ++c) {
     if (results.trials[c].empty()) continue;
     const scenarios::SweepConfig& config = results.configs[c];
@@ -131,7 +134,8 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 
 namespace canopy::analysis {
 
-void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
+void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
+                  const std::string& heatmap_state) {
   fs::create_directories(out_dir);
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
@@ -148,6 +152,7 @@ void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
         coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"),
         out_dir / "coverage");
   }
+  writeHeatmaps(analysis, out_dir, heatmap_state);
 }
 
 }  // namespace canopy::analysis

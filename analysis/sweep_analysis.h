@@ -7,11 +7,14 @@
 
 #include "analysis/sweep_statistics.h"
 #include "scenarios/spec.h"
+#include "scenarios/sweep.h"
 
 namespace canopy::analysis {
 
 struct SweepAnalysis {
   std::string name;                            // the sweep's name
+  std::filesystem::path dir;                   // the sweep directory it was read from
+  std::vector<scenarios::SweepAxis> axes;      // the sweep's axes
   std::vector<scenarios::ScenarioSpec> specs;  // per configuration
   std::vector<ConfigStatistics> configs;  // per configuration, in sweep order (those with trials)
 };
@@ -40,8 +43,11 @@ void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out
 
 namespace canopy::analysis {
 
-/// Writes sankey_<config>.{svg,png} per configuration and coverage.{svg,png} (one line per
-/// configuration with its 95 % band, one panel per trajectory) into out_dir.
-void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
+/// Writes sankey_<config>.{svg,png} per configuration, coverage.{svg,png} (one line per
+/// configuration with its 95 % band, one panel per trajectory) and, for a sweep with two numeric
+/// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; heatmap_state picks the state,
+/// empty: M* or the hidden coverage) into out_dir.
+void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir,
+                  const std::string& heatmap_state = "");
 
 }  // namespace canopy::analysis
