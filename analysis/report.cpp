@@ -80,8 +80,13 @@ double meanOver(const std::vector<double>& curve, const Interval& hidden) {
   return sum / (hidden.last - hidden.first + 1);
 }
 
-std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx) {
-  std::ostringstream md;
+namespace {
+
+struct ReactionTimes {
+  std::string apriori, dynamic;  // "never", "1.6 s", or empty when Joint Effect was not run
+};
+
+void writeHeader(std::ostream& md, const ReportContext& ctx) {
   md << "# canopy — reproduction of *Emergent Cooperative Behavior in Distributed Target Tracking "
         "with "
         "Unknown Occlusions*\n\n";
@@ -89,7 +94,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
      << " trials per configuration, sweep seed " << ctx.seed << ", " << ctx.jobs << " jobs; "
      << ctx.trials_run << " trials run now (the others resumed from disk); "
      << num(ctx.wall_seconds, "%.1f") << " s wall time.\n\n";
+}
 
+void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // The configuration, read from the first experiment's scenario (shared defaults).
   if (!results.empty() && !results.front().analysis.specs.empty()) {
     const scenarios::ScenarioSpec& spec = results.front().analysis.specs.front();
@@ -119,7 +126,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "derived from "
           "the sweep seed; each trial's streams are named per purpose and agent.\n\n";
   }
+}
 
+void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Ownership: TH and RA.
   md << "## Ownership: Trajectory Handover and Resource Allocation\n\n";
   md << "Fraction of trials in the cooperative state M* (m-Ownership with m = 5 for TH, m = 3 for "
@@ -145,7 +154,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
       md << "![" << s.id << "](" << r.figures << "/sankey_" << s.id << ".png)\n\n";
     }
   }
+}
 
+void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Occlusion: JE and OS.
   md << "## Occlusion awareness: Joint Effect and Occlusion Sharing\n\n";
   md << "Mean number of footprints on the occluded trajectory while it is hidden (wasted "
@@ -173,12 +184,14 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     md << "### " << r.experiment.scenario << "\n\n![coverage](" << r.figures
        << "/coverage.png)\n\n";
   }
+}
 
+ReactionTimes writeReaction(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Reaction times in JE: when the coverage of I first drops below 0.5.
   md << "### Reaction to the occlusion (Joint Effect, trajectory I)\n\n";
   md << "First time the mean coverage of I falls below 0.5 (half of the trials have left I).\n\n";
   md << "| map | ours | paper |\n|---|---:|---:|\n";
-  std::string apriori_time, dynamic_time;
+  ReactionTimes reaction;
   if (const ExperimentResult* je = find(results, "joint_effect")) {
     const int I = targetIndex(je->analysis, "I");
     for (const char* mode : {"a_priori", "dynamic", "none"}) {
@@ -191,14 +204,15 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
              : std::string(mode) == "dynamic" ? "≈ 2.2 s"
                                               : "keeps observing")
          << " |\n";
-      if (std::string(mode) == "a_priori") apriori_time = when;
-      if (std::string(mode) == "dynamic") dynamic_time = when;
+      if (std::string(mode) == "a_priori") reaction.apriori = when;
+      if (std::string(mode) == "dynamic") reaction.dynamic = when;
     }
   }
   md << "\n";
+  return reaction;
+}
 
-  // The qualitative findings.
-  md << "## The paper's qualitative findings, checked\n\n";
+void writeHorizonFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   int pairs = 0, holds = 0;
   std::ostringstream detail;
   for (const char* scenario : {"trajectory_handover", "resource_allocation"}) {
@@ -222,7 +236,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
              : "holds in " + std::to_string(holds) + " of " + std::to_string(pairs) + " cases")
      << ":\n"
      << detail.str() << "\n";
+}
 
+void writeWastedCoverageFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   int wasted_cases = 0, wasted_holds = 0;
   std::ostringstream wasted;
   for (const char* scenario : {"joint_effect", "occlusion_sharing"}) {
@@ -250,7 +266,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
                    " cases")
      << ":\n"
      << wasted.str() << "\n";
+}
 
+void writeCatchUpFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   if (const ExperimentResult* os = find(results, "occlusion_sharing")) {
     const int III = targetIndex(os->analysis, "III");
     const ConfigStatistics* apr = config(*os, "planner.occlusion_map", "a_priori");
@@ -271,16 +289,21 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
             "the a-priori map.\n\n";
     }
   }
-  if (!apriori_time.empty()) {
-    const bool both_leave = apriori_time != "never" && dynamic_time != "never";
-    md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
-       << (!both_leave                                         ? "cannot be checked here"
-           : std::stod(dynamic_time) > std::stod(apriori_time) ? "holds"
-                                                               : "does not hold")
-       << ": the first time the coverage of I falls below 0.5 is " << apriori_time
-       << " (a-priori map) and " << dynamic_time << " (dynamic map).\n\n";
-  }
+}
 
+void writeReactionOrderFinding(std::ostream& md, const ReactionTimes& reaction) {
+  if (!reaction.apriori.empty()) {
+    const bool both_leave = reaction.apriori != "never" && reaction.dynamic != "never";
+    md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
+       << (!both_leave                                                 ? "cannot be checked here"
+           : std::stod(reaction.dynamic) > std::stod(reaction.apriori) ? "holds"
+                                                                       : "does not hold")
+       << ": the first time the coverage of I falls below 0.5 is " << reaction.apriori
+       << " (a-priori map) and " << reaction.dynamic << " (dynamic map).\n\n";
+  }
+}
+
+void writeDifferences(std::ostream& md) {
   // Each bullet is one line of the report; the source breaks them at sentence boundaries.
   md << "## Where our setting differs from the paper's\n\n";
   md << "- The paper's Figure 2 (the scenario drawings) is not in the text we have; the geometry "
@@ -304,7 +327,10 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
         "joint plans.\n";
   md << "- The reference simulator's bugs are not reproduced (algorithms.md §8), notably its "
         "Dec-POMDP plans that were never applied and its truth noise drawn from 0.5·R.\n\n";
+}
 
+void writeWhyNot(std::ostream& md, const std::vector<ExperimentResult>& results,
+                 const ReactionTimes& reaction) {
   // Reasons we found for the findings that fail; each is written only while its symptom shows.
   bool ra_never = false;
   if (const ExperimentResult* ra = find(results, "resource_allocation")) {
@@ -312,7 +338,7 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     for (const ConfigStatistics& s : ra->analysis.configs)
       ra_never &= s.stateFraction("M*", 4) == 0.0;
   }
-  const bool je_stays = apriori_time == "never";
+  const bool je_stays = reaction.apriori == "never";
   if (ra_never || je_stays) {
     md << "## Why some findings do not reproduce (what we found, not a certainty)\n\n";
   }
@@ -348,6 +374,24 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "Hence the reaction times above read \"never\" where the paper reports about 1.6 s "
           "and 2.2 s.\n";
   }
+}
+
+}  // namespace
+
+std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx) {
+  std::ostringstream md;
+  writeHeader(md, ctx);
+  writeConfiguration(md, results);
+  writeOwnership(md, results);
+  writeOcclusion(md, results);
+  const ReactionTimes reaction = writeReaction(md, results);
+  md << "## The paper's qualitative findings, checked\n\n";
+  writeHorizonFinding(md, results);
+  writeWastedCoverageFinding(md, results);
+  writeCatchUpFinding(md, results);
+  writeReactionOrderFinding(md, reaction);
+  writeDifferences(md);
+  writeWhyNot(md, results, reaction);
   return md.str();
 }
 
