@@ -94,6 +94,11 @@ ConfidenceInterval meanInterval(const std::vector<double>& values) {
   return meanOf(values).ci;
 }
 
+ConfidenceInterval clipped(const ConfidenceInterval& ci, double lo, double hi) {
+  if (!ci.bounded()) return ci;
+  return {std::clamp(ci.low, lo, hi), std::clamp(ci.high, lo, hi)};
+}
+
 Estimate proportion(int k, int n) {
   return {n ? static_cast<double>(k) / n : 0.0, wilsonInterval(k, n)};
 }

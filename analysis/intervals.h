@@ -46,6 +46,10 @@ class SampleMoments {
 ConfidenceInterval meanInterval(const SampleMoments& sample);
 ConfidenceInterval meanInterval(const std::vector<double>& values);
 
+/// `ci` cut to [lo, hi], the range the estimated quantity can take (a fraction, a footprint count);
+/// an unbounded interval stays unbounded, so that "no interval" remains visible.
+ConfidenceInterval clipped(const ConfidenceInterval& ci, double lo, double hi);
+
 /// A number and its 95 % interval.
 struct Estimate {
   double value = 0.0;

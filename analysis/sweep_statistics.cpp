@@ -1,9 +1,15 @@
 #include "analysis/sweep_statistics.h"
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 namespace canopy::analysis {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
 
 double ConfigStatistics::stateFraction(const std::string& state, int c) const {
   const auto it = std::find(states.begin(), states.end(), state);
@@ -37,7 +43,9 @@ std::vector<double> ConfigStatistics::trialCoverageOver(int target, const Interv
 }
 
 Estimate ConfigStatistics::coverageOver(int target, const Interval& steps) const {
-  return meanOf(trialCoverageOver(target, steps));
+  Estimate e = meanOf(trialCoverageOver(target, steps));
+  e.ci = clipped(e.ci, 0.0, uavs);
+  return e;
 }
 
 int firstBelow(const std::vector<double>& curve, double threshold, int from) {
@@ -64,6 +72,7 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
 
   const int steps = trials.front().steps();
   const int targets = trials.front().targets;
+  stats.uavs = trials.front().uavs;
   stats.columns = sankeyColumns(steps - 1);
   stats.coverage.assign(targets, std::vector<double>(steps, 0.0));
   stats.ospa.assign(steps, 0.0);
@@ -121,12 +130,12 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
   for (int k = 0; k < steps; ++k) {
     for (int t = 0; t < targets; ++t) {
       stats.coverage[t][k] = coverage[t][k].mean();
-      stats.coverage_ci[t][k] = meanInterval(coverage[t][k]);
+      stats.coverage_ci[t][k] = clipped(meanInterval(coverage[t][k]), 0.0, stats.uavs);
     }
     stats.ospa[k] = ospa[k].mean();
-    stats.ospa_ci[k] = meanInterval(ospa[k]);
+    stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, kInf);
     stats.trace[k] = trace[k].mean();
-    stats.trace_ci[k] = meanInterval(trace[k]);
+    stats.trace_ci[k] = clipped(meanInterval(trace[k]), 0.0, kInf);
   }
   std::sort(stats.changes.begin(), stats.changes.end(),
             [](const ChangeCount& a, const ChangeCount& b) {

@@ -38,6 +38,7 @@ struct ConfigStatistics {
   std::string id;                      // the sweep configuration
   std::vector<std::string> overrides;  // its --set values
   int trials = 0;
+  int uavs = 0;
   double dt = 0.2;                               // s
   std::array<int, 5> columns{};                  // steps of the Sankey columns
   std::vector<std::string> states;               // named states, then "Miss 1", "Miss >1", "Other"
@@ -48,8 +49,10 @@ struct ConfigStatistics {
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
   std::vector<double> ospa;                   // [k]: mean OSPA (m)
   std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
-  std::vector<std::vector<ConfidenceInterval>> coverage_ci;  // [t][k]: 95 % t interval
-  std::vector<ConfidenceInterval> ospa_ci, trace_ci;         // [k]: 95 % t intervals (m, m²)
+  // 95 % t intervals, clipped to what the quantity can take: [0, uavs] footprints, OSPA and
+  // tr(P) ≥ 0.
+  std::vector<std::vector<ConfidenceInterval>> coverage_ci;  // [t][k]
+  std::vector<ConfidenceInterval> ospa_ci, trace_ci;         // [k] (m, m²)
 
   // Per trial, in trial order.
   std::vector<std::array<int, 5>> trial_states;  // [trial][column]: index into states
@@ -64,7 +67,7 @@ struct ConfigStatistics {
   int reachedBy(const std::string& state, int step) const;
   /// Per trial, the mean number of footprints on target t over the inclusive steps of `steps`.
   std::vector<double> trialCoverageOver(int target, const Interval& steps) const;
-  /// Their mean over trials with its 95 % interval.
+  /// Their mean over trials with its 95 % interval (clipped to [0, uavs]).
   Estimate coverageOver(int target, const Interval& steps) const;
 };
 
