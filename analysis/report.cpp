@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/report_numbers.h"
+
 namespace canopy::analysis {
 namespace {
 
@@ -49,12 +51,20 @@ const ConfigStatistics* config(const ExperimentResult& r, const std::string& pat
   return nullptr;
 }
 
-// Mean over the Sankey columns L/4 … L of the fraction of trials in M*: how early and how often
-// the team is in the cooperative state.
-double cooperation(const ConfigStatistics& s) {
-  double sum = 0.0;
-  for (int c = 1; c < 5; ++c) sum += s.stateFraction("M*", c);
-  return sum / 4.0;
+// Per trial, the fraction of the Sankey columns L/4 … L at which it is in M*; their mean over
+// trials (the mean over those columns of the fraction of trials in M*) says how early and how
+// often the team is in the cooperative state.
+Estimate cooperation(const ConfigStatistics& s) {
+  const auto m_star = std::find(s.states.begin(), s.states.end(), "M*") - s.states.begin();
+  std::vector<double> per_trial;
+  for (const std::array<int, 5>& columns : s.trial_states) {
+    int in = 0;
+    for (int c = 1; c < 5; ++c) in += columns[c] == m_star;
+    per_trial.push_back(in / 4.0);
+  }
+  Estimate e = meanOf(per_trial);
+  e.ci = clipped(e.ci, 0.0, 1.0);
+  return e;
 }
 
 const OcclusionStatistics* episode(const ConfigStatistics& s, int target) {
@@ -96,6 +106,27 @@ void writeHeader(std::ostream& md, const ReportContext& ctx) {
      << num(ctx.wall_seconds, "%.1f") << " s wall time.\n\n";
 }
 
+// One warning line naming every experiment run with fewer trials than the paper's 40 per
+// configuration.
+void writeTrialWarnings(std::ostream& md, const std::vector<ExperimentResult>& results) {
+  std::string few;
+  for (const ExperimentResult& r : results) {
+    if (r.analysis.configs.empty()) continue;
+    int fewest = r.analysis.configs.front().trials, most = fewest;
+    for (const ConfigStatistics& s : r.analysis.configs) {
+      fewest = std::min(fewest, s.trials);
+      most = std::max(most, s.trials);
+    }
+    if (fewest >= kPaperTrials) continue;
+    few += (few.empty() ? "" : ", ") + r.experiment.scenario + " " +
+           (fewest == most ? std::to_string(fewest)
+                           : std::to_string(fewest) + "–" + std::to_string(most));
+  }
+  if (few.empty()) return;
+  md << "> **Warning: fewer trials than the paper's " << kPaperTrials << "** per configuration ("
+     << few << "); the intervals below are correspondingly wide.\n\n";
+}
+
 void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // The configuration, read from the first experiment's scenario (shared defaults).
   if (!results.empty() && !results.front().analysis.specs.empty()) {
@@ -133,18 +164,28 @@ void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& resul
   md << "## Ownership: Trajectory Handover and Resource Allocation\n\n";
   md << "Fraction of trials in the cooperative state M* (m-Ownership with m = 5 for TH, m = 3 for "
         "RA).\n\n";
-  md << "| scenario | algorithm | H | M* at L/2 (ours) | paper | M* at L (ours) | paper | note |\n";
-  md << "|---|---|---:|---:|---:|---:|---:|---|\n";
+  md << "In brackets the 95 % Wilson interval. \"In M* at L/2\" is the Sankey's snapshot at "
+        "k = L/2, the paper's measure; \"reached M* by L/2\" counts the trials that were in M* at "
+        "some step k ≤ L/2. \"Paper inside?\" says whether the paper's number lies inside our "
+        "interval, and Δ = paper − ours.\n\n";
+  md << "| scenario | algorithm | H | trials | in M* at L/2 (ours) | reached M* by L/2 (ours) | "
+        "paper | paper inside? | M* at L (ours) | paper | paper inside? | note |\n";
+  md << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
   for (const PaperOwnership& paper : paperOwnership()) {
     const ExperimentResult* r = find(results, paper.scenario);
     if (!r) continue;
     const ConfigStatistics* s = config(*r, "planner.algorithm", paper.algorithm, "planner.horizon",
                                        std::to_string(paper.horizon));
     if (!s) continue;
+    const Estimate half = s->stateEstimate("M*", 2), end = s->stateEstimate("M*", 4);
+    const Estimate reached = proportion(s->reachedBy("M*", s->columns[2]), s->trials);
     md << "| " << paper.scenario << " | " << (paper.algorithm == "sma" ? "SMA-NBO" : "Dec-POMDP")
-       << " | " << paper.horizon << " | " << pct(s->stateFraction("M*", 2)) << " | "
-       << (paper.at_half ? pct(*paper.at_half) : "—") << " | " << pct(s->stateFraction("M*", 4))
-       << " | " << (paper.at_end ? pct(*paper.at_end) : "—") << " | " << paper.note << " |\n";
+       << " | " << paper.horizon << " | " << s->trials << " | " << percentWithInterval(half)
+       << " | " << percentWithInterval(reached) << " | "
+       << (paper.at_half ? pct(*paper.at_half) : "—") << " | "
+       << (paper.at_half ? paperVerdict(*paper.at_half, half) : "—") << " | "
+       << percentWithInterval(end) << " | " << (paper.at_end ? pct(*paper.at_end) : "—") << " | "
+       << (paper.at_end ? paperVerdict(*paper.at_end, end) : "—") << " | " << paper.note << " |\n";
   }
   md << "\n";
   for (const ExperimentResult& r : results) {
@@ -162,9 +203,11 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
   md << "Mean number of footprints on the occluded trajectory while it is hidden (wasted "
         "coverage), and "
         "the frequency of Occlusion_Aware (margin h = 1 s), with SMA-NBO, H = 5.\n\n";
-  md << "| scenario | trajectory | hidden | map | mean coverage while hidden | P[OA] | P[OA \\| e] "
-        "(trials with e) |\n";
-  md << "|---|---|---|---|---:|---:|---:|\n";
+  md << "In brackets the 95 % interval: Student t over the trials' own means for the coverage, "
+        "Wilson for the frequencies.\n\n";
+  md << "| scenario | trajectory | hidden | map | trials | mean coverage while hidden | P[OA] | "
+        "P[OA \\| e] (trials with e) |\n";
+  md << "|---|---|---|---|---:|---:|---:|---:|\n";
   for (const ExperimentResult& r : results) {
     if (r.experiment.ownership) continue;
     for (const ConfigStatistics& s : r.analysis.configs) {
@@ -172,9 +215,11 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
         md << "| " << r.experiment.scenario << " | "
            << r.analysis.specs.front().targets[o.target].name << " | "
            << num(o.hidden.first * s.dt, "%.1f") << "–" << num(o.hidden.last * s.dt, "%.1f")
-           << " s | " << valueOf(s, "planner.occlusion_map") << " | "
-           << num(meanOver(s.coverage[o.target], o.hidden)) << " | " << pct(o.pAware()) << " | "
-           << (o.with_event ? pct(o.pAwareGivenEvent()) : "—") << " (" << o.with_event << ") |\n";
+           << " s | " << valueOf(s, "planner.occlusion_map") << " | " << o.trials << " | "
+           << numberWithInterval(s.coverageOver(o.target, o.hidden)) << " | "
+           << percentWithInterval(o.awareEstimate()) << " | "
+           << (o.with_event ? percentWithInterval(o.awareGivenEventEstimate()) : "—") << " ("
+           << o.with_event << ") |\n";
       }
     }
   }
@@ -225,9 +270,11 @@ void writeHorizonFinding(std::ostream& md, const std::vector<ExperimentResult>& 
           config(*r, "planner.algorithm", algorithm, "planner.horizon", "5");
       if (!h1 || !h5) continue;
       ++pairs;
-      holds += cooperation(*h5) > cooperation(*h1);
+      const Estimate c5 = cooperation(*h5), c1 = cooperation(*h1);
+      holds += c5.value > c1.value;
       detail << "  - " << scenario << ", " << algorithm << ": mean M* frequency over L/4…L "
-             << pct(cooperation(*h5)) << " (H = 5) vs " << pct(cooperation(*h1)) << " (H = 1)\n";
+             << percentWithInterval(c5) << " (H = 5) vs " << percentWithInterval(c1)
+             << " (H = 1)\n";
     }
   }
   md << "1. **H = 5 is more cooperative than H = 1** — "
@@ -247,15 +294,16 @@ void writeWastedCoverageFinding(std::ostream& md, const std::vector<ExperimentRe
     const ConfigStatistics* none = config(*r, "planner.occlusion_map", "none");
     if (!none) continue;
     for (const OcclusionStatistics& o : none->occlusions) {
-      const double c_none = meanOver(none->coverage[o.target], o.hidden);
+      const Estimate c_none = none->coverageOver(o.target, o.hidden);
       for (const char* mode : {"a_priori", "dynamic"}) {
         const ConfigStatistics* s = config(*r, "planner.occlusion_map", mode);
         if (!s) continue;
-        const double c = meanOver(s->coverage[o.target], o.hidden);
+        const Estimate c = s->coverageOver(o.target, o.hidden);
         ++wasted_cases;
-        wasted_holds += c < c_none;
+        wasted_holds += c.value < c_none.value;
         wasted << "  - " << scenario << ", " << r->analysis.specs.front().targets[o.target].name
-               << ", " << mode << ": " << num(c) << " vs " << num(c_none) << " with no map\n";
+               << ", " << mode << ": " << numberWithInterval(c) << " vs "
+               << numberWithInterval(c_none) << " with no map\n";
       }
     }
   }
@@ -276,14 +324,16 @@ void writeCatchUpFinding(std::ostream& md, const std::vector<ExperimentResult>& 
     const ConfigStatistics* none = config(*os, "planner.occlusion_map", "none");
     const OcclusionStatistics* hidden = apr && III >= 0 ? episode(*apr, III) : nullptr;
     if (apr && dyn && none && hidden) {
-      const double ca = meanOver(apr->coverage[III], hidden->hidden);
-      const double cd = meanOver(dyn->coverage[III], hidden->hidden);
-      const double cn = meanOver(none->coverage[III], hidden->hidden);
+      const Estimate a = apr->coverageOver(III, hidden->hidden);
+      const Estimate d = dyn->coverageOver(III, hidden->hidden);
+      const Estimate n = none->coverageOver(III, hidden->hidden);
+      const double ca = a.value, cd = d.value, cn = n.value;
       const bool catches_up = cn > ca && (cd - ca) <= 0.25 * (cn - ca);
       md << "3. **The dynamic map catches up with the a-priori map on the second occlusion (III)** "
             "— "
          << (catches_up ? "holds" : "does not hold") << ": mean coverage of III while hidden "
-         << num(cd) << " (dynamic) vs " << num(ca) << " (a-priori) and " << num(cn)
+         << numberWithInterval(d) << " (dynamic) vs " << numberWithInterval(a) << " (a-priori) and "
+         << numberWithInterval(n)
          << " (no map); the criterion is that the dynamic map closes at least 75 % of the gap "
             "between no map and "
             "the a-priori map.\n\n";
@@ -381,6 +431,7 @@ void writeWhyNot(std::ostream& md, const std::vector<ExperimentResult>& results,
 std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx) {
   std::ostringstream md;
   writeHeader(md, ctx);
+  writeTrialWarnings(md, results);
   writeConfiguration(md, results);
   writeOwnership(md, results);
   writeOcclusion(md, results);

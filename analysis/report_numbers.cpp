@@ -7,6 +7,10 @@ namespace canopy::analysis {
 
 std::string percentWithInterval(const Estimate& e) {
   char text[64];
+  if (!e.ci.bounded()) {  // a mean of per-trial fractions over a single trial
+    std::snprintf(text, sizeof text, "%.1f %% [no interval: 1 trial]", 100.0 * e.value);
+    return text;
+  }
   std::snprintf(text, sizeof text, "%.1f %% [%.1f, %.1f]", 100.0 * e.value, 100.0 * e.ci.low,
                 100.0 * e.ci.high);
   return text;

@@ -9,7 +9,8 @@ namespace canopy::analysis {
 /// The paper ran 40 trials per configuration; fewer are flagged in the report.
 constexpr int kPaperTrials = 40;
 
-/// "72.5 % [57.2, 83.9]": a proportion in percent with its interval in percent.
+/// "72.5 % [57.2, 83.9]": a proportion in percent with its interval in percent ("… [no interval:
+/// 1 trial]" when unbounded).
 std::string percentWithInterval(const Estimate& e);
 
 /// "0.99 [0.95, 1.03]" with `format` for each number; "0.99 [no interval: 1 trial]" when the

@@ -9,6 +9,7 @@ TEST(ReportNumbers, ProportionInPercentWithItsWilsonInterval) {
   // 29/40: Wilson [0.571650, 0.838920] (python3, closed form).
   EXPECT_EQ(percentWithInterval(proportion(29, 40)), "72.5 % [57.2, 83.9]");
   EXPECT_EQ(percentWithInterval(proportion(0, 40)), "0.0 % [0.0, 8.8]");
+  EXPECT_EQ(percentWithInterval(meanOf({0.25})), "25.0 % [no interval: 1 trial]");
 }
 
 TEST(ReportNumbers, MeanWithItsIntervalOrNoneForOneTrial) {
