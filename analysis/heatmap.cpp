@@ -208,7 +208,7 @@ std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
     std::ofstream csv(stem.string() + ".csv", std::ios::trunc);
     csv << heatmapCsv(map);
     if (!csv) throw std::runtime_error("cannot write " + stem.string() + ".csv");
-    writeFigure(heatmapFigure(map, analysis.name + ": " + metric->label), stem);
+    writeFigure(heatmapFigure(map, analysis.name + ": where the behaviour emerges"), stem);
   }
   return maps;
 }

@@ -52,7 +52,8 @@ std::vector<Heatmap> sensitivityMaps(const SweepAnalysis& analysis, const Heatma
 std::string heatmapCsv(const Heatmap& map);
 
 /// Cells coloured by value on the [0, metric.max] scale with the value and its interval written
-/// in each, y increasing upwards, and a colour scale. The cells are the figure's first
+/// in each, y increasing upwards, and a colour scale; under the title the metric and the other
+/// axes' values. The cells are the figure's first
 /// FilledPolygons, row by row from the smallest y, x increasing.
 Figure heatmapFigure(const Heatmap& map, const std::string& title);
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "analysis/heatmap.h"
+#include "render/scene.h"
 
 namespace canopy::analysis {
 namespace {
@@ -50,8 +51,14 @@ Figure heatmapFigure(const Heatmap& map, const std::string& title) {
   const double left = 120, top = 90, cell_w = 110, cell_h = 64, scale_w = 18;
   const double grid_h = ny * cell_h;
   const double scale_h = std::max(grid_h, 160.0);
+  std::string subtitle = map.metric.label;
+  for (const std::string& o : map.others) subtitle += ", " + displayOverride(o);
+  // Wide enough for the grid and the scale, and for the title lines as the PNG font draws them
+  // (a label of size s is drawn at scale s/7).
+  const double text_w =
+      std::max(render::textWidthPx(title, 14 / 7.0), render::textWidthPx(subtitle, 10 / 7.0)) + 40;
   Figure f;
-  f.width = static_cast<int>(left + nx * cell_w + 150);
+  f.width = static_cast<int>(std::max(left + nx * cell_w + 150, text_w));
   f.height = static_cast<int>(top + scale_h + 80);
   const double max = map.metric.max > 0 ? map.metric.max : 1.0;
 
@@ -87,11 +94,7 @@ Figure heatmapFigure(const Heatmap& map, const std::string& title) {
 
   // Axes: values under the columns and left of the rows, the paths as titles.
   f.shapes.push_back(Label{Vec2(f.width / 2.0, 30), title, 14, Anchor::middle, kInk});
-  std::string subtitle;
-  for (const std::string& o : map.others)
-    subtitle += (subtitle.empty() ? "" : ", ") + displayOverride(o);
-  if (!subtitle.empty())
-    f.shapes.push_back(Label{Vec2(f.width / 2.0, 52), subtitle, 10, Anchor::middle, kInk});
+  f.shapes.push_back(Label{Vec2(f.width / 2.0, 52), subtitle, 10, Anchor::middle, kInk});
   for (int x = 0; x < nx; ++x) {
     f.shapes.push_back(Label{Vec2(left + x * cell_w + (cell_w - 2) / 2, top + grid_h + 18),
                              displayValue(map.x_values[x]), 10, Anchor::middle, kInk});
