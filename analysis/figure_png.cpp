@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
 
 #include "render/canvas.h"
 #include "render/image.h"
@@ -55,6 +57,13 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
   }
   render::Canvas canvas({figure.width, figure.height});
   render::writePng(path, canvas.draw(scene));
+}
+
+void writeFigure(const Figure& figure, const std::filesystem::path& stem) {
+  std::ofstream out(stem.string() + ".svg", std::ios::trunc);
+  out << toSvg(figure);
+  if (!out) throw std::runtime_error("cannot write " + stem.string() + ".svg");
+  writeFigurePng(figure, stem.string() + ".png");
 }
 
 }  // namespace canopy::analysis

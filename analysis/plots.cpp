@@ -39,6 +39,21 @@ void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, d
   }
 }
 
+// The 95 % interval of a curve as one convex quad per step, clipped to [0, y_max]; steps whose
+// interval is unbounded (a single trial) get none.
+template <typename ToPixel>
+void addIntervalBand(Figure& f, const std::vector<ConfidenceInterval>& ci, double dt, double y_max,
+                     const ToPixel& px, Colour fill) {
+  auto clip = [&](double v) { return std::clamp(v, 0.0, y_max); };
+  for (int k = 0; k + 1 < static_cast<int>(ci.size()); ++k) {
+    if (!ci[k].bounded() || !ci[k + 1].bounded()) continue;
+    const double t0 = k * dt, t1 = (k + 1) * dt;
+    f.shapes.push_back(FilledPolygon{{px(t0, clip(ci[k].low)), px(t1, clip(ci[k + 1].low)),
+                                      px(t1, clip(ci[k + 1].high)), px(t0, clip(ci[k].high))},
+                                     fill});
+  }
+}
+
 }  // namespace
 
 Colour stateColour(const ConfigStatistics& stats, int index) {
@@ -165,6 +180,8 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
                                    kShade});
   f.shapes.push_back(
       Label{Vec2(f.width - 212.0, 60), "target under a crown", 10, Anchor::start, kInk});
+  f.shapes.push_back(
+      Label{Vec2(f.width - 250.0, 80), "bands: 95 % interval", 10, Anchor::start, kInk});
   if (configs.empty() || configs.front()->coverage.empty()) return f;
   const int steps = static_cast<int>(configs.front()->coverage.front().size());
   const double dt = configs.front()->dt;
@@ -202,6 +219,11 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
     f.shapes.push_back(Label{Vec2(left, y0 - 8),
                              "trajectory " + target_names[t] + ": mean number of footprints", 10,
                              Anchor::start, kInk});
+    for (std::size_t c = 0; c < configs.size(); ++c) {  // bands first, so every line stays on top
+      Colour band = seriesColour(static_cast<int>(c));
+      band.alpha = 0.18;
+      addIntervalBand(f, configs[c]->coverage_ci[t], dt, y_max, px, band);
+    }
     for (std::size_t c = 0; c < configs.size(); ++c) {
       Line curve{{}, 2.5, seriesColour(static_cast<int>(c))};
       for (int k = 0; k < steps; ++k)

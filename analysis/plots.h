@@ -15,8 +15,8 @@ namespace canopy::analysis {
 Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title);
 
 /// One panel per target: the mean number of footprints holding it over time, one line per
-/// configuration (labels[c] names configs[c]), occluded intervals (of the first configuration)
-/// shaded grey.
+/// configuration (labels[c] names configs[c]) in a band of its 95 % interval, occluded intervals
+/// (of the first configuration) shaded grey.
 Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
                       const std::vector<std::string>& labels,
                       const std::vector<std::string>& target_names, const std::string& title);

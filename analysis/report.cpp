@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/report_numbers.h"
+
 namespace canopy::analysis {
 namespace {
 
@@ -49,12 +51,20 @@ const ConfigStatistics* config(const ExperimentResult& r, const std::string& pat
   return nullptr;
 }
 
-// Mean over the Sankey columns L/4 … L of the fraction of trials in M*: how early and how often
-// the team is in the cooperative state.
-double cooperation(const ConfigStatistics& s) {
-  double sum = 0.0;
-  for (int c = 1; c < 5; ++c) sum += s.stateFraction("M*", c);
-  return sum / 4.0;
+// Per trial, the fraction of the Sankey columns L/4 … L at which it is in M*; their mean over
+// trials (the mean over those columns of the fraction of trials in M*) says how early and how
+// often the team is in the cooperative state.
+Estimate cooperation(const ConfigStatistics& s) {
+  const auto m_star = std::find(s.states.begin(), s.states.end(), "M*") - s.states.begin();
+  std::vector<double> per_trial;
+  for (const std::array<int, 5>& columns : s.trial_states) {
+    int in = 0;
+    for (int c = 1; c < 5; ++c) in += columns[c] == m_star;
+    per_trial.push_back(in / 4.0);
+  }
+  Estimate e = meanOf(per_trial);
+  e.ci = clipped(e.ci, 0.0, 1.0);
+  return e;
 }
 
 const OcclusionStatistics* episode(const ConfigStatistics& s, int target) {
@@ -80,8 +90,13 @@ double meanOver(const std::vector<double>& curve, const Interval& hidden) {
   return sum / (hidden.last - hidden.first + 1);
 }
 
-std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx) {
-  std::ostringstream md;
+namespace {
+
+struct ReactionTimes {
+  std::string apriori, dynamic;  // "never", "1.6 s", or empty when Joint Effect was not run
+};
+
+void writeHeader(std::ostream& md, const ReportContext& ctx) {
   md << "# canopy — reproduction of *Emergent Cooperative Behavior in Distributed Target Tracking "
         "with "
         "Unknown Occlusions*\n\n";
@@ -89,7 +104,30 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
      << " trials per configuration, sweep seed " << ctx.seed << ", " << ctx.jobs << " jobs; "
      << ctx.trials_run << " trials run now (the others resumed from disk); "
      << num(ctx.wall_seconds, "%.1f") << " s wall time.\n\n";
+}
 
+// One warning line naming every experiment run with fewer trials than the paper's 40 per
+// configuration.
+void writeTrialWarnings(std::ostream& md, const std::vector<ExperimentResult>& results) {
+  std::string few;
+  for (const ExperimentResult& r : results) {
+    if (r.analysis.configs.empty()) continue;
+    int fewest = r.analysis.configs.front().trials, most = fewest;
+    for (const ConfigStatistics& s : r.analysis.configs) {
+      fewest = std::min(fewest, s.trials);
+      most = std::max(most, s.trials);
+    }
+    if (fewest >= kPaperTrials) continue;
+    few += (few.empty() ? "" : ", ") + r.experiment.scenario + " " +
+           (fewest == most ? std::to_string(fewest)
+                           : std::to_string(fewest) + "–" + std::to_string(most));
+  }
+  if (few.empty()) return;
+  md << "> **Warning: fewer trials than the paper's " << kPaperTrials << "** per configuration ("
+     << few << "); the intervals below are correspondingly wide.\n\n";
+}
+
+void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // The configuration, read from the first experiment's scenario (shared defaults).
   if (!results.empty() && !results.front().analysis.specs.empty()) {
     const scenarios::ScenarioSpec& spec = results.front().analysis.specs.front();
@@ -119,23 +157,35 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "derived from "
           "the sweep seed; each trial's streams are named per purpose and agent.\n\n";
   }
+}
 
+void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Ownership: TH and RA.
   md << "## Ownership: Trajectory Handover and Resource Allocation\n\n";
   md << "Fraction of trials in the cooperative state M* (m-Ownership with m = 5 for TH, m = 3 for "
         "RA).\n\n";
-  md << "| scenario | algorithm | H | M* at L/2 (ours) | paper | M* at L (ours) | paper | note |\n";
-  md << "|---|---|---:|---:|---:|---:|---:|---|\n";
+  md << "In brackets the 95 % Wilson interval. \"In M* at L/2\" is the Sankey's snapshot at "
+        "k = L/2, the paper's measure; \"reached M* by L/2\" counts the trials that were in M* at "
+        "some step k ≤ L/2. \"Paper inside?\" says whether the paper's number lies inside our "
+        "interval, and Δ = paper − ours.\n\n";
+  md << "| scenario | algorithm | H | trials | in M* at L/2 (ours) | reached M* by L/2 (ours) | "
+        "paper | paper inside? | M* at L (ours) | paper | paper inside? | note |\n";
+  md << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
   for (const PaperOwnership& paper : paperOwnership()) {
     const ExperimentResult* r = find(results, paper.scenario);
     if (!r) continue;
     const ConfigStatistics* s = config(*r, "planner.algorithm", paper.algorithm, "planner.horizon",
                                        std::to_string(paper.horizon));
     if (!s) continue;
+    const Estimate half = s->stateEstimate("M*", 2), end = s->stateEstimate("M*", 4);
+    const Estimate reached = proportion(s->reachedBy("M*", s->columns[2]), s->trials);
     md << "| " << paper.scenario << " | " << (paper.algorithm == "sma" ? "SMA-NBO" : "Dec-POMDP")
-       << " | " << paper.horizon << " | " << pct(s->stateFraction("M*", 2)) << " | "
-       << (paper.at_half ? pct(*paper.at_half) : "—") << " | " << pct(s->stateFraction("M*", 4))
-       << " | " << (paper.at_end ? pct(*paper.at_end) : "—") << " | " << paper.note << " |\n";
+       << " | " << paper.horizon << " | " << s->trials << " | " << percentWithInterval(half)
+       << " | " << percentWithInterval(reached) << " | "
+       << (paper.at_half ? pct(*paper.at_half) : "—") << " | "
+       << (paper.at_half ? paperVerdict(*paper.at_half, half) : "—") << " | "
+       << percentWithInterval(end) << " | " << (paper.at_end ? pct(*paper.at_end) : "—") << " | "
+       << (paper.at_end ? paperVerdict(*paper.at_end, end) : "—") << " | " << paper.note << " |\n";
   }
   md << "\n";
   for (const ExperimentResult& r : results) {
@@ -145,15 +195,19 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
       md << "![" << s.id << "](" << r.figures << "/sankey_" << s.id << ".png)\n\n";
     }
   }
+}
 
+void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Occlusion: JE and OS.
   md << "## Occlusion awareness: Joint Effect and Occlusion Sharing\n\n";
   md << "Mean number of footprints on the occluded trajectory while it is hidden (wasted "
         "coverage), and "
         "the frequency of Occlusion_Aware (margin h = 1 s), with SMA-NBO, H = 5.\n\n";
-  md << "| scenario | trajectory | hidden | map | mean coverage while hidden | P[OA] | P[OA \\| e] "
-        "(trials with e) |\n";
-  md << "|---|---|---|---|---:|---:|---:|\n";
+  md << "In brackets the 95 % interval: Student t over the trials' own means for the coverage, "
+        "Wilson for the frequencies.\n\n";
+  md << "| scenario | trajectory | hidden | map | trials | mean coverage while hidden | P[OA] | "
+        "P[OA \\| e] (trials with e) |\n";
+  md << "|---|---|---|---|---:|---:|---:|---:|\n";
   for (const ExperimentResult& r : results) {
     if (r.experiment.ownership) continue;
     for (const ConfigStatistics& s : r.analysis.configs) {
@@ -161,9 +215,11 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
         md << "| " << r.experiment.scenario << " | "
            << r.analysis.specs.front().targets[o.target].name << " | "
            << num(o.hidden.first * s.dt, "%.1f") << "–" << num(o.hidden.last * s.dt, "%.1f")
-           << " s | " << valueOf(s, "planner.occlusion_map") << " | "
-           << num(meanOver(s.coverage[o.target], o.hidden)) << " | " << pct(o.pAware()) << " | "
-           << (o.with_event ? pct(o.pAwareGivenEvent()) : "—") << " (" << o.with_event << ") |\n";
+           << " s | " << valueOf(s, "planner.occlusion_map") << " | " << o.trials << " | "
+           << numberWithInterval(s.coverageOver(o.target, o.hidden)) << " | "
+           << percentWithInterval(o.awareEstimate()) << " | "
+           << (o.with_event ? percentWithInterval(o.awareGivenEventEstimate()) : "—") << " ("
+           << o.with_event << ") |\n";
       }
     }
   }
@@ -173,12 +229,14 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     md << "### " << r.experiment.scenario << "\n\n![coverage](" << r.figures
        << "/coverage.png)\n\n";
   }
+}
 
+ReactionTimes writeReaction(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // Reaction times in JE: when the coverage of I first drops below 0.5.
   md << "### Reaction to the occlusion (Joint Effect, trajectory I)\n\n";
   md << "First time the mean coverage of I falls below 0.5 (half of the trials have left I).\n\n";
   md << "| map | ours | paper |\n|---|---:|---:|\n";
-  std::string apriori_time, dynamic_time;
+  ReactionTimes reaction;
   if (const ExperimentResult* je = find(results, "joint_effect")) {
     const int I = targetIndex(je->analysis, "I");
     for (const char* mode : {"a_priori", "dynamic", "none"}) {
@@ -191,14 +249,15 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
              : std::string(mode) == "dynamic" ? "≈ 2.2 s"
                                               : "keeps observing")
          << " |\n";
-      if (std::string(mode) == "a_priori") apriori_time = when;
-      if (std::string(mode) == "dynamic") dynamic_time = when;
+      if (std::string(mode) == "a_priori") reaction.apriori = when;
+      if (std::string(mode) == "dynamic") reaction.dynamic = when;
     }
   }
   md << "\n";
+  return reaction;
+}
 
-  // The qualitative findings.
-  md << "## The paper's qualitative findings, checked\n\n";
+void writeHorizonFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   int pairs = 0, holds = 0;
   std::ostringstream detail;
   for (const char* scenario : {"trajectory_handover", "resource_allocation"}) {
@@ -211,9 +270,11 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           config(*r, "planner.algorithm", algorithm, "planner.horizon", "5");
       if (!h1 || !h5) continue;
       ++pairs;
-      holds += cooperation(*h5) > cooperation(*h1);
+      const Estimate c5 = cooperation(*h5), c1 = cooperation(*h1);
+      holds += c5.value > c1.value;
       detail << "  - " << scenario << ", " << algorithm << ": mean M* frequency over L/4…L "
-             << pct(cooperation(*h5)) << " (H = 5) vs " << pct(cooperation(*h1)) << " (H = 1)\n";
+             << percentWithInterval(c5) << " (H = 5) vs " << percentWithInterval(c1)
+             << " (H = 1)\n";
     }
   }
   md << "1. **H = 5 is more cooperative than H = 1** — "
@@ -222,7 +283,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
              : "holds in " + std::to_string(holds) + " of " + std::to_string(pairs) + " cases")
      << ":\n"
      << detail.str() << "\n";
+}
 
+void writeWastedCoverageFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   int wasted_cases = 0, wasted_holds = 0;
   std::ostringstream wasted;
   for (const char* scenario : {"joint_effect", "occlusion_sharing"}) {
@@ -231,15 +294,16 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     const ConfigStatistics* none = config(*r, "planner.occlusion_map", "none");
     if (!none) continue;
     for (const OcclusionStatistics& o : none->occlusions) {
-      const double c_none = meanOver(none->coverage[o.target], o.hidden);
+      const Estimate c_none = none->coverageOver(o.target, o.hidden);
       for (const char* mode : {"a_priori", "dynamic"}) {
         const ConfigStatistics* s = config(*r, "planner.occlusion_map", mode);
         if (!s) continue;
-        const double c = meanOver(s->coverage[o.target], o.hidden);
+        const Estimate c = s->coverageOver(o.target, o.hidden);
         ++wasted_cases;
-        wasted_holds += c < c_none;
+        wasted_holds += c.value < c_none.value;
         wasted << "  - " << scenario << ", " << r->analysis.specs.front().targets[o.target].name
-               << ", " << mode << ": " << num(c) << " vs " << num(c_none) << " with no map\n";
+               << ", " << mode << ": " << numberWithInterval(c) << " vs "
+               << numberWithInterval(c_none) << " with no map\n";
       }
     }
   }
@@ -250,7 +314,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
                    " cases")
      << ":\n"
      << wasted.str() << "\n";
+}
 
+void writeCatchUpFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
   if (const ExperimentResult* os = find(results, "occlusion_sharing")) {
     const int III = targetIndex(os->analysis, "III");
     const ConfigStatistics* apr = config(*os, "planner.occlusion_map", "a_priori");
@@ -258,29 +324,36 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     const ConfigStatistics* none = config(*os, "planner.occlusion_map", "none");
     const OcclusionStatistics* hidden = apr && III >= 0 ? episode(*apr, III) : nullptr;
     if (apr && dyn && none && hidden) {
-      const double ca = meanOver(apr->coverage[III], hidden->hidden);
-      const double cd = meanOver(dyn->coverage[III], hidden->hidden);
-      const double cn = meanOver(none->coverage[III], hidden->hidden);
+      const Estimate a = apr->coverageOver(III, hidden->hidden);
+      const Estimate d = dyn->coverageOver(III, hidden->hidden);
+      const Estimate n = none->coverageOver(III, hidden->hidden);
+      const double ca = a.value, cd = d.value, cn = n.value;
       const bool catches_up = cn > ca && (cd - ca) <= 0.25 * (cn - ca);
       md << "3. **The dynamic map catches up with the a-priori map on the second occlusion (III)** "
             "— "
          << (catches_up ? "holds" : "does not hold") << ": mean coverage of III while hidden "
-         << num(cd) << " (dynamic) vs " << num(ca) << " (a-priori) and " << num(cn)
+         << numberWithInterval(d) << " (dynamic) vs " << numberWithInterval(a) << " (a-priori) and "
+         << numberWithInterval(n)
          << " (no map); the criterion is that the dynamic map closes at least 75 % of the gap "
             "between no map and "
             "the a-priori map.\n\n";
     }
   }
-  if (!apriori_time.empty()) {
-    const bool both_leave = apriori_time != "never" && dynamic_time != "never";
-    md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
-       << (!both_leave                                         ? "cannot be checked here"
-           : std::stod(dynamic_time) > std::stod(apriori_time) ? "holds"
-                                                               : "does not hold")
-       << ": the first time the coverage of I falls below 0.5 is " << apriori_time
-       << " (a-priori map) and " << dynamic_time << " (dynamic map).\n\n";
-  }
+}
 
+void writeReactionOrderFinding(std::ostream& md, const ReactionTimes& reaction) {
+  if (!reaction.apriori.empty()) {
+    const bool both_leave = reaction.apriori != "never" && reaction.dynamic != "never";
+    md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
+       << (!both_leave                                                 ? "cannot be checked here"
+           : std::stod(reaction.dynamic) > std::stod(reaction.apriori) ? "holds"
+                                                                       : "does not hold")
+       << ": the first time the coverage of I falls below 0.5 is " << reaction.apriori
+       << " (a-priori map) and " << reaction.dynamic << " (dynamic map).\n\n";
+  }
+}
+
+void writeDifferences(std::ostream& md) {
   // Each bullet is one line of the report; the source breaks them at sentence boundaries.
   md << "## Where our setting differs from the paper's\n\n";
   md << "- The paper's Figure 2 (the scenario drawings) is not in the text we have; the geometry "
@@ -304,7 +377,10 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
         "joint plans.\n";
   md << "- The reference simulator's bugs are not reproduced (algorithms.md §8), notably its "
         "Dec-POMDP plans that were never applied and its truth noise drawn from 0.5·R.\n\n";
+}
 
+void writeWhyNot(std::ostream& md, const std::vector<ExperimentResult>& results,
+                 const ReactionTimes& reaction) {
   // Reasons we found for the findings that fail; each is written only while its symptom shows.
   bool ra_never = false;
   if (const ExperimentResult* ra = find(results, "resource_allocation")) {
@@ -312,7 +388,7 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
     for (const ConfigStatistics& s : ra->analysis.configs)
       ra_never &= s.stateFraction("M*", 4) == 0.0;
   }
-  const bool je_stays = apriori_time == "never";
+  const bool je_stays = reaction.apriori == "never";
   if (ra_never || je_stays) {
     md << "## Why some findings do not reproduce (what we found, not a certainty)\n\n";
   }
@@ -348,6 +424,25 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
           "Hence the reaction times above read \"never\" where the paper reports about 1.6 s "
           "and 2.2 s.\n";
   }
+}
+
+}  // namespace
+
+std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx) {
+  std::ostringstream md;
+  writeHeader(md, ctx);
+  writeTrialWarnings(md, results);
+  writeConfiguration(md, results);
+  writeOwnership(md, results);
+  writeOcclusion(md, results);
+  const ReactionTimes reaction = writeReaction(md, results);
+  md << "## The paper's qualitative findings, checked\n\n";
+  writeHorizonFinding(md, results);
+  writeWastedCoverageFinding(md, results);
+  writeCatchUpFinding(md, results);
+  writeReactionOrderFinding(md, reaction);
+  writeDifferences(md);
+  writeWhyNot(md, results, reaction);
   return md.str();
 }
 

@@ -1,9 +1,11 @@
 #include "analysis/sweep_analysis.h"
 
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "analysis/figure_png.h"
+#include "analysis/heatmap.h"
 #include "analysis/plots.h"
 #include "scenarios/loader.h"
 #include "scenarios/sweep.h"
@@ -15,6 +17,8 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
   const scenarios::SweepResults results = scenarios::loadSweepResults(sweep_dir);
   SweepAnalysis analysis;
   analysis.name = results.sweep.name;
+  analysis.dir = sweep_dir;
+  analysis.axes = results.sweep.axes;
   for (std::size_t c = 0; c < results.configs.size(); ++c) {
     if (results.trials[c].empty()) continue;
     const scenarios::SweepConfig& config = results.configs[c];
@@ -39,33 +43,53 @@ std::string quoted(const std::string& text) {
   return "\"" + text + "\"";
 }
 
+// "value,low,high" in the stream's default format (±inf where the interval is unbounded).
+std::string estimate(const Estimate& e) {
+  std::ostringstream text;
+  text << e.value << ',' << e.ci.low << ',' << e.ci.high;
+  return text.str();
+}
+
 }  // namespace
 
 void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
   fs::create_directories(out_dir);
-  auto states =
-      openCsv(out_dir / "ownership_states.csv", "config,column,step,t_s,state,trials,fraction");
+  auto states = openCsv(out_dir / "ownership_states.csv",
+                        "config,column,step,t_s,state,trials,fraction,fraction_low,fraction_high,"
+                        "reached_trials,reached_fraction,reached_low,reached_high");
   auto flows = openCsv(out_dir / "ownership_flows.csv",
                        "config,from_column,to_column,from_state,to_state,trials");
   auto changes =
-      openCsv(out_dir / "ownership_changes.csv", "config,from_uav,to_uav,target,trials,fraction");
+      openCsv(out_dir / "ownership_changes.csv",
+              "config,from_uav,to_uav,target,trials,fraction,fraction_low,fraction_high");
   auto aware = openCsv(out_dir / "occlusion_aware.csv",
-                       "config,target,hidden_from_s,hidden_to_s,trials,p_aware,trials_with_event,p_"
-                       "aware_given_event");
-  auto coverage =
-      openCsv(out_dir / "coverage.csv", "config,target,step,t_s,mean_coverage,occluded");
-  auto tracking =
-      openCsv(out_dir / "tracking.csv", "config,step,t_s,mean_ospa_m,mean_trace_pos_m2");
+                       "config,target,hidden_from_s,hidden_to_s,trials,p_aware,p_aware_low,p_aware_"
+                       "high,trials_with_event,p_aware_given_event,p_aware_given_event_low,p_aware_"
+                       "given_event_high,mean_coverage_hidden,mean_coverage_hidden_low,mean_"
+                       "coverage_hidden_high");
+  auto coverage = openCsv(out_dir / "coverage.csv",
+                          "config,target,step,t_s,mean_coverage,mean_coverage_low,mean_coverage_"
+                          "high,occluded");
+  auto tracking = openCsv(out_dir / "tracking.csv",
+                          "config,step,t_s,mean_ospa_m,mean_ospa_low_m,mean_ospa_high_m,mean_trace_"
+                          "pos_m2,mean_trace_pos_low_m2,mean_trace_pos_high_m2");
 
   for (std::size_t c = 0; c < analysis.configs.size(); ++c) {
     const ConfigStatistics& s = analysis.configs[c];
     const scenarios::ScenarioSpec& spec = analysis.specs[c];
     const std::string id = quoted(s.id);
+    const std::size_t named = spec.analysis.states.size();
     for (int col = 0; col < 5; ++col) {
       for (std::size_t i = 0; i < s.states.size(); ++i) {
         states << id << ',' << col << ',' << s.columns[col] << ',' << s.columns[col] * s.dt << ','
                << quoted(s.states[i]) << ',' << s.state_counts[col][i] << ','
-               << static_cast<double>(s.state_counts[col][i]) / s.trials << '\n';
+               << estimate(s.stateEstimate(s.states[i], col)) << ',';
+        if (i < named) {  // "reached by": the trials in state i at some step k ≤ this column's
+          const int reached = s.reachedBy(s.states[i], s.columns[col]);
+          states << reached << ',' << estimate(proportion(reached, s.trials)) << '\n';
+        } else {
+          states << ",,,\n";  // only named states have a first step
+        }
       }
     }
     for (int g = 0; g < 4; ++g) {
@@ -81,25 +105,27 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
       changes << id << ',' << quoted(spec.uavs[change.change.from].name) << ','
               << quoted(spec.uavs[change.change.to].name) << ','
               << quoted(spec.targets[change.change.target].name) << ',' << change.trials << ','
-              << static_cast<double>(change.trials) / s.trials << '\n';
+              << estimate(proportion(change.trials, s.trials)) << '\n';
     }
     std::vector<std::vector<bool>> occluded(spec.targets.size(),
                                             std::vector<bool>(s.ospa.size(), false));
     for (const OcclusionStatistics& o : s.occlusions) {
       aware << id << ',' << quoted(spec.targets[o.target].name) << ',' << o.hidden.first * s.dt
-            << ',' << o.hidden.last * s.dt << ',' << o.trials << ',' << o.pAware() << ','
-            << o.with_event << ',' << o.pAwareGivenEvent() << '\n';
+            << ',' << o.hidden.last * s.dt << ',' << o.trials << ',' << estimate(o.awareEstimate())
+            << ',' << o.with_event << ',' << estimate(o.awareGivenEventEstimate()) << ','
+            << estimate(s.coverageOver(o.target, o.hidden)) << '\n';
       for (int k = o.hidden.first; k <= o.hidden.last; ++k) occluded[o.target][k] = true;
     }
     for (std::size_t t = 0; t < s.coverage.size(); ++t) {
       for (int k = 0; k < static_cast<int>(s.coverage[t].size()); ++k) {
         coverage << id << ',' << quoted(spec.targets[t].name) << ',' << k << ',' << k * s.dt << ','
-                 << s.coverage[t][k] << ',' << (occluded[t][k] ? 1 : 0) << '\n';
+                 << estimate({s.coverage[t][k], s.coverage_ci[t][k]}) << ','
+                 << (occluded[t][k] ? 1 : 0) << '\n';
       }
     }
     for (int k = 0; k < static_cast<int>(s.ospa.size()); ++k) {
-      tracking << id << ',' << k << ',' << k * s.dt << ',' << s.ospa[k] << ',' << s.trace[k]
-               << '\n';
+      tracking << id << ',' << k << ',' << k * s.dt << ',' << estimate({s.ospa[k], s.ospa_ci[k]})
+               << ',' << estimate({s.trace[k], s.trace_ci[k]}) << '\n';
     }
   }
 }
@@ -108,27 +134,25 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 
 namespace canopy::analysis {
 
-void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir) {
+void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
+                  const std::string& heatmap_state) {
   fs::create_directories(out_dir);
-  auto write = [&](const fs::path& stem, const Figure& figure) {
-    std::ofstream out(stem.string() + ".svg", std::ios::trunc);
-    out << toSvg(figure);
-    if (!out) throw std::runtime_error("cannot write " + stem.string() + ".svg");
-    writeFigurePng(figure, stem.string() + ".png");
-  };
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
   for (const ConfigStatistics& s : analysis.configs) {
-    write(out_dir / ("sankey_" + s.id), sankeyFigure(s, analysis.name + ": ownership, " + s.id));
+    writeFigure(sankeyFigure(s, analysis.name + ": ownership, " + s.id),
+                out_dir / ("sankey_" + s.id));
     configs.push_back(&s);
     labels.push_back(s.id);
   }
   if (!analysis.specs.empty()) {
     std::vector<std::string> targets;
     for (const auto& target : analysis.specs.front().targets) targets.push_back(target.name);
-    write(out_dir / "coverage",
-          coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"));
+    writeFigure(
+        coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"),
+        out_dir / "coverage");
   }
+  writeHeatmaps(analysis, out_dir, heatmap_state);
 }
 
 }  // namespace canopy::analysis

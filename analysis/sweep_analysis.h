@@ -7,11 +7,14 @@
 
 #include "analysis/sweep_statistics.h"
 #include "scenarios/spec.h"
+#include "scenarios/sweep.h"
 
 namespace canopy::analysis {
 
 struct SweepAnalysis {
   std::string name;                            // the sweep's name
+  std::filesystem::path dir;                   // the sweep directory it was read from
+  std::vector<scenarios::SweepAxis> axes;      // the sweep's axes
   std::vector<scenarios::ScenarioSpec> specs;  // per configuration
   std::vector<ConfigStatistics> configs;  // per configuration, in sweep order (those with trials)
 };
@@ -20,22 +23,31 @@ struct SweepAnalysis {
 /// Throws ScenarioError when the directory is not a sweep or a trial file is malformed.
 SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir);
 
-/// Writes the CSV tables behind every figure into out_dir:
-///   ownership_states.csv  config, column, step, t_s, state, trials, fraction
+/// Writes the CSV tables behind every figure into out_dir. Every proportion has its 95 % Wilson
+/// interval (_low, _high) and every mean over trials its 95 % Student-t interval (±inf with a
+/// single trial):
+///   ownership_states.csv  config, column, step, t_s, state, trials, fraction (low, high),
+///                         reached_trials, reached_fraction (low, high) — trials in the state at
+///                         some step ≤ the column's (named states only)
 ///   ownership_flows.csv   config, from_column, to_column, from_state, to_state, trials
-///   ownership_changes.csv config, from_uav, to_uav, target, trials, fraction
-///   occlusion_aware.csv   config, target, hidden_from_s, hidden_to_s, trials, p_aware,
-///                         trials_with_event, p_aware_given_event
-///   coverage.csv          config, target, step, t_s, mean_coverage, occluded
-///   tracking.csv          config, step, t_s, mean_ospa_m, mean_trace_pos_m2
+///   ownership_changes.csv config, from_uav, to_uav, target, trials, fraction (low, high)
+///   occlusion_aware.csv   config, target, hidden_from_s, hidden_to_s, trials, p_aware (low,
+///                         high), trials_with_event, p_aware_given_event (low, high),
+///                         mean_coverage_hidden (low, high): footprints on the target while hidden
+///   coverage.csv          config, target, step, t_s, mean_coverage (low, high), occluded
+///   tracking.csv          config, step, t_s, mean_ospa_m (low, high), mean_trace_pos_m2 (low,
+///                         high)
 void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
 
 }  // namespace canopy::analysis
 
 namespace canopy::analysis {
 
-/// Writes sankey_<config>.{svg,png} per configuration and coverage.{svg,png} (one line per
-/// configuration, one panel per trajectory) into out_dir.
-void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
+/// Writes sankey_<config>.{svg,png} per configuration, coverage.{svg,png} (one line per
+/// configuration with its 95 % band, one panel per trajectory) and, for a sweep with two numeric
+/// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; heatmap_state picks the state,
+/// empty: M* or the hidden coverage) into out_dir.
+void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir,
+                  const std::string& heatmap_state = "");
 
 }  // namespace canopy::analysis

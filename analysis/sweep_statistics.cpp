@@ -1,14 +1,51 @@
 #include "analysis/sweep_statistics.h"
 
 #include <algorithm>
+#include <limits>
 #include <tuple>
 
 namespace canopy::analysis {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
 
 double ConfigStatistics::stateFraction(const std::string& state, int c) const {
   const auto it = std::find(states.begin(), states.end(), state);
   if (it == states.end() || trials == 0) return 0.0;
   return static_cast<double>(state_counts[c][it - states.begin()]) / trials;
+}
+
+Estimate ConfigStatistics::stateEstimate(const std::string& state, int c) const {
+  const auto it = std::find(states.begin(), states.end(), state);
+  if (it == states.end()) return proportion(0, trials);
+  return proportion(state_counts[c][it - states.begin()], trials);
+}
+
+int ConfigStatistics::reachedBy(const std::string& state, int step) const {
+  const auto named = std::find(states.begin(), states.end(), state) - states.begin();
+  int reached = 0;
+  for (const std::vector<int>& first : first_step_in) {
+    reached += named < static_cast<long>(first.size()) && first[named] >= 0 && first[named] <= step;
+  }
+  return reached;
+}
+
+std::vector<double> ConfigStatistics::trialCoverageOver(int target, const Interval& steps) const {
+  std::vector<double> means;
+  for (const auto& coverage_t : trial_coverage) {
+    double sum = 0.0;
+    for (int k = steps.first; k <= steps.last; ++k) sum += coverage_t[target][k];
+    means.push_back(sum / (steps.last - steps.first + 1));
+  }
+  return means;
+}
+
+Estimate ConfigStatistics::coverageOver(int target, const Interval& steps) const {
+  Estimate e = meanOf(trialCoverageOver(target, steps));
+  e.ci = clipped(e.ci, 0.0, uavs);
+  return e;
 }
 
 int firstBelow(const std::vector<double>& curve, double threshold, int from) {
@@ -35,6 +72,7 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
 
   const int steps = trials.front().steps();
   const int targets = trials.front().targets;
+  stats.uavs = trials.front().uavs;
   stats.columns = sankeyColumns(steps - 1);
   stats.coverage.assign(targets, std::vector<double>(steps, 0.0));
   stats.ospa.assign(steps, 0.0);
@@ -43,11 +81,17 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
     return static_cast<std::size_t>(std::find(stats.states.begin(), stats.states.end(), s) -
                                     stats.states.begin());
   };
-  const double n = static_cast<double>(trials.size());
+  std::vector<std::vector<SampleMoments>> coverage(targets, std::vector<SampleMoments>(steps));
+  std::vector<SampleMoments> ospa(steps), trace(steps);
 
   for (const scenarios::TrialResult& trial : trials) {
     const TrialBehaviour b = analyseTrial(trial, spec);
-    for (int c = 0; c < 5; ++c) ++stats.state_counts[c][stateIndex(b.states[c])];
+    std::array<int, 5>& columns = stats.trial_states.emplace_back();
+    for (int c = 0; c < 5; ++c) {
+      columns[c] = static_cast<int>(stateIndex(b.states[c]));
+      ++stats.state_counts[c][columns[c]];
+    }
+    stats.first_step_in.push_back(b.first_step_in);
     for (int g = 0; g < 4; ++g)
       ++stats.flows[g][stateIndex(b.states[g])][stateIndex(b.states[g + 1])];
     for (const OwnershipChange& change : b.changes) {
@@ -72,12 +116,26 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
       it->aware_with_event += e.aware && e.tree_seen_before;
     }
     for (int t = 0; t < targets; ++t) {
-      for (int k = 0; k < steps; ++k) stats.coverage[t][k] += b.coverage[t][k] / n;
+      for (int k = 0; k < steps; ++k) coverage[t][k].add(b.coverage[t][k]);
     }
     for (int k = 0; k < steps; ++k) {
-      stats.ospa[k] += trial.ospa[k] / n;
-      stats.trace[k] += trial.trace[k] / n;
+      ospa[k].add(trial.ospa[k]);
+      trace[k].add(trial.trace[k]);
     }
+    stats.trial_coverage.push_back(b.coverage);
+  }
+  stats.coverage_ci.assign(targets, std::vector<ConfidenceInterval>(steps));
+  stats.ospa_ci.resize(steps);
+  stats.trace_ci.resize(steps);
+  for (int k = 0; k < steps; ++k) {
+    for (int t = 0; t < targets; ++t) {
+      stats.coverage[t][k] = coverage[t][k].mean();
+      stats.coverage_ci[t][k] = clipped(meanInterval(coverage[t][k]), 0.0, stats.uavs);
+    }
+    stats.ospa[k] = ospa[k].mean();
+    stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, kInf);
+    stats.trace[k] = trace[k].mean();
+    stats.trace_ci[k] = clipped(meanInterval(trace[k]), 0.0, kInf);
   }
   std::sort(stats.changes.begin(), stats.changes.end(),
             [](const ChangeCount& a, const ChangeCount& b) {

@@ -1,11 +1,13 @@
 #pragma once
 // Per-configuration statistics over a sweep's trials: ownership-state frequencies and flows at
 // the Sankey columns, Ownership_Change counts, Occlusion_Aware frequencies (plain and given the
-// occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time.
+// occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time — each mean with
+// its 95 % interval, and the per-trial facts behind the report's intervals.
 #include <array>
 #include <string>
 #include <vector>
 
+#include "analysis/intervals.h"
 #include "analysis/trial_behaviour.h"
 #include "scenarios/spec.h"
 #include "scenarios/trial.h"
@@ -23,6 +25,8 @@ struct OcclusionStatistics {
   double pAwareGivenEvent() const {
     return with_event ? static_cast<double>(aware_with_event) / with_event : 0.0;
   }
+  Estimate awareEstimate() const { return proportion(aware, trials); }
+  Estimate awareGivenEventEstimate() const { return proportion(aware_with_event, with_event); }
 };
 
 struct ChangeCount {
@@ -34,6 +38,7 @@ struct ConfigStatistics {
   std::string id;                      // the sweep configuration
   std::vector<std::string> overrides;  // its --set values
   int trials = 0;
+  int uavs = 0;
   double dt = 0.2;                               // s
   std::array<int, 5> columns{};                  // steps of the Sankey columns
   std::vector<std::string> states;               // named states, then "Miss 1", "Miss >1", "Other"
@@ -44,9 +49,26 @@ struct ConfigStatistics {
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
   std::vector<double> ospa;                   // [k]: mean OSPA (m)
   std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
+  // 95 % t intervals, clipped to what the quantity can take: [0, uavs] footprints, OSPA and
+  // tr(P) ≥ 0.
+  std::vector<std::vector<ConfidenceInterval>> coverage_ci;  // [t][k]
+  std::vector<ConfidenceInterval> ospa_ci, trace_ci;         // [k] (m, m²)
+
+  // Per trial, in trial order.
+  std::vector<std::array<int, 5>> trial_states;  // [trial][column]: index into states
+  std::vector<std::vector<int>> first_step_in;   // [trial][named state]: first step in it, −1
+  std::vector<std::vector<std::vector<int>>> trial_coverage;  // [trial][t][k]: footprints on t
 
   /// Fraction of trials in `state` at Sankey column c (0 if the state is unknown).
   double stateFraction(const std::string& state, int c) const;
+  /// … with its Wilson interval.
+  Estimate stateEstimate(const std::string& state, int c) const;
+  /// Trials that were in the named `state` at some step k ≤ step (0 if it is not a named state).
+  int reachedBy(const std::string& state, int step) const;
+  /// Per trial, the mean number of footprints on target t over the inclusive steps of `steps`.
+  std::vector<double> trialCoverageOver(int target, const Interval& steps) const;
+  /// Their mean over trials with its 95 % interval (clipped to [0, uavs]).
+  Estimate coverageOver(int target, const Interval& steps) const;
 };
 
 /// trials: all of one configuration (at least one); spec: that configuration's scenario.

@@ -33,6 +33,15 @@ TrialBehaviour analyseTrial(const scenarios::TrialResult& trial,
   for (int c = 0; c < 5; ++c)
     out.states[c] = ownershipState(M[columns[c]], spec.analysis.states, trial.targets);
   out.changes = ownershipChanges(M, 0, K, trial.targets);
+  // The classifier of the Sankey columns, at every step: "reached M* by L/2" is first ≤ L/2.
+  out.first_step_in.assign(spec.analysis.states.size(), -1);
+  for (int k = 0; k <= K; ++k) {
+    const std::string state = ownershipState(M[k], spec.analysis.states, trial.targets);
+    for (std::size_t s = 0; s < spec.analysis.states.size(); ++s) {
+      if (out.first_step_in[s] < 0 && spec.analysis.states[s].name == state)
+        out.first_step_in[s] = k;
+    }
+  }
 
   const int margin = static_cast<int>(std::lround(spec.analysis.oa_margin / trial.dt));
   for (int t = 0; t < trial.targets; ++t) {

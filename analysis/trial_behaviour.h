@@ -1,7 +1,7 @@
 #pragma once
 // What one trial did, in the paper's terms: its ownership state at the Sankey columns, its
-// Ownership_Change events, its Occlusion_Aware verdict for every occluded interval, and the
-// coverage of every trajectory.
+// Ownership_Change events, its Occlusion_Aware verdict for every occluded interval, the first step
+// it was in each named state, and the coverage of every trajectory.
 #include <array>
 #include <string>
 #include <vector>
@@ -28,6 +28,7 @@ struct OcclusionEpisode {
 
 struct TrialBehaviour {
   std::array<std::string, 5> states;     // ownership state at each Sankey column
+  std::vector<int> first_step_in;        // [named state]: first k whose state it is, −1 never
   std::vector<OwnershipChange> changes;  // from k = 0 to k = L
   std::vector<OcclusionEpisode> occlusions;
   std::vector<std::vector<int>> coverage;  // [t][k]: footprints holding target t

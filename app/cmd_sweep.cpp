@@ -5,6 +5,8 @@
 #include <string>
 #include <thread>
 
+#include "analysis/heatmap.h"
+#include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
 #include "scenarios/sweep.h"
@@ -84,11 +86,13 @@ int sweepCommand(Args& args) {
 }
 
 int analyzeCommand(Args& args) {
-  std::string dir, out;
+  std::string dir, out, state;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
       out = args.value(arg);
+    } else if (arg == "--state") {
+      state = args.value(arg);
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy analyze`");
     } else if (dir.empty()) {
@@ -100,14 +104,16 @@ int analyzeCommand(Args& args) {
   if (dir.empty()) usageError("analyze", "expected a sweep directory");
   if (out.empty()) out = dir + "/analysis";
   const analysis::SweepAnalysis result = analysis::analyseSweep(dir);
+  analysis::heatmapMetric(result, state);  // a bad --state fails before anything is written
   analysis::writeTables(result, out);
-  analysis::writeFigures(result, out);
+  analysis::writeFigures(result, out, state);
   for (const analysis::ConfigStatistics& config : result.configs) {
     std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {
       if (config.state_counts[4][i] > 0) {
-        std::printf("  %s %.0f%%", config.states[i].c_str(),
-                    100.0 * config.state_counts[4][i] / config.trials);
+        const analysis::Estimate e = analysis::proportion(config.state_counts[4][i], config.trials);
+        std::printf("  %s %.0f%% [%.0f, %.0f]", config.states[i].c_str(), 100.0 * e.value,
+                    100.0 * e.ci.low, 100.0 * e.ci.high);
       }
     }
     std::printf("\n");

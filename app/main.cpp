@@ -17,7 +17,7 @@ usage:
   canopy validate SCENARIO [--set key=value]...
   canopy list
   canopy sweep SWEEP.json --out DIR [--jobs N]
-  canopy analyze DIR [--out DIR]
+  canopy analyze DIR [--out DIR] [--state NAME]
   canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
   canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R[,R_MAX] --seed S [--min-gap G]
 
@@ -29,6 +29,8 @@ runs the built-in "demo". --set overrides any field by its dotted path, e.g.
 (default 800 px along the longer side); --video also assembles DIR/frames.mp4 when ffmpeg is
 on PATH. `canopy coverage` prints, per step of a finished run, the rendered coverage of the AOI
 as CSV: step, t, covered_px, multi_px, aoi_px, covered_fraction, then 0/1 per target.
+`canopy analyze` of a sweep with two numeric axes also draws sensitivity maps: the fraction of
+trials in state NAME at L (default M*, or the hidden coverage for occlusion scenarios).
 )";
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -111,6 +112,25 @@ TEST(AnalyzeCommand, ADirectoryThatIsNotASweepExitsWith2) {
   fs::create_directories(dir);
   EXPECT_EQ(run("analyze " + dir.string()), 2);
   EXPECT_EQ(run("sweep /nonexistent.json --out " + dir.string()), 2);
+}
+
+TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
+  const fs::path file = fs::temp_directory_path() / "canopy_cli_map.json";
+  std::ofstream(file)
+      << R"({"name": "map", "scenario": "trajectory_handover", "trials": 2, "seed": 3,
+    "axes": [{"path": "planner.horizon", "values": [1, 2]},
+             {"path": "uavs.0.v_max", "values": [6, 4]}]})";
+  const fs::path dir = fresh("map");
+  ASSERT_EQ(run("sweep " + file.string() + " --out " + dir.string() + " --jobs 2"), 0);
+  ASSERT_EQ(run("analyze " + dir.string()), 0);
+  const fs::path map = dir / "analysis" / "heatmap_horizon_vs_v_max";
+  for (const char* extension : {".csv", ".svg", ".png"})
+    EXPECT_TRUE(fs::exists(map.string() + extension)) << extension;
+  const std::string csv = slurp(map.string() + ".csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // the header and 2 × 2 cells
+  ASSERT_EQ(run("analyze " + dir.string() + " --out " + (dir / "again").string()), 0);
+  EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.svg"), slurp(map.string() + ".svg"));
+  EXPECT_EQ(run("analyze " + dir.string() + " --state nonsense"), 2);
 }
 
 TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
