@@ -1,5 +1,8 @@
 #include "analysis/experiments.h"
 
+#include <filesystem>
+#include <utility>
+
 namespace canopy::analysis {
 
 std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
@@ -31,6 +34,18 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
     experiments.push_back({name, scenarios::loadSweepText(text, name + ".json"), row.ownership});
   }
   return experiments;
+}
+
+std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
+  const std::filesystem::path dir = scenarios::libraryDir().parent_path() / "sweeps";
+  std::vector<Experiment> studies;
+  for (const auto& [name, ownership] :
+       {std::pair{"ra_distance_horizon", true}, std::pair{"je_occlusion_spacing", false}}) {
+    const scenarios::SweepSpec sweep =
+        scenarios::loadSweep((dir / (std::string(name) + ".json")).string());
+    studies.push_back({name, scenarios::withTrialsAndSeed(sweep, trials, seed), ownership});
+  }
+  return studies;
 }
 
 const std::vector<PaperOwnership>& paperOwnership() {

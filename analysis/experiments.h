@@ -20,6 +20,10 @@ struct Experiment {
 /// ∈ {a-priori, dynamic, none}; `trials` per configuration (the paper: 40, 560 trials in all).
 std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed);
 
+/// The sensitivity studies of scenarios/sweeps/ (ra_distance_horizon, je_occlusion_spacing), with
+/// `trials` per configuration and the given seed; `ownership` as above.
+std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed);
+
 /// What the paper reports for the frequency of the cooperative state M*_L (Sankey figures).
 struct PaperOwnership {
   std::string scenario, algorithm;  // "sma" / "dec_pomdp"

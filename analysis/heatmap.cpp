@@ -26,12 +26,8 @@ bool numeric(const scenarios::SweepAxis& axis) {
                                              [](const std::string& v) { return number(v); });
 }
 
-// The value a configuration gives `path`: its last override of it (axes come after fixed values).
 std::string valueOf(const ConfigStatistics& s, const std::string& path) {
-  for (auto it = s.overrides.rbegin(); it != s.overrides.rend(); ++it) {
-    if (it->rfind(path + "=", 0) == 0) return it->substr(path.size() + 1);
-  }
-  return "";
+  return s.axisValue(path);
 }
 
 std::string fileSafe(std::string text) {

@@ -27,7 +27,10 @@ struct ReportContext {
 /// Mean of `curve` over the inclusive steps of `hidden`.
 double meanOver(const std::vector<double>& curve, const Interval& hidden);
 
+/// results: the paper's experiment table (paperExperiments); studies: the sensitivity studies
+/// (sensitivityStudies), drawn as maps under "Where the behaviour emerges".
 std::string reportMarkdown(const std::vector<ExperimentResult>& results,
-                           const ReportContext& context);
+                           const ReportContext& context,
+                           const std::vector<ExperimentResult>& studies = {});
 
 }  // namespace canopy::analysis

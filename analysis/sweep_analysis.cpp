@@ -26,6 +26,7 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
         scenarios::loadScenario(results.sweep.scenario, {config.overrides, std::nullopt}));
     analysis.configs.push_back(
         summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
+    analysis.configs.back().point = config.point;
   }
   return analysis;
 }

@@ -48,6 +48,16 @@ Estimate ConfigStatistics::coverageOver(int target, const Interval& steps) const
   return e;
 }
 
+std::string ConfigStatistics::axisValue(const std::string& path) const {
+  for (const std::string& p : point) {
+    if (p.rfind(path + "=", 0) == 0) return p.substr(path.size() + 1);
+  }
+  for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
+    if (it->rfind(path + "=", 0) == 0) return it->substr(path.size() + 1);
+  }
+  return "";
+}
+
 int firstBelow(const std::vector<double>& curve, double threshold, int from) {
   for (int k = std::max(0, from); k < static_cast<int>(curve.size()); ++k) {
     if (curve[k] < threshold) return k;

@@ -37,6 +37,7 @@ struct ChangeCount {
 struct ConfigStatistics {
   std::string id;                      // the sweep configuration
   std::vector<std::string> overrides;  // its --set values
+  std::vector<std::string> point;      // per sweep axis "path-or-name=value" (SweepConfig::point)
   int trials = 0;
   int uavs = 0;
   double dt = 0.2;                               // s
@@ -58,6 +59,10 @@ struct ConfigStatistics {
   std::vector<std::array<int, 5>> trial_states;  // [trial][column]: index into states
   std::vector<std::vector<int>> first_step_in;   // [trial][named state]: first step in it, −1
   std::vector<std::vector<std::vector<int>>> trial_coverage;  // [trial][t][k]: footprints on t
+
+  /// The JSON text this configuration gives a sweep axis or --set path: its point on the axis
+  /// named `path`, else its last override of `path` (axes come after fixed values); "" if none.
+  std::string axisValue(const std::string& path) const;
 
   /// Fraction of trials in `state` at Sankey column c (0 if the state is unknown).
   double stateFraction(const std::string& state, int c) const;

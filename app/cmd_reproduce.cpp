@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -32,14 +33,22 @@ int reproduceCommand(Args& args) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::ExperimentResult> results;
   int ran = 0;
-  for (analysis::Experiment& experiment : analysis::paperExperiments(trials, seed)) {
-    const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
-    ran += runSweepWithProgress(experiment.sweep, dir, jobs);
-    analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
-    analysis::writeTables(analysed, dir / "analysis");
-    analysis::writeFigures(analysed, dir / "analysis");
-    results.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
-  }
+  auto runAll = [&](const std::vector<analysis::Experiment>& experiments) {
+    std::vector<analysis::ExperimentResult> done;
+    for (const analysis::Experiment& experiment : experiments) {
+      const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
+      ran += runSweepWithProgress(experiment.sweep, dir, jobs);
+      analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
+      analysis::writeTables(analysed, dir / "analysis");
+      analysis::writeFigures(analysed, dir / "analysis");
+      done.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
+    }
+    return done;
+  };
+  results = runAll(analysis::paperExperiments(trials, seed));
+  // The sensitivity maps: half the trials per cell (at least 2), on the same seed.
+  const std::vector<analysis::ExperimentResult> studies =
+      runAll(analysis::sensitivityStudies(std::max(2, trials / 2), seed));
   analysis::ReportContext context;
   context.trials = trials;
   context.seed = seed;
@@ -48,7 +57,7 @@ int reproduceCommand(Args& args) {
   context.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path report = std::filesystem::path(out) / "report.md";
-  std::ofstream(report) << analysis::reportMarkdown(results, context);
+  std::ofstream(report) << analysis::reportMarkdown(results, context, studies);
   std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds,
               report.string().c_str());
   return kExitOk;

@@ -109,6 +109,14 @@ SweepSpec loadSweep(const std::string& path) {
   return loadSweepText(internal::readJsonFile(path).dump(), path);
 }
 
+SweepSpec withTrialsAndSeed(SweepSpec sweep, int trials, std::uint64_t seed) {
+  Json effective = Json::parse(sweep.effective_json);
+  effective["trials"] = sweep.trials = trials;
+  effective["seed"] = sweep.seed = seed;
+  sweep.effective_json = effective.dump(2);
+  return sweep;
+}
+
 std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
   std::vector<SweepConfig> configs{{"", sweep.fixed, {}}};
   for (const SweepAxis& axis : sweep.axes) {

@@ -45,6 +45,10 @@ struct SweepConfig {
 SweepSpec loadSweep(const std::string& path);
 SweepSpec loadSweepText(const std::string& text, const std::string& file);
 
+/// The same sweep with another number of trials per configuration and another seed (its
+/// effective text says so too, so that DIR/sweep.json matches what runs).
+SweepSpec withTrialsAndSeed(SweepSpec sweep, int trials, std::uint64_t seed);
+
 std::vector<SweepConfig> configurations(const SweepSpec& sweep);
 /// The seed of trial `index` (the same in every configuration: common random numbers).
 std::uint64_t trialSeed(std::uint64_t sweep_seed, int index);

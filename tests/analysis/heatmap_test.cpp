@@ -38,9 +38,9 @@ ConfigStatistics config(const std::vector<std::string>& overrides, int in_m_star
 SweepAnalysis threeAxisSweep() {
   SweepAnalysis a;
   a.name = "study";
-  a.axes = {{"planner.algorithm", {"\"sma\"", "\"dec_pomdp\""}},
-            {"x.distance", {"30", "20"}},
-            {"planner.horizon", {"1", "5"}}};
+  a.axes = {{"planner.algorithm", {"\"sma\"", "\"dec_pomdp\""}, {}},
+            {"x.distance", {"30", "20"}, {}},
+            {"planner.horizon", {"1", "5"}, {}}};
   const int m_star[2][2][2] = {{{20, -1}, {0, 40}}, {{10, 10}, {10, 10}}};  // [alg][dist][H]
   const char* algorithms[] = {"\"sma\"", "\"dec_pomdp\""};
   const char* distances[] = {"30", "20"};
@@ -146,7 +146,7 @@ TEST(HeatmapCsv, OneRowPerCellWithTheOtherAxesAndTheIntervalWidth) {
 TEST(HeatmapMetric, OcclusionScenariosWithoutMStarMapTheHiddenCoverage) {
   SweepAnalysis a;
   a.name = "je";
-  a.axes = {{"a", {"1"}}, {"b", {"2"}}};
+  a.axes = {{"a", {"1"}, {}}, {"b", {"2"}, {}}};
   ConfigStatistics s = config({"a=1", "b=2"}, 0);
   s.trials = 2;
   s.dt = 0.2;

@@ -155,7 +155,9 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
     ++figures;
     at = end;
   }
-  EXPECT_EQ(figures, 10);  // 8 Sankey diagrams and 2 coverage figures
+  // 12 Sankey diagrams (3 planners × 2 horizons × 2), 2 coverage figures and 4 sensitivity maps
+  // (Resource Allocation; Joint Effect per occlusion map).
+  EXPECT_EQ(figures, 18);
 }
 
 }  // namespace
