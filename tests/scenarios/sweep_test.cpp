@@ -94,6 +94,28 @@ TEST(Sweep, ANamedAxisNeedsOneGroupPerValue) {
   }
 }
 
+TEST(Sweep, WithTrialsAndSeedChangesTheEffectiveTextToo) {
+  const SweepSpec sweep = loadSweep(CANOPY_SOURCE_DIR "/scenarios/sweeps/handover_horizons.json");
+  const SweepSpec fewer = withTrialsAndSeed(sweep, 3, 9);
+  EXPECT_EQ(fewer.trials, 3);
+  EXPECT_EQ(fewer.seed, 9u);
+  const SweepSpec reloaded = loadSweepText(fewer.effective_json, "sweep.json");
+  EXPECT_EQ(reloaded.trials, 3);
+  EXPECT_EQ(reloaded.seed, 9u);
+  EXPECT_EQ(reloaded.axes.size(), sweep.axes.size());
+}
+
+TEST(Sweep, TheSensitivityStudiesLoadWithEveryConfigurationValid) {
+  for (const char* name : {"ra_distance_horizon", "je_occlusion_spacing"}) {
+    const SweepSpec sweep =
+        loadSweep(std::string(CANOPY_SOURCE_DIR "/scenarios/sweeps/") + name + ".json");
+    ASSERT_GE(sweep.axes.size(), 2u) << name;
+    for (const SweepConfig& config : configurations(sweep)) {
+      EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt})) << config.id;
+    }
+  }
+}
+
 TEST(Sweep, TrialSeedsDependOnTheIndexOnly) {
   EXPECT_EQ(trialSeed(7, 2), trialSeed(7, 2));
   EXPECT_NE(trialSeed(7, 2), trialSeed(7, 3));
