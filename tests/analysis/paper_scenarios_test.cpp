@@ -56,7 +56,13 @@ TEST(PaperScenarios, TrajectoryHandoverStartsInM0AndEndsWithPairsApart) {
   EXPECT_EQ(ownershipState(initialOwnership(spec), spec.analysis.states, 4), "M0");
   const double L = spec.duration;
   auto at = [&](int t) { return spec.targets[t].path.positionAt(L); };
-  // One 20 x 20 footprint holds I and II (and III and IV) at the end; the pairs are far apart.
+  // Each UAV's initial footprint leaves the other UAV's targets out with 2 m to spare.
+  const double half = 0.5 * spec.uavs[0].sensor.footprint.size.x();
+  EXPECT_GE(std::abs(spec.targets[1].path.positionAt(0).x() - spec.uavs[0].body.start.x()),
+            half + 2.0);
+  EXPECT_GE(std::abs(spec.targets[0].path.positionAt(0).x() - spec.uavs[1].body.start.x()),
+            half + 2.0);
+  // One footprint holds I and II (and III and IV) at the end; the pairs are far apart.
   const sensing::Footprint north = footprintAt(spec, 0, 0.5 * (at(0) + at(1)));
   EXPECT_TRUE(north.contains(at(0)) && north.contains(at(1)));
   EXPECT_GT((at(0) - at(2)).norm(), 40.0);

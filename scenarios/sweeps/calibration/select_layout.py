@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The calibration's selection rule (docs/calibration.md), applied to an analysed search sweep.
 
-    python3 select_layout.py SWEEP_DIR ra|je
+    python3 select_layout.py SWEEP_DIR ra|je|th
 
 For every layout (a point of the two layout axes) the loss is the largest deviation, in
 percentage points, of our numbers from the paper's; a layout is scored by the worst loss over
@@ -18,10 +18,14 @@ from collections import defaultdict
 PAPER = {
     "ra": {("sma", "5"): 50.0, ("dec_pomdp", "5"): 50.0, ("sma", "1"): 12.5, ("dec_pomdp", "1"): 5.0},
     "je": {"a_priori": 1.6, "dynamic": 2.2},
+    # TH: in M* at L/2 at H = 5 per algorithm, and at L for SMA-NBO at H = 1 (15 % end less
+    # cooperative) and at H = 5 (100 % for both).
+    "th": {("dec_pomdp", "5", 2): 97.5, ("sma", "5", 2): 85.0, ("sma", "1", 4): 85.0,
+           ("sma", "5", 4): 100.0, ("dec_pomdp", "5", 4): 100.0},
 }
 
 
-KEYS = ("gap", "distance", "algorithm", "horizon", "spacing", "speed", "occlusion_map")
+KEYS = ("gap", "distance", "algorithm", "horizon", "spacing", "speed", "occlusion_map", "side")
 
 
 def parse(config):
@@ -37,6 +41,17 @@ def ra_numbers(sweep_dir):
             continue
         p = parse(row["config"])
         numbers[(p["gap"], p["distance"])][(p["algorithm"], p["horizon"])] = 100 * float(row["fraction"])
+    return numbers
+
+
+def th_numbers(sweep_dir):
+    numbers = defaultdict(dict)
+    for row in csv.DictReader(open(f"{sweep_dir}/analysis/ownership_states.csv")):
+        if row["state"] != "M*" or row["column"] not in ("2", "4"):
+            continue
+        p = parse(row["config"])
+        key = (p["algorithm"], p["horizon"], int(row["column"]))
+        numbers[(p["side"], "-")][key] = 100 * float(row["fraction"])
     return numbers
 
 
@@ -81,15 +96,15 @@ def je_loss(n):
 
 def main():
     sweep_dir, scenario = sys.argv[1], sys.argv[2]
-    numbers = ra_numbers(sweep_dir) if scenario == "ra" else je_numbers(sweep_dir)
+    numbers = {"ra": ra_numbers, "je": je_numbers, "th": th_numbers}[scenario](sweep_dir)
     paper = PAPER[scenario]
-    if scenario == "ra":
+    if scenario in ("ra", "th"):
         loss = {k: max(abs(v.get(key, 0.0) - target) for key, target in paper.items())
                 for k, v in numbers.items()}
     else:
         loss = {k: je_loss(v) for k, v in numbers.items() if je_feasible(k)}
     xs = sorted({k[0] for k in loss}, key=float)
-    ys = sorted({k[1] for k in loss}, key=float)
+    ys = sorted({k[1] for k in loss}, key=lambda y: float(y) if y != "-" else 0.0)
     best = None
     for x in xs:
         for y in ys:
