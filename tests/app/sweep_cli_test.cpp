@@ -133,31 +133,4 @@ TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
   EXPECT_EQ(run("analyze " + dir.string() + " --state nonsense"), 2);
 }
 
-TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
-  const fs::path dir = fresh("reproduce");
-  ASSERT_EQ(run("reproduce --out " + dir.string() + " --trials 2 --jobs 2"), 0);
-  const std::string report = slurp(dir / "report.md");
-  EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
-  EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
-  EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
-  for (const char* scenario :
-       {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
-    EXPECT_TRUE(fs::exists(dir / scenario / "summary.json")) << scenario;
-    EXPECT_TRUE(fs::exists(dir / scenario / "analysis" / "ownership_states.csv")) << scenario;
-  }
-  // Every figure the report links exists.
-  std::size_t at = 0;
-  int figures = 0;
-  while ((at = report.find("](", at)) != std::string::npos) {
-    const std::size_t end = report.find(')', at);
-    const std::string link = report.substr(at + 2, end - at - 2);
-    EXPECT_TRUE(fs::exists(dir / link)) << link;
-    ++figures;
-    at = end;
-  }
-  // 12 Sankey diagrams (3 planners × 2 horizons × 2), 2 coverage figures and 4 sensitivity maps
-  // (Resource Allocation; Joint Effect per occlusion map).
-  EXPECT_EQ(figures, 18);
-}
-
 }  // namespace
