@@ -111,10 +111,11 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
       c = a.x() / speed;  // ψ = atan2(a_y, a_x), kept as (cos ψ, sin ψ)
       s = a.y() / speed;
     }
-    for (int q = m * substeps_; q < (m + 1) * substeps_; ++q) {
-      p += a * tau;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
-      positions[q] = p;
-      footprints[q] = placeFootprint(uav.footprint, p, c, s);
+    const Vec2 step = a * tau;  // m per sample
+    for (int sample = 0; sample < substeps_; ++sample) {
+      p += step;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
+      *positions++ = p;
+      *footprints++ = placeFootprint(uav.footprint, p, c, s);
     }
   }
 }
@@ -156,10 +157,16 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   discount_.resize(H);
   for (int m = 0; m < H; ++m) discount_[m] = std::pow(s.discount, m);  // γ^{m−1}, m = 1..H
 
-  auto moverOf = [](const UavState& u) {
+  // R·S at each of the S samples of an action, so that a target in view throughout it gains the
+  // information of one measurement of R: R is proportional to α, so α·S stands for it.
+  auto sampleQuality = [S](sensing::SensorQuality quality) {
+    quality.alpha *= S;
+    return quality;
+  };
+  auto moverOf = [&](const UavState& u) {
     const bool follows = u.yaw_mode == world::YawMode::velocity;
-    return Mover{u.position, std::cos(u.yaw), std::sin(u.yaw), follows,
-                 u.v_max,    u.footprint,     u.quality};
+    return Mover{u.position, std::cos(u.yaw), std::sin(u.yaw),         follows,
+                 u.v_max,    u.footprint,     sampleQuality(u.quality)};
   };
   std::vector<char> is_free(n_uavs, 0);
   free_.clear();
@@ -213,8 +220,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
           if (!fixed_fp[im].contains(z)) continue;
-          const Mat2 R =
-              static_cast<double>(S) * noiseCovariance(z, fixed_pos[im], problem.uavs[i].quality);
+          const Mat2 R = noiseCovariance(z, fixed_pos[im], sampleQuality(problem.uavs[i].quality));
           if (seen++ == 0) fixed_R_[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
@@ -267,6 +273,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
     Mat4 P = P_start_[j];
     J += cost_start_[j];
     bool seen_final = seen_final_[j];
+    int m = start_[j] / S;         // the action (0-based) of the first sample
+    int left = S - start_[j] % S;  // samples of it still to come, the first included
     for (int t = start_[j]; t < T; ++t) {
       const std::size_t k = static_cast<std::size_t>(j) * T + t;
       predict(P, Q_, tau);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
@@ -280,13 +288,14 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           const int f = std::countr_zero(bits);
           const std::size_t fq = static_cast<std::size_t>(f) * T + t;
           if (!free_fp_[fq].contains(z_[k])) continue;
-          // R·S: S samples in view carry the information of one measurement per action.
-          measurementUpdate(
-              P, static_cast<double>(S) * noiseCovariance(z_[k], free_pos_[fq], free_[f].quality));
+          measurementUpdate(P, noiseCovariance(z_[k], free_pos_[fq], free_[f].quality));  // S·R
           seen = true;
         }
       }
-      if ((t + 1) % S == 0) J += discount_[t / S] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
+      if (--left == 0) {                      // the plan instant t_m ends the action
+        J += discount_[m++] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
+        left = S;
+      }
       if (t == T - 1) seen_final = seen;
     }
     trace_final_[j] = P(0, 0) + P(1, 1);  // tr(P_{j,H}[pos])

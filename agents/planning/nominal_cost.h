@@ -82,7 +82,7 @@ class NominalCost {
     bool yaw_follows;                 // ψ follows the direction of a_{i,m} (kept while hovering)
     double v_max;                     // m/s
     sensing::FootprintDef footprint;  // φ relative to the UAV (m)
-    sensing::SensorQuality quality;   // α, r0 (m) of R
+    sensing::SensorQuality quality;   // α·S, r0 (m): R of one of an action's S samples
   };
   // Moves a UAV through H actions: fills H positions (m) and footprints.
   void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
