@@ -46,8 +46,10 @@ int countTrials(const fs::path& dir) {
   return n;
 }
 
-fs::path sweepFile() {
-  const fs::path file = fs::temp_directory_path() / "canopy_cli_sweep.json";
+// One file per test: tests run in parallel, and a file rewritten while another test's sweep reads
+// it could be seen empty.
+fs::path sweepFile(const std::string& test) {
+  const fs::path file = fs::temp_directory_path() / ("canopy_cli_sweep_" + test + ".json");
   std::ofstream(file)
       << R"({"name": "cli", "scenario": "trajectory_handover", "trials": 5, "seed": 3,
     "axes": [{"path": "planner.algorithm", "values": ["sma", "dec_pomdp"]},
@@ -63,14 +65,15 @@ fs::path fresh(const std::string& name) {
 
 TEST(SweepCommand, KilledMidwayAndResumedGivesTheSameSummaryAsUninterrupted) {
   const fs::path whole = fresh("whole"), killed = fresh("killed");
-  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + whole.string() + " --jobs 2"), 0);
+  ASSERT_EQ(run("sweep " + sweepFile("killed").string() + " --out " + whole.string() + " --jobs 2"),
+            0);
 
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
     std::freopen("/dev/null", "w", stderr);  // no progress bar in the test log
     std::freopen("/dev/null", "w", stdout);
-    const std::string out = killed.string(), file = sweepFile().string();
+    const std::string out = killed.string(), file = sweepFile("killed").string();
     execl(CANOPY_BINARY, CANOPY_BINARY, "sweep", file.c_str(), "--out", out.c_str(), "--jobs", "2",
           static_cast<char*>(nullptr));
     _exit(127);
@@ -87,7 +90,8 @@ TEST(SweepCommand, KilledMidwayAndResumedGivesTheSameSummaryAsUninterrupted) {
   EXPECT_GE(finished_before_kill, 4);
   EXPECT_LT(finished_before_kill, 20) << "the sweep finished before it could be killed";
 
-  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + killed.string() + " --jobs 2"), 0);
+  ASSERT_EQ(
+      run("sweep " + sweepFile("killed").string() + " --out " + killed.string() + " --jobs 2"), 0);
   EXPECT_EQ(slurp(killed / "summary.json"), slurp(whole / "summary.json"));
   EXPECT_EQ(trialFiles(killed), trialFiles(whole));
   for (const auto& entry : fs::recursive_directory_iterator(killed)) {
@@ -97,8 +101,8 @@ TEST(SweepCommand, KilledMidwayAndResumedGivesTheSameSummaryAsUninterrupted) {
 
 TEST(SweepCommand, OneAndTwoJobsGiveIdenticalResults) {
   const fs::path one = fresh("jobs1"), two = fresh("jobs2");
-  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + one.string() + " --jobs 1"), 0);
-  ASSERT_EQ(run("sweep " + sweepFile().string() + " --out " + two.string() + " --jobs 2"), 0);
+  ASSERT_EQ(run("sweep " + sweepFile("jobs").string() + " --out " + one.string() + " --jobs 1"), 0);
+  ASSERT_EQ(run("sweep " + sweepFile("jobs").string() + " --out " + two.string() + " --jobs 2"), 0);
   EXPECT_EQ(trialFiles(one), trialFiles(two));
   EXPECT_EQ(slurp(one / "summary.json"), slurp(two / "summary.json"));
   ASSERT_EQ(run("analyze " + one.string()), 0);
