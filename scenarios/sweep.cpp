@@ -152,18 +152,36 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
 }
 
 int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
+  const std::vector<SweepConfig> configs = configurations(sweep);
+  std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
+  for (const SweepConfig& config : configs)
+    specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
+
   const fs::path manifest = options.out_dir / "sweep.json";
   if (fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
     throw ScenarioError(manifest.string(), "",
                         "this directory holds a different sweep; choose another --out");
   }
+  // The same sweep text over a changed scenario file (or changed defaults) would resume on
+  // trials of another scenario: each configuration's effective scenario is fingerprinted.
+  Json fingerprints = Json::object();
+  for (std::size_t c = 0; c < configs.size(); ++c) {
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx",
+                  static_cast<unsigned long long>(fnv1a64(specs[c].effective_config)));
+    fingerprints[configs[c].id] = hex;
+  }
+  const fs::path scenarios_file = options.out_dir / "scenarios.json";
+  const std::string fingerprint_text = fingerprints.dump(2) + "\n";
+  if (fs::exists(scenarios_file) && readTextFile(scenarios_file) != fingerprint_text) {
+    throw ScenarioError(scenarios_file.string(), "",
+                        "the scenario behind this sweep has changed since its trials ran (a "
+                        "configuration's effective scenario differs); choose another --out or "
+                        "remove the directory");
+  }
   fs::create_directories(options.out_dir);
   writeFileAtomically(manifest, sweep.effective_json + "\n");
-
-  const std::vector<SweepConfig> configs = configurations(sweep);
-  std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
-  for (const SweepConfig& config : configs)
-    specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
+  writeFileAtomically(scenarios_file, fingerprint_text);
 
   struct Job {
     int config, trial;

@@ -66,7 +66,9 @@ struct SweepOptions {
 };
 
 /// Runs every missing trial, then writes DIR/summary.json (summariseSweep); returns the number of
-/// trials it ran. Every configuration is loaded (and so validated) before the first trial starts.
+/// trials it ran. Every configuration is loaded (and so validated) before anything is written.
+/// DIR/sweep.json holds the sweep and DIR/scenarios.json a fingerprint (FNV-1a of the effective
+/// scenario) per configuration; resuming into a directory where either differs throws.
 int runSweep(const SweepSpec& sweep, const SweepOptions& options);
 
 /// Where trial `index` of configuration `config_id` lives under a sweep directory.

@@ -172,6 +172,28 @@ TEST(Sweep, LoadsBackEveryTrialGroupedByConfiguration) {
   EXPECT_EQ(results.trials[0][1].seed, trialSeed(7, 1));
 }
 
+TEST(Sweep, RefusesToResumeWhenTheScenarioBehindItChanged) {
+  const fs::path dir = freshDir("changed");
+  fs::create_directories(dir);
+  const fs::path scenario = dir / "walk.json";
+  const std::string demo = readTextFile(libraryDir() / "demo.json").value();
+  std::ofstream(scenario) << demo;
+  const std::string text = R"({"scenario": ")" + scenario.string() +
+                           R"(", "trials": 1, "set": {"clock.duration": 1.0}})";
+  const fs::path out = dir / "out";
+  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 1);
+  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 0);  // resumes: nothing to do
+  // The same sweep text, but the scenario file now says something else.
+  std::ofstream(scenario) << demo.substr(0, demo.rfind('}')) << R"(, "description": "changed"})";
+  try {
+    runSweep(loadSweepText(text, "s.json"), {out, 1, {}});
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_NE(std::string(e.what()).find("scenarios.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("changed since its trials ran"), std::string::npos);
+  }
+}
+
 TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
   EXPECT_THROW(loadSweepText(R"({"scenario": "no_such_scenario"})", "s.json"), ScenarioError);
   EXPECT_THROW(loadSweepText(R"({"scenario": "demo", "trials": 0})", "s.json"), ScenarioError);
@@ -187,6 +209,7 @@ TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
     EXPECT_EQ(e.field(), "planner.horizon");
   }
   EXPECT_FALSE(fs::exists(dir / "trials"));
+  EXPECT_FALSE(fs::exists(dir / "sweep.json"));  // nothing is written before every config loads
 }
 
 }  // namespace
