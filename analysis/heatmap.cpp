@@ -26,10 +26,6 @@ bool numeric(const scenarios::SweepAxis& axis) {
                                              [](const std::string& v) { return number(v); });
 }
 
-std::string valueOf(const ConfigStatistics& s, const std::string& path) {
-  return s.axisValue(path);
-}
-
 std::string fileSafe(std::string text) {
   for (char& c : text) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
@@ -137,7 +133,7 @@ std::vector<Heatmap> sensitivityMaps(const SweepAnalysis& analysis, const Heatma
     std::vector<std::string> others;
     for (std::size_t a = 0; a < analysis.axes.size(); ++a) {
       if (a == numeric_axes[0] || a == numeric_axes[1]) continue;
-      others.push_back(analysis.axes[a].path + "=" + valueOf(s, analysis.axes[a].path));
+      others.push_back(analysis.axes[a].path + "=" + s.axisValue(analysis.axes[a].path));
     }
     auto map = std::find_if(maps.begin(), maps.end(),
                             [&](const Heatmap& m) { return m.others == others; });
@@ -159,8 +155,8 @@ std::vector<Heatmap> sensitivityMaps(const SweepAnalysis& analysis, const Heatma
       }
       map = maps.insert(maps.end(), std::move(m));
     }
-    const auto xi = std::find(map->x_values.begin(), map->x_values.end(), valueOf(s, x_axis.path));
-    const auto yi = std::find(map->y_values.begin(), map->y_values.end(), valueOf(s, y_axis.path));
+    const auto xi = std::find(map->x_values.begin(), map->x_values.end(), s.axisValue(x_axis.path));
+    const auto yi = std::find(map->y_values.begin(), map->y_values.end(), s.axisValue(y_axis.path));
     if (xi == map->x_values.end() || yi == map->y_values.end()) continue;
     map->cells[yi - map->y_values.begin()][xi - map->x_values.begin()] =
         cellOf(s, metric, analysis.specs[c]);
