@@ -1,32 +1,17 @@
 // `canopy reproduce` end to end with two trials per configuration: the paper's table and the
 // sensitivity studies, some 400 trials (LABEL monte_carlo: Release only).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include "core/text_file.h"
+#include "tests/app/cli.h"
 
 namespace {
 namespace fs = std::filesystem;
-
-int run(const std::string& arguments) {
-  const int status =
-      std::system((std::string(CANOPY_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string slurp(const fs::path& path) {
-  return canopy::readTextFile(path).value();
-}
-
-fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("canopy_cli_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
+using canopy::cli_test::fresh;
+using canopy::cli_test::run;
+using canopy::cli_test::slurp;
 
 TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   const fs::path dir = fresh("reproduce");

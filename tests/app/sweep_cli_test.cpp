@@ -11,21 +11,13 @@
 #include <map>
 #include <thread>
 
-#include "core/text_file.h"
+#include "tests/app/cli.h"
 
 namespace {
 namespace fs = std::filesystem;
-
-int run(const std::string& arguments) {
-  const int status =
-      std::system((std::string(CANOPY_BINARY) + " " + arguments + " >/dev/null 2>&1").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// The file's text; a missing file throws, so it can never compare equal to another.
-std::string slurp(const fs::path& path) {
-  return canopy::readTextFile(path).value();
-}
+using canopy::cli_test::fresh;
+using canopy::cli_test::run;
+using canopy::cli_test::slurp;
 
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {
   std::map<std::string, std::string> files;
@@ -55,12 +47,6 @@ fs::path sweepFile(const std::string& test) {
     "axes": [{"path": "planner.algorithm", "values": ["sma", "dec_pomdp"]},
              {"path": "planner.horizon", "values": [1, 5]}]})";
   return file;
-}
-
-fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("canopy_cli_" + name);
-  fs::remove_all(dir);
-  return dir;
 }
 
 TEST(SweepCommand, KilledMidwayAndResumedGivesTheSameSummaryAsUninterrupted) {
