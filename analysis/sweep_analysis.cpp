@@ -23,7 +23,7 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
     if (results.trials[c].empty()) continue;
     const scenarios::SweepConfig& config = results.configs[c];
     analysis.specs.push_back(
-        scenarios::loadScenario(results.sweep.scenario, {config.overrides, std::nullopt}));
+        scenarios::loadScenario(results.sweep.scenario, {.overrides = config.overrides}));
     analysis.configs.push_back(
         summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
     analysis.configs.back().point = config.point;

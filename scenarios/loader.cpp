@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
 
 namespace canopy::scenarios {
@@ -66,7 +67,8 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   ScenarioSpec spec;
   spec.file = file;
   Json effective = Json::object();
-  ObjectReader root = Field(document, file, "", &effective).object();
+  const internal::FileAccess access = internal::fileAccessFor(file, options.allowed_roots);
+  ObjectReader root = Field(document, file, "", &effective, &access).object();
 
   spec.name = root.string("name", fs::path(file).stem().string());
   spec.description = root.string("description", "");
@@ -151,8 +153,9 @@ std::vector<world::TreeDef> loadLayout(const std::string& path) {
   Json effective = Json::array();
   std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(path)).string()};
   const Aabb everywhere{Vec2::Constant(-1e9), Vec2::Constant(1e9)};
-  internal::readOccluders(Field(list, path, "occluders", nullptr), everywhere, trees, effective,
-                          include_stack);
+  const internal::FileAccess access = internal::fileAccessFor(path, {});
+  internal::readOccluders(Field(list, path, "occluders", nullptr, &access), everywhere, trees,
+                          effective, include_stack);
   return trees;
 }
 

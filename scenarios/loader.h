@@ -14,6 +14,11 @@ namespace canopy::scenarios {
 struct LoadOptions {
   std::vector<std::string> overrides;  // "dotted.path=value", value parsed as JSON or else a string
   std::optional<std::uint64_t> seed;   // replaces the file's seed
+  /// Folders besides the scenario's own and the library from which includes and track files may
+  /// be read (`--allow-path DIR`).
+  std::vector<std::filesystem::path> allowed_roots;
+  /// Multiplies every work limit of scenarios/budget.h (`--budget K`); 1 keeps the defaults.
+  double budget_scale = 1.0;
 };
 
 /// scenario: a path to a file, or the name of a file in the scenario library (with or without

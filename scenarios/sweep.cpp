@@ -155,7 +155,7 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   const std::vector<SweepConfig> configs = configurations(sweep);
   std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
   for (const SweepConfig& config : configs)
-    specs.push_back(loadScenario(sweep.scenario, {config.overrides, std::nullopt}));
+    specs.push_back(loadScenario(sweep.scenario, {.overrides = config.overrides}));
 
   const fs::path manifest = options.out_dir / "sweep.json";
   if (fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {

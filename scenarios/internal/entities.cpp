@@ -1,11 +1,11 @@
 // Reading UAVs, targets and their scripted paths.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
+#include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
+#include "scenarios/track_csv.h"
 
 namespace canopy::scenarios::internal {
 namespace {
@@ -39,35 +39,14 @@ void requireIncreasing(const std::vector<world::TimedPoint>& points,
   }
 }
 
-// A recorded track from CSV: one "t,x,y" per line; '#' comments and a header line are skipped.
+// A recorded track from a CSV file the scenario names (scenarios/track_csv.h).
 std::vector<world::TimedPoint> readTrackCsv(const Field& field) {
-  const std::string name = field.string();
-  std::filesystem::path path = name;
-  if (path.is_relative()) path = std::filesystem::path(field.file()).parent_path() / path;
-  std::ifstream in(path);
-  if (!in) field.fail("cannot read the track file '" + path.string() + "'");
-  std::vector<world::TimedPoint> points;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (line.empty() || line[0] == '#') continue;
-    double t = 0, x = 0, y = 0;
-    char c1 = 0, c2 = 0;
-    std::istringstream row(line);
-    if (!(row >> t >> c1 >> x >> c2 >> y) || c1 != ',' || c2 != ',' || !std::isfinite(t) ||
-        !std::isfinite(x) || !std::isfinite(y)) {
-      if (points.empty() && number == 1) continue;  // a header
-      throw ScenarioError(path.string(), "line " + std::to_string(number),
-                          "expected \"t,x,y\" with three finite numbers, got \"" + line + "\"");
-    }
-    if (!points.empty() && !(t > points.back().t)) {
-      throw ScenarioError(path.string(), "line " + std::to_string(number),
-                          "expected a time greater than the previous line's; times must increase "
-                          "strictly");
-    }
-    points.push_back({t, Vec2(x, y)});
+  const ReferencedFile file = readReferencedFile(field, "track file");
+  try {
+    return parseTrackCsv(file.text, file.shown);
+  } catch (const ScenarioError& e) {
+    field.fail(std::string("in the track file ") + e.what());
   }
-  if (points.empty()) field.fail("expected a track file with at least one \"t,x,y\" line");
-  return points;
 }
 
 }  // namespace

@@ -3,15 +3,16 @@
 #include <cmath>
 #include <limits>
 
-#include "core/text_file.h"
+#include "core/printable.h"
+#include "scenarios/internal/referenced_file.h"
 
 namespace canopy::scenarios::internal {
 namespace {
 
 std::string shortDump(const Json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
+  // Depth is bounded at parse time (kMaxJsonDepth), so dump() recurses at most that deep.
+  std::string text = value.dump(-1, ' ', false, Json::error_handler_t::replace);
+  return text.size() > 40 ? printable(text, 37) : printable(text);
 }
 
 std::string joinPath(const std::string& parent, const std::string& key) {
@@ -57,8 +58,20 @@ bool satisfies(double x, Bound bound) {
 }  // namespace
 
 Json parseJson(const std::string& text, const std::string& file) {
+  // The parser itself is iterative, but printing and destroying a value recurse on its depth:
+  // refuse deep nesting while parsing, before any of it is built.
+  bool too_deep = false;
+  const Json::parser_callback_t limit_depth = [&too_deep](int depth, Json::parse_event_t event,
+                                                          Json&) {
+    if (depth > kMaxJsonDepth && (event == Json::parse_event_t::object_start ||
+                                  event == Json::parse_event_t::array_start)) {
+      too_deep = true;
+      throw std::length_error("too deep");
+    }
+    return true;
+  };
   try {
-    return Json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    return Json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
   } catch (const Json::parse_error& e) {
     // e.what(): "[json.exception.parse_error.101] parse error at line L, column C: detail"
     std::string detail = e.what();
@@ -69,21 +82,32 @@ Json parseJson(const std::string& text, const std::string& file) {
       where = detail.substr(at + 4, colon - at - 4);  // "line L, column C"
       detail = detail.substr(colon + 2);
     }
-    throw ScenarioError(file, where, "invalid JSON: " + detail);
+    throw ScenarioError(file, where, "invalid JSON: " + printable(detail, 200));
   } catch (const Json::exception& e) {
     // e.g. out_of_range.406 "number overflow parsing '1e999'": JSON has no infinities.
     std::string detail = e.what();
     const auto bracket = detail.find("] ");
     if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
-    throw ScenarioError(file, "", "invalid JSON: " + detail + " (numbers must be finite)");
+    throw ScenarioError(file, "",
+                        "invalid JSON: " + printable(detail, 200) + " (numbers must be finite)");
+  } catch (const std::length_error&) {
+    if (!too_deep) throw;
+    throw ScenarioError(file, "",
+                        "expected JSON nested at most " + std::to_string(kMaxJsonDepth) +
+                            " levels deep (arrays and objects), this file nests deeper");
   }
 }
 
 Json readJsonFile(const std::string& path, const std::string& referenced_from) {
-  const std::optional<std::string> text = readTextFile(path);
+  std::string why;
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  const std::optional<std::string> text =
+      error ? std::nullopt : readRegularFile(canonical, kMaxJsonBytes, why);
   if (!text) {
-    throw ScenarioError(referenced_from.empty() ? path : referenced_from, "",
-                        "cannot read file '" + path + "'");
+    throw ScenarioError(referenced_from.empty() ? printable(path, 200) : referenced_from, "",
+                        "cannot read file '" + printable(path, 200) + "'" +
+                            (why.empty() ? "" : ": " + why));
   }
   return parseJson(*text, path);
 }
@@ -203,7 +227,7 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
   fields.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     fields.emplace_back((*value_)[i], file_, path_ + "[" + std::to_string(i) + "]",
-                        out_ ? &(*out_)[i] : nullptr);
+                        out_ ? &(*out_)[i] : nullptr, access_);
   }
   return fields;
 }
@@ -234,7 +258,8 @@ std::optional<Field> ObjectReader::optional(const std::string& key) {
   read_.insert(key);
   if (!has(key)) return std::nullopt;
   Json* slot = field_.out() ? &(*field_.out())[key] : nullptr;  // std::map: address is stable
-  return Field(field_.json().at(key), field_.file(), joinPath(field_.path(), key), slot);
+  return Field(field_.json().at(key), field_.file(), joinPath(field_.path(), key), slot,
+               field_.access());
 }
 
 void ObjectReader::recordDefault(const std::string& key, const Json& value) {

@@ -2,6 +2,7 @@
 // Private to scenarios/: a JSON walker that knows where it is. Every read names the file and the
 // field path in its errors, records what it read (or the default it used) into the effective
 // configuration, and finish() rejects fields nobody read.
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
@@ -16,9 +17,12 @@ namespace canopy::scenarios::internal {
 // std::map-backed: slots of the effective config keep their address while siblings are added.
 using Json = nlohmann::json;
 
-/// Parses JSON with comments; syntax errors become ScenarioError naming file:line:column.
+constexpr int kMaxJsonDepth = 64;                         // nested arrays and objects
+constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
+
+/// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError naming file:line:column.
 Json parseJson(const std::string& text, const std::string& file);
-/// Reads and parses a file; a missing or unreadable file is a ScenarioError.
+/// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
 Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
 
 /// "a string \"x\"", "the number -3", "an array", ... for messages.
@@ -29,17 +33,25 @@ enum class Bound { any, positive, non_negative, probability, open_probability, u
 
 class ObjectReader;
 
+/// Where the files a scenario names (includes, track CSVs) may be read from: canonical folders
+/// (the scenario's own folder, the scenario library, and any the user allowed).
+struct FileAccess {
+  std::vector<std::filesystem::path> roots;
+};
+
 /// A value at a known place: its file, its field path, and the slot of the effective config it
 /// fills.
 class Field {
  public:
-  Field(const Json& value, std::string file, std::string path, Json* out)
-      : value_(&value), file_(std::move(file)), path_(std::move(path)), out_(out) {}
+  Field(const Json& value, std::string file, std::string path, Json* out,
+        const FileAccess* access = nullptr)
+      : value_(&value), file_(std::move(file)), path_(std::move(path)), out_(out), access_(access) {}
 
   const Json& json() const { return *value_; }
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
   Json* out() const { return out_; }  // this value's slot in the effective config (may be null)
+  const FileAccess* access() const { return access_; }  // null: nothing may be read through it
   [[noreturn]] void fail(const std::string& message) const;
 
   double number(Bound bound = Bound::any) const;
@@ -61,6 +73,7 @@ class Field {
   std::string file_;
   std::string path_;
   Json* out_;
+  const FileAccess* access_;
 };
 
 /// Reads the members of one JSON object.

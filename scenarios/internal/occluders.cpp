@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "scenarios/forest.h"
+#include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
 #include "scenarios/loader.h"
 
@@ -139,49 +140,44 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
   }
 }
 
-fs::path resolveInclude(const Field& field, const std::string& name) {
-  const fs::path relative = fs::path(field.file()).parent_path() / name;
-  std::error_code error;
-  if (fs::path(name).is_absolute() && fs::is_regular_file(name, error)) return name;
-  if (fs::is_regular_file(relative, error)) return relative;
-  if (fs::is_regular_file(libraryDir() / name, error)) return libraryDir() / name;
-  field.fail("cannot find the layout file '" + name +
-             "' (looked beside this file and in the "
-             "scenario library)");
-}
-
 }  // namespace
 
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
                    Json& effective, std::vector<std::string>& include_stack) {
   for (const Field& element : list.elements()) {
     Json element_out = Json::object();
-    const Field item(element.json(), element.file(), element.path(), &element_out);
+    const Field item(element.json(), element.file(), element.path(), &element_out, element.access());
     ObjectReader reader = item.object();
     if (reader.has("include")) {
       const Field name_field = reader.required("include");
-      const fs::path path = resolveInclude(name_field, name_field.string());
-      const std::string canonical = fs::weakly_canonical(path).string();
+      reader.finish();
+      const ReferencedFile file = readReferencedFile(name_field, "layout file", libraryDir());
+      const std::string canonical = file.path.string();
       if (std::find(include_stack.begin(), include_stack.end(), canonical) != include_stack.end()) {
-        name_field.fail("include cycle: '" + path.string() + "' is already being read");
+        name_field.fail("include cycle: '" + file.shown + "' is already being read");
       }
       if (static_cast<int>(include_stack.size()) > kMaxIncludeDepth) {
         name_field.fail("includes nested more than 16 deep");
       }
-      reader.finish();
-      const Json document = readJsonFile(path.string(), element.file());
-      const bool wrapped = document.is_object();
-      if (wrapped) {
-        ObjectReader layout = Field(document, path.string(), "", nullptr).object();
-        layout.optional("description");
-        layout.required("occluders");
-        layout.finish();
+      // Errors inside the included file name it, behind the field that includes it.
+      try {
+        const Json document = parseJson(file.text, file.shown);
+        const bool wrapped = document.is_object();
+        if (wrapped) {
+          ObjectReader layout = Field(document, file.shown, "", nullptr).object();
+          layout.optional("description");
+          layout.required("occluders");
+          layout.finish();
+        }
+        const Json& inner = wrapped ? document.at("occluders") : document;
+        include_stack.push_back(canonical);
+        readOccluders(Field(inner, file.path.string(), wrapped ? "occluders" : "", nullptr,
+                            name_field.access()),
+                      aoi, trees, effective, include_stack);
+        include_stack.pop_back();
+      } catch (const ScenarioError& e) {
+        name_field.fail(std::string("in the layout file ") + e.what());
       }
-      const Json& inner = wrapped ? document.at("occluders") : document;
-      include_stack.push_back(canonical);
-      readOccluders(Field(inner, path.string(), wrapped ? "occluders" : "", nullptr), aoi, trees,
-                    effective, include_stack);
-      include_stack.pop_back();
       continue;
     }
     static const std::vector<std::string> kTypes{"disc", "polygon", "poisson", "grid", "cluster"};

@@ -1,0 +1,115 @@
+#include "scenarios/internal/referenced_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/printable.h"
+#include "scenarios/loader.h"
+
+namespace canopy::scenarios::internal {
+namespace fs = std::filesystem;
+namespace {
+
+fs::path canonicalOrEmpty(const fs::path& path) {
+  std::error_code error;
+  fs::path canonical = fs::weakly_canonical(fs::absolute(path, error), error);
+  return error ? fs::path() : canonical;
+}
+
+// True when `path` is `root` or lies below it (both canonical), compared by whole components.
+bool isInside(const fs::path& path, const fs::path& root) {
+  auto p = path.begin();
+  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
+    if (r->empty()) continue;  // a trailing separator
+    if (p == path.end() || *p != *r) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<std::string> readRegularFile(const fs::path& path, std::size_t max_bytes,
+                                           std::string& why) {
+  // O_NONBLOCK: opening a FIFO must not wait for a writer; O_NOFOLLOW: the last component was
+  // checked as it is, a link planted since is refused.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) {
+    why = std::strerror(errno);
+    return std::nullopt;
+  }
+  struct stat info {};
+  std::optional<std::string> text;
+  if (::fstat(fd, &info) != 0) {
+    why = std::strerror(errno);
+  } else if (!S_ISREG(info.st_mode)) {
+    why = "not a regular file";
+  } else if (static_cast<unsigned long long>(info.st_size) > max_bytes) {
+    why = "larger than " + std::to_string(max_bytes >> 20) + " MiB";
+  } else {
+    std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    if (done == bytes.size()) {
+      text = std::move(bytes);
+    } else {
+      why = "the file changed while it was read";
+    }
+  }
+  ::close(fd);
+  return text;
+}
+
+FileAccess fileAccessFor(const fs::path& scenario_file, const std::vector<fs::path>& allowed) {
+  FileAccess access;
+  fs::path folder = fs::path(scenario_file).parent_path();
+  if (folder.empty()) folder = ".";
+  for (const fs::path& root : {folder, libraryDir()}) {
+    if (fs::path canonical = canonicalOrEmpty(root); !canonical.empty())
+      access.roots.push_back(canonical);
+  }
+  for (const fs::path& root : allowed) {
+    if (fs::path canonical = canonicalOrEmpty(root); !canonical.empty())
+      access.roots.push_back(canonical);
+  }
+  return access;
+}
+
+ReferencedFile readReferencedFile(const Field& field, const std::string& what,
+                                  const fs::path& fallback_dir) {
+  const std::string name = field.string();
+  if (name.empty()) field.fail("expected the name of a " + what + ", got an empty string");
+  fs::path path = name;
+  if (path.is_relative()) {
+    path = fs::path(field.file()).parent_path() / name;
+    std::error_code error;
+    if (!fallback_dir.empty() && !fs::exists(path, error) && fs::exists(fallback_dir / name, error))
+      path = fallback_dir / name;
+  }
+  ReferencedFile file{canonicalOrEmpty(path), printable(path.string(), 200), {}};
+  if (file.path.empty()) field.fail("cannot resolve the " + what + " '" + file.shown + "'");
+  const FileAccess* access = field.access();
+  bool allowed = false;
+  for (const fs::path& root : access ? access->roots : std::vector<fs::path>{})
+    allowed = allowed || isInside(file.path, root);
+  if (!allowed) {
+    field.fail("the " + what + " '" + file.shown +
+               "' lies outside the scenario's folder and the scenario library "
+               "(--allow-path DIR allows another folder)");
+  }
+  std::string why;
+  std::optional<std::string> text = readRegularFile(file.path, kMaxReferencedBytes, why);
+  if (!text) field.fail("cannot read the " + what + " '" + file.shown + "': " + why);
+  file.text = std::move(*text);
+  return file;
+}
+
+}  // namespace canopy::scenarios::internal
