@@ -13,8 +13,8 @@
 namespace canopy::analysis {
 namespace fs = std::filesystem;
 
-SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
-  const scenarios::SweepResults results = scenarios::loadSweepResults(sweep_dir);
+SweepAnalysis analyseSweep(const fs::path& sweep_dir, const scenarios::LoadOptions& load) {
+  const scenarios::SweepResults results = scenarios::loadSweepResults(sweep_dir, load);
   SweepAnalysis analysis;
   analysis.name = results.sweep.name;
   analysis.dir = sweep_dir;
@@ -22,8 +22,9 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir) {
   for (std::size_t c = 0; c < results.configs.size(); ++c) {
     if (results.trials[c].empty()) continue;
     const scenarios::SweepConfig& config = results.configs[c];
-    analysis.specs.push_back(
-        scenarios::loadScenario(results.sweep.scenario, {.overrides = config.overrides}));
+    scenarios::LoadOptions config_load = load;
+    config_load.overrides = config.overrides;
+    analysis.specs.push_back(scenarios::loadScenario(results.sweep.scenario, config_load));
     analysis.configs.push_back(
         summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
     analysis.configs.back().point = config.point;

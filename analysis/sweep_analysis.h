@@ -21,7 +21,8 @@ struct SweepAnalysis {
 
 /// Loads every finished trial of the sweep in `sweep_dir` and summarises each configuration.
 /// Throws ScenarioError when the directory is not a sweep or a trial file is malformed.
-SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir);
+SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir,
+                           const scenarios::LoadOptions& load = {});
 
 /// Writes the CSV tables behind every figure into out_dir. Every proportion has its 95 % Wilson
 /// interval (_low, _high) and every mean over trials its 95 % Student-t interval (±inf with a

@@ -2,8 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
+#include "core/printable.h"
 #include "scenarios/error.h"
 
 namespace canopy::app {
@@ -71,6 +73,24 @@ std::string Args::joined() const {
   std::string text;
   for (const std::string& a : args_) text += (text.empty() ? "" : " ") + a;
   return text;
+}
+
+bool takeLoadOption(Args& args, const std::string& arg, scenarios::LoadOptions& load) {
+  if (arg == "--budget") {
+    load.budget_scale = args.doubleValue(arg);
+    if (!(load.budget_scale > 0.0) || load.budget_scale > 1e12)
+      usageError(arg, "expected a factor K in (0, 1e12] on every work limit");
+    return true;
+  }
+  if (arg == "--allow-path") {
+    const std::string dir = args.value(arg);
+    std::error_code error;
+    if (!std::filesystem::is_directory(dir, error))
+      usageError(arg, "expected an existing folder, got '" + printable(dir, 200) + "'");
+    load.allowed_roots.emplace_back(dir);
+    return true;
+  }
+  return false;
 }
 
 }  // namespace canopy::app

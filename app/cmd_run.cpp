@@ -53,6 +53,7 @@ int runCommand(Args& args) {
       load.seed = args.unsignedValue(arg);
     } else if (arg == "--set") {
       load.overrides.push_back(args.value(arg));
+    } else if (takeLoadOption(args, arg, load)) {
     } else if (arg == "--frames") {
       frames = true;
     } else if (arg == "--frame-every") {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "scenarios/budget.h"
 #include "scenarios/error.h"
 #include "scenarios/forest.h"
 #include "scenarios/loader.h"
@@ -16,6 +17,7 @@ int validateCommand(Args& args) {
     const std::string arg = args.take();
     if (arg == "--set") {
       load.overrides.push_back(args.value(arg));
+    } else if (takeLoadOption(args, arg, load)) {
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy validate`");
     } else if (scenario.empty()) {
@@ -48,6 +50,7 @@ int listCommand(Args& args) {
 
 int forestCommand(Args& args) {
   scenarios::PoissonForestDef def;
+  scenarios::LoadOptions load;  // only its --budget
   bool has_aoi = false, has_lambda = false, has_radius = false;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -77,6 +80,7 @@ int forestCommand(Args& args) {
     } else if (arg == "--min-gap") {
       def.min_gap = args.doubleValue(arg);
       if (*def.min_gap < 0.0) usageError(arg, "expected a gap >= 0 (m)");
+    } else if (arg == "--budget" && takeLoadOption(args, arg, load)) {
     } else {
       usageError(arg, "unknown option for `canopy forest`");
     }
@@ -84,10 +88,22 @@ int forestCommand(Args& args) {
   if (!has_aoi || !has_lambda || !has_radius) {
     usageError("forest", "expected --aoi, --lambda and --radius");
   }
-  if (def.lambda * def.region.area() > 2e6)
-    usageError("--lambda", "expected at most 2 million trees");
+  const double limit = scenarios::workLimits(load.budget_scale).trees;
+  const double expected = def.lambda * scenarios::poissonDrawRegion(def).area();
+  if (!(expected <= limit)) {
+    usageError("--lambda", scenarios::budgetMessage(expected, limit,
+                                                    "trees drawn (λ × the region dilated by "
+                                                    "2 r_max + min_gap)"));
+  }
+  def.max_points = static_cast<std::size_t>(limit);
   using Json = nlohmann::json;
-  const std::vector<world::TreeDef> trees = scenarios::poissonForest(def);
+  std::vector<world::TreeDef> trees;
+  try {
+    trees = scenarios::poissonForest(def);
+  } catch (const scenarios::ForestTooLarge& e) {
+    usageError("--seed", "this seed's draw made more than " + std::to_string(e.max_points) +
+                             " trees; change the seed or raise the limit with --budget K");
+  }
   Json occluders = Json::array();
   for (const world::TreeDef& tree : trees) {
     occluders.push_back({{"type", "disc"},

@@ -60,12 +60,14 @@ int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesyste
 int sweepCommand(Args& args) {
   std::string file, out;
   int jobs = defaultJobs();
+  scenarios::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
       out = args.value(arg);
     } else if (arg == "--jobs") {
       jobs = args.intValue(arg, 1, 1024);
+    } else if (takeLoadOption(args, arg, load)) {
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy sweep`");
     } else if (file.empty()) {
@@ -75,7 +77,7 @@ int sweepCommand(Args& args) {
     }
   }
   if (file.empty() || out.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
-  const scenarios::SweepSpec sweep = scenarios::loadSweep(file);
+  const scenarios::SweepSpec sweep = scenarios::loadSweep(file, load);
   const auto start = std::chrono::steady_clock::now();
   const int ran = runSweepWithProgress(sweep, out, jobs);
   const double seconds =
@@ -87,10 +89,12 @@ int sweepCommand(Args& args) {
 
 int analyzeCommand(Args& args) {
   std::string dir, out, state;
+  scenarios::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
       out = args.value(arg);
+    } else if (takeLoadOption(args, arg, load)) {
     } else if (arg == "--state") {
       state = args.value(arg);
     } else if (!arg.empty() && arg[0] == '-') {
@@ -103,7 +107,7 @@ int analyzeCommand(Args& args) {
   }
   if (dir.empty()) usageError("analyze", "expected a sweep directory");
   if (out.empty()) out = dir + "/analysis";
-  const analysis::SweepAnalysis result = analysis::analyseSweep(dir);
+  const analysis::SweepAnalysis result = analysis::analyseSweep(dir, load);
   analysis::heatmapMetric(result, state);  // a bad --state fails before anything is written
   analysis::writeTables(result, out);
   analysis::writeFigures(result, out, state);

@@ -25,6 +25,12 @@ SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run w
 runs the built-in "demo". --set overrides any field by its dotted path, e.g.
 --set planner.horizon=1 or --set uavs.0.v_max=3. Bad input exits with code 2.
 
+run, validate, sweep and analyze also take --budget K and --allow-path DIR. A scenario is
+checked at load time against work limits (trees, steps, tracking, planning, record size; a
+sweep's configurations and trials) about a thousand times above the paper's scenarios;
+--budget K multiplies every limit by K. Layout includes and track files are read only from
+the scenario's folder tree and the scenario library; --allow-path DIR allows another folder.
+
 --frames writes DIR/frames/frame_NNNNNN.png (NNNNNN = step) every K steps (default 1) at WxH px
 (default 800 px along the longer side); --video also assembles DIR/frames.mp4 when ffmpeg is
 on PATH. `canopy coverage` prints, per step of a finished run, the rendered coverage of the AOI

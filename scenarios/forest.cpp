@@ -24,13 +24,28 @@ double drawRadius(const RadiusRange& range, RandomStream& rng) {
   return range.lo == range.hi ? range.lo : rng.uniform(range.lo, range.hi);
 }
 
+// Counts the points of one draw and throws ForestTooLarge past the limit.
+class DrawCounter {
+ public:
+  explicit DrawCounter(std::size_t limit) : limit_(limit) {}
+  void add(std::size_t n = 1) {
+    if (n > limit_ - count_) throw ForestTooLarge(limit_);
+    count_ += n;
+  }
+
+ private:
+  std::size_t limit_, count_ = 0;
+};
+
 // Homogeneous Poisson points on `box`: x-coordinates are the arrivals of a 1-D Poisson process
 // of rate λ · height (exponential gaps), y-coordinates uniform. Exact, and O(number of points).
 template <typename Emit>
-void poissonPoints(const Aabb& box, double lambda, RandomStream& rng, Emit emit) {
+void poissonPoints(const Aabb& box, double lambda, RandomStream& rng, DrawCounter& drawn,
+                   Emit emit) {
   const double rate = lambda * box.height();  // points per metre along x
   if (!(rate > 0.0)) return;
   for (double x = box.lo.x() + rng.exponential(rate); x < box.hi.x(); x += rng.exponential(rate)) {
+    drawn.add();
     emit(Vec2(x, rng.uniform(box.lo.y(), box.hi.y())));
   }
 }
@@ -90,11 +105,20 @@ double maternIIIntensity(double lambda, double radius, double min_gap) {
   return (1.0 - std::exp(-lambda * area)) / area;
 }
 
+Aabb poissonDrawRegion(const PoissonForestDef& def) {
+  return dilate(def.region, def.min_gap ? 2.0 * def.radius.hi + *def.min_gap : 0.0);
+}
+
+Aabb clusterParentRegion(const ClusterForestDef& def) {
+  // Parents beyond 5σ of the region contribute a negligible share of trees inside it.
+  return dilate(def.region, 5.0 * def.spread);
+}
+
 std::vector<world::TreeDef> poissonForest(const PoissonForestDef& def) {
   RandomStream rng(def.seed, "forest.poisson");
-  const double margin = def.min_gap ? 2.0 * def.radius.hi + *def.min_gap : 0.0;
+  DrawCounter drawn(def.max_points);
   std::vector<Candidate> points;
-  poissonPoints(dilate(def.region, margin), def.lambda, rng, [&](const Vec2& p) {
+  poissonPoints(poissonDrawRegion(def), def.lambda, rng, drawn, [&](const Vec2& p) {
     const double radius = drawRadius(def.radius, rng);
     points.push_back({p, radius, rng.uniform()});
   });
@@ -119,14 +143,14 @@ std::vector<world::TreeDef> gridForest(const GridForestDef& def) {
 
 std::vector<world::TreeDef> clusterForest(const ClusterForestDef& def) {
   RandomStream rng(def.seed, "forest.cluster");
-  // Parents beyond 5σ of the region contribute a negligible share of trees inside it.
-  const double margin = 5.0 * def.spread;
+  DrawCounter drawn(def.max_points);
   std::vector<Vec2> parents;
-  poissonPoints(dilate(def.region, margin), def.parent_lambda, rng,
+  poissonPoints(clusterParentRegion(def), def.parent_lambda, rng, drawn,
                 [&](const Vec2& p) { parents.push_back(p); });
   std::vector<Candidate> points;
   for (const Vec2& parent : parents) {
     const int n = rng.poisson(def.mean_trees);
+    drawn.add(static_cast<std::size_t>(std::max(n, 0)));
     for (int k = 0; k < n; ++k) {
       const Vec2 centre = parent + def.spread * Vec2(rng.normal(), rng.normal());
       const double radius = drawRadius(def.radius, rng);

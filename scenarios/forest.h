@@ -1,14 +1,26 @@
 #pragma once
 // Occluder layout generators: Poisson forests, rows and grids, clustered forests. Each is a pure
 // function of its definition (and its own seed), so a layout is the same in every trial.
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "core/types.h"
 #include "world/tree.h"
 
 namespace canopy::scenarios {
+
+/// Thrown by a generator whose random draw exceeds its `max_points` (points drawn, counting
+/// candidates later thinned or dropped and cluster parents): a bound on every draw, not only on
+/// the expected count.
+struct ForestTooLarge : std::length_error {
+  explicit ForestTooLarge(std::size_t limit)
+      : std::length_error("forest draw exceeds its limit"), max_points(limit) {}
+  std::size_t max_points;
+};
 
 /// Crown radii drawn uniformly from [lo, hi] (lo == hi: a fixed radius).
 struct RadiusRange {
@@ -28,6 +40,7 @@ struct PoissonForestDef {
   RadiusRange radius;
   std::uint64_t seed = 1;
   std::optional<double> min_gap;  // m, crown edge to crown edge
+  std::size_t max_points = std::numeric_limits<std::size_t>::max();
 };
 
 /// rows × cols trees: centre(r, c) = origin + Rot(angle) · (c · spacing.x, r · spacing.y), plus
@@ -54,11 +67,17 @@ struct ClusterForestDef {
   RadiusRange radius;
   std::uint64_t seed = 1;
   std::optional<double> min_gap;  // m
+  std::size_t max_points = std::numeric_limits<std::size_t>::max();
 };
 
 std::vector<world::TreeDef> poissonForest(const PoissonForestDef& def);
 std::vector<world::TreeDef> gridForest(const GridForestDef& def);
 std::vector<world::TreeDef> clusterForest(const ClusterForestDef& def);
+
+/// The region a generator draws its points from: `region` dilated by the interaction distance
+/// (Poisson with min_gap: 2 r_max + min_gap) or by 5σ (cluster parents).
+Aabb poissonDrawRegion(const PoissonForestDef& def);
+Aabb clusterParentRegion(const ClusterForestDef& def);
 
 /// Matérn II retained intensity for equal radii: (1 − exp(−λ π D²)) / (π D²), D = 2 r + gap.
 double maternIIIntensity(double lambda, double radius, double min_gap);

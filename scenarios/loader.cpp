@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "scenarios/budget.h"
 #include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
 
@@ -67,8 +68,9 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   ScenarioSpec spec;
   spec.file = file;
   Json effective = Json::object();
-  const internal::FileAccess access = internal::fileAccessFor(file, options.allowed_roots);
-  ObjectReader root = Field(document, file, "", &effective, &access).object();
+  internal::LoadContext context = internal::loadContextFor(file, options.allowed_roots);
+  context.budget_scale = options.budget_scale;
+  ObjectReader root = Field(document, file, "", &effective, &context).object();
 
   spec.name = root.string("name", fs::path(file).stem().string());
   spec.description = root.string("description", "");
@@ -100,6 +102,7 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   internal::readPlanner(root, spec);
   internal::readAnalysis(root, spec);
   root.finish();
+  checkWork(spec, options.budget_scale);
 
   spec.effective_config = effective.dump(2);
   return spec;
@@ -153,8 +156,8 @@ std::vector<world::TreeDef> loadLayout(const std::string& path) {
   Json effective = Json::array();
   std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(path)).string()};
   const Aabb everywhere{Vec2::Constant(-1e9), Vec2::Constant(1e9)};
-  const internal::FileAccess access = internal::fileAccessFor(path, {});
-  internal::readOccluders(Field(list, path, "occluders", nullptr, &access), everywhere, trees,
+  const internal::LoadContext context = internal::loadContextFor(path, {});
+  internal::readOccluders(Field(list, path, "occluders", nullptr, &context), everywhere, trees,
                           effective, include_stack);
   return trees;
 }

@@ -5,11 +5,14 @@
 #include <bit>
 #include <cctype>
 #include <cstdio>
+#include <map>
+#include <set>
 #include <mutex>
 #include <thread>
 
 #include "core/random.h"
 #include "core/text_file.h"
+#include "scenarios/budget.h"
 #include "scenarios/internal/json_reader.h"
 
 namespace canopy::scenarios {
@@ -32,13 +35,70 @@ std::string slug(const std::string& path, const std::string& value) {
   return text;
 }
 
+// The hexadecimal FNV-1a of `text`, for ids and fingerprints.
+std::string hexHash(const std::string& text, int digits) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(text)));
+  return std::string(hex).substr(16 - digits);
+}
+
+// A value's part of a directory name stays short; a long one is cut and keeps a hash of itself.
+std::string boundedSlug(const std::string& path, const std::string& value) {
+  constexpr std::size_t kMaxSlug = 60;
+  std::string text = slug(path, value);
+  if (text.size() > kMaxSlug) text = text.substr(0, kMaxSlug - 9) + "~" + hexHash(value, 8);
+  return text;
+}
+
+// Each axis once, each of its values once (as JSON values: 1 and 1.0 are the same value).
+void requireDistinct(const Field& axes, const std::vector<SweepAxis>& read) {
+  // A read-only view (no effective-config slot): the fields were recorded when first read.
+  const std::vector<Field> axis_fields = Field(axes.json(), axes.file(), axes.path(), nullptr).elements();
+  for (std::size_t a = 0; a < read.size(); ++a) {
+    for (std::size_t b = 0; b < a; ++b) {
+      if (read[a].path == read[b].path) {
+        axis_fields[a].fail("expected each axis once, \"" + read[a].path +
+                            "\" is also axes[" + std::to_string(b) + "]");
+      }
+    }
+    const Field values = axis_fields[a].object().required("values");
+    const std::vector<Field> value_fields = values.elements();
+    for (std::size_t i = 0; i < value_fields.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (value_fields[i].json() == value_fields[j].json()) {
+          value_fields[i].fail("expected each value once on an axis, this one repeats values[" +
+                               std::to_string(j) + "]");
+        }
+      }
+    }
+  }
+}
+
+void requireFeasibleSweep(const Field& root, const SweepSpec& sweep) {
+  const WorkLimits limits = workLimits(sweep.load.budget_scale);
+  double configurations = 1.0;
+  for (const SweepAxis& axis : sweep.axes) configurations *= static_cast<double>(axis.values.size());
+  if (configurations > limits.sweep_configurations) {
+    throw ScenarioError(root.file(), "axes",
+                        budgetMessage(configurations, limits.sweep_configurations,
+                                      "configurations (the product of the axes' lengths)"));
+  }
+  if (configurations * sweep.trials > limits.sweep_trials) {
+    throw ScenarioError(root.file(), "trials",
+                        budgetMessage(configurations * sweep.trials, limits.sweep_trials,
+                                      "trials (configurations × trials)"));
+  }
+}
+
 }  // namespace
 
-SweepSpec loadSweepText(const std::string& text, const std::string& file) {
+SweepSpec loadSweepText(const std::string& text, const std::string& file,
+                        const LoadOptions& load) {
   Json document = internal::parseJson(text, file);
   Json effective = Json::object();
   ObjectReader root = Field(document, file, "", &effective).object();
   SweepSpec sweep;
+  sweep.load = load;
   sweep.name = root.string("name", fs::path(file).stem().string());
   const std::string scenario = root.required("scenario").string();
   // A file beside the sweep, else a path or library name as given; stored resolved so that
@@ -98,15 +158,17 @@ SweepSpec loadSweepText(const std::string& text, const std::string& file) {
       axis_reader.finish();
       sweep.axes.push_back(std::move(axis));
     }
+    requireDistinct(*axes, sweep.axes);
   }
   root.finish();
+  requireFeasibleSweep(root.field(), sweep);
   effective["seed"] = sweep.seed;
   sweep.effective_json = effective.dump(2);
   return sweep;
 }
 
-SweepSpec loadSweep(const std::string& path) {
-  return loadSweepText(internal::readJsonFile(path).dump(), path);
+SweepSpec loadSweep(const std::string& path, const LoadOptions& load) {
+  return loadSweepText(internal::readJsonFile(path).dump(), path, load);
 }
 
 SweepSpec withTrialsAndSeed(SweepSpec sweep, int trials, std::uint64_t seed) {
@@ -125,7 +187,7 @@ std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
       for (std::size_t v = 0; v < axis.values.size(); ++v) {
         const std::string& value = axis.values[v];
         SweepConfig point = config;
-        point.id += (point.id.empty() ? "" : "_") + slug(axis.path, value);
+        point.id += (point.id.empty() ? "" : "_") + boundedSlug(axis.path, value);
         point.point.push_back(axis.path + "=" + value);
         if (axis.set.empty()) {
           point.overrides.push_back(axis.path + "=" + value);
@@ -138,6 +200,20 @@ std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
     configs = std::move(next);
   }
   if (configs.size() == 1 && configs.front().id.empty()) configs.front().id = "base";
+  // Readable ids can coincide ("a b" and "a_b" both read a_b): those get a hash of their point.
+  std::map<std::string, int> uses;
+  for (const SweepConfig& config : configs) ++uses[config.id];
+  for (SweepConfig& config : configs) {
+    if (uses[config.id] < 2) continue;
+    std::string point;
+    for (const std::string& p : config.point) point += p + "\n";
+    config.id += "~" + hexHash(point, 8);
+  }
+  std::set<std::string> ids;
+  for (const SweepConfig& config : configs) {
+    if (!ids.insert(config.id).second)  // two points whose hashes also coincide
+      throw ScenarioError(sweep.name, "axes", "two configurations share the id " + config.id);
+  }
   return configs;
 }
 
@@ -154,26 +230,35 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
 int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   const std::vector<SweepConfig> configs = configurations(sweep);
   std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
-  for (const SweepConfig& config : configs)
-    specs.push_back(loadScenario(sweep.scenario, {.overrides = config.overrides}));
+  double trees = 0.0;               // held in memory for the whole sweep
+  for (const SweepConfig& config : configs) {
+    LoadOptions load = sweep.load;
+    load.overrides = config.overrides;
+    specs.push_back(loadScenario(sweep.scenario, load));
+    trees += static_cast<double>(specs.back().trees.size());
+  }
+  if (const double limit = workLimits(sweep.load.budget_scale).trees; trees > limit) {
+    throw ScenarioError(sweep.name, "axes",
+                        budgetMessage(trees, limit, "trees over all configurations together"));
+  }
 
+  // A directory with no finished trial holds nothing to protect: a corrected sweep replaces it.
+  std::error_code error;
+  const bool has_trials = fs::exists(options.out_dir / "trials", error) &&
+                          !fs::is_empty(options.out_dir / "trials", error);
   const fs::path manifest = options.out_dir / "sweep.json";
-  if (fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
+  if (has_trials && fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
     throw ScenarioError(manifest.string(), "",
                         "this directory holds a different sweep; choose another --out");
   }
   // The same sweep text over a changed scenario file (or changed defaults) would resume on
   // trials of another scenario: each configuration's effective scenario is fingerprinted.
   Json fingerprints = Json::object();
-  for (std::size_t c = 0; c < configs.size(); ++c) {
-    char hex[17];
-    std::snprintf(hex, sizeof hex, "%016llx",
-                  static_cast<unsigned long long>(fnv1a64(specs[c].effective_config)));
-    fingerprints[configs[c].id] = hex;
-  }
+  for (std::size_t c = 0; c < configs.size(); ++c)
+    fingerprints[configs[c].id] = hexHash(specs[c].effective_config, 16);
   const fs::path scenarios_file = options.out_dir / "scenarios.json";
   const std::string fingerprint_text = fingerprints.dump(2) + "\n";
-  if (fs::exists(scenarios_file) && readTextFile(scenarios_file) != fingerprint_text) {
+  if (has_trials && fs::exists(scenarios_file) && readTextFile(scenarios_file) != fingerprint_text) {
     throw ScenarioError(scenarios_file.string(), "",
                         "the scenario behind this sweep has changed since its trials ran (a "
                         "configuration's effective scenario differs); choose another --out or "
@@ -233,13 +318,13 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   return static_cast<int>(todo.size());
 }
 
-SweepResults loadSweepResults(const fs::path& out_dir) {
+SweepResults loadSweepResults(const fs::path& out_dir, const LoadOptions& load) {
   SweepResults results;
   const fs::path manifest = out_dir / "sweep.json";
   if (!fs::is_regular_file(manifest)) {
     throw ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
   }
-  results.sweep = loadSweepText(readTextFile(manifest).value_or(""), manifest.string());
+  results.sweep = loadSweepText(readTextFile(manifest).value_or(""), manifest.string(), load);
   results.configs = configurations(results.sweep);
   for (const SweepConfig& config : results.configs) {
     std::vector<TrialResult> trials;

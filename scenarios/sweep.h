@@ -32,18 +32,28 @@ struct SweepSpec {
   std::vector<std::string> fixed;  // "path=value" overrides applied to every configuration
   std::vector<SweepAxis> axes;     // the Cartesian product of their values
   std::string effective_json;      // the sweep as read, for DIR/sweep.json
+  /// How each configuration's scenario is loaded (allowed folders, work budget): a choice of the
+  /// command line, not part of the sweep's identity or of DIR/sweep.json.
+  LoadOptions load;
 };
 
 /// One point of the Cartesian product.
 struct SweepConfig {
-  std::string id;                      // e.g. "algorithm-sma_horizon-5" (a directory name)
+  /// A directory name, e.g. "algorithm-sma_horizon-5": each axis's last path component and its
+  /// value, characters unsafe in a file name as '_'. Where two points would get the same name
+  /// (values "a b" and "a_b"), each of them gets "~" and a hash of its exact point as well, so
+  /// ids are unique whatever the values.
+  std::string id;
   std::vector<std::string> overrides;  // fixed, then this point's axis values
   std::vector<std::string> point;      // per axis "path-or-name=value", in axis order
 };
 
-/// Reads and validates a sweep file (ScenarioError: file, field, expectation).
-SweepSpec loadSweep(const std::string& path);
-SweepSpec loadSweepText(const std::string& text, const std::string& file);
+/// Reads and validates a sweep file (ScenarioError: file, field, expectation): axes unique, no
+/// value twice on an axis, and the number of configurations and trials within the work budget
+/// (scenarios/budget.h, scaled by load.budget_scale) before any configuration is built.
+SweepSpec loadSweep(const std::string& path, const LoadOptions& load = {});
+SweepSpec loadSweepText(const std::string& text, const std::string& file,
+                        const LoadOptions& load = {});
 
 /// The same sweep with another number of trials per configuration and another seed (its
 /// effective text says so too, so that DIR/sweep.json matches what runs).
@@ -68,7 +78,8 @@ struct SweepOptions {
 /// Runs every missing trial, then writes DIR/summary.json (summariseSweep); returns the number of
 /// trials it ran. Every configuration is loaded (and so validated) before anything is written.
 /// DIR/sweep.json holds the sweep and DIR/scenarios.json a fingerprint (FNV-1a of the effective
-/// scenario) per configuration; resuming into a directory where either differs throws.
+/// scenario) per configuration; resuming into a directory where either differs throws, unless
+/// the directory holds no finished trial yet (then the new sweep replaces the old).
 int runSweep(const SweepSpec& sweep, const SweepOptions& options);
 
 /// Where trial `index` of configuration `config_id` lives under a sweep directory.
@@ -81,7 +92,7 @@ struct SweepResults {
   std::vector<SweepConfig> configs;
   std::vector<std::vector<TrialResult>> trials;  // [config][trial]
 };
-SweepResults loadSweepResults(const std::filesystem::path& out_dir);
+SweepResults loadSweepResults(const std::filesystem::path& out_dir, const LoadOptions& load = {});
 
 /// summary.json of a sweep directory: per configuration its overrides, the trials finished, and
 /// means over trials and steps of OSPA (m), Σ tr(P_pos) (m²) and the fraction of targets visible

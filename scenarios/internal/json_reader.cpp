@@ -227,7 +227,7 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
   fields.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     fields.emplace_back((*value_)[i], file_, path_ + "[" + std::to_string(i) + "]",
-                        out_ ? &(*out_)[i] : nullptr, access_);
+                        out_ ? &(*out_)[i] : nullptr, context_);
   }
   return fields;
 }
@@ -259,7 +259,7 @@ std::optional<Field> ObjectReader::optional(const std::string& key) {
   if (!has(key)) return std::nullopt;
   Json* slot = field_.out() ? &(*field_.out())[key] : nullptr;  // std::map: address is stable
   return Field(field_.json().at(key), field_.file(), joinPath(field_.path(), key), slot,
-               field_.access());
+               field_.context());
 }
 
 void ObjectReader::recordDefault(const std::string& key, const Json& value) {

@@ -33,10 +33,12 @@ enum class Bound { any, positive, non_negative, probability, open_probability, u
 
 class ObjectReader;
 
-/// Where the files a scenario names (includes, track CSVs) may be read from: canonical folders
-/// (the scenario's own folder, the scenario library, and any the user allowed).
-struct FileAccess {
+/// What every field of one load shares: where the files a scenario names (includes, track CSVs)
+/// may be read from, as canonical folders (the scenario's own folder, the scenario library, and
+/// any the user allowed), and the factor on the work limits of scenarios/budget.h.
+struct LoadContext {
   std::vector<std::filesystem::path> roots;
+  double budget_scale = 1.0;
 };
 
 /// A value at a known place: its file, its field path, and the slot of the effective config it
@@ -44,14 +46,18 @@ struct FileAccess {
 class Field {
  public:
   Field(const Json& value, std::string file, std::string path, Json* out,
-        const FileAccess* access = nullptr)
-      : value_(&value), file_(std::move(file)), path_(std::move(path)), out_(out), access_(access) {}
+        const LoadContext* context = nullptr)
+      : value_(&value),
+        file_(std::move(file)),
+        path_(std::move(path)),
+        out_(out),
+        context_(context) {}
 
   const Json& json() const { return *value_; }
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
   Json* out() const { return out_; }  // this value's slot in the effective config (may be null)
-  const FileAccess* access() const { return access_; }  // null: nothing may be read through it
+  const LoadContext* context() const { return context_; }  // null: no file may be read through it
   [[noreturn]] void fail(const std::string& message) const;
 
   double number(Bound bound = Bound::any) const;
@@ -73,7 +79,7 @@ class Field {
   std::string file_;
   std::string path_;
   Json* out_;
-  const FileAccess* access_;
+  const LoadContext* context_;
 };
 
 /// Reads the members of one JSON object.

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "scenarios/budget.h"
 #include "scenarios/forest.h"
 #include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
@@ -13,7 +14,6 @@ namespace canopy::scenarios::internal {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr double kMaxGeneratedTrees = 2e6;  // refuse layouts that would take minutes to build
 constexpr int kMaxIncludeDepth = 16;
 constexpr double kMinPolygonEdge = 0.05;  // m; Box2D welds vertices closer than its linear slop
 
@@ -50,12 +50,26 @@ std::optional<double> readMinGap(ObjectReader& reader) {
   return std::nullopt;
 }
 
-void requireFeasibleCount(const Field& field, double expected_trees) {
-  if (expected_trees > kMaxGeneratedTrees) {
-    std::ostringstream text;
-    text << "expected a layout of at most " << static_cast<long>(kMaxGeneratedTrees)
-         << " trees, this one would make about " << static_cast<long>(expected_trees);
-    field.fail(text.str());
+double treeLimit(const Field& field) {
+  return workLimits(field.context() ? field.context()->budget_scale : 1.0).trees;
+}
+
+// The expected number of points a generator draws (before thinning or clipping), against the
+// limit; and the limit handed to the generator, which bounds each draw as well.
+std::size_t requireFeasibleCount(const Field& field, double expected_points, const char* what) {
+  const double limit = treeLimit(field);
+  if (!(expected_points <= limit)) field.fail(budgetMessage(expected_points, limit, what));
+  return static_cast<std::size_t>(limit);
+}
+
+template <typename Generate>
+auto drawBounded(const Field& field, Generate generate) {
+  try {
+    return generate();
+  } catch (const ForestTooLarge& e) {
+    field.fail("expected a layout of at most " + std::to_string(e.max_points) +
+               " drawn points, this seed's draw made more (the expected count is within the "
+               "limit, this draw is not); change the seed or raise the limit with --budget K");
   }
 }
 
@@ -105,8 +119,10 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     def.radius = readRadius(reader.required("radius"));
     def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
     def.min_gap = readMinGap(reader);
-    requireFeasibleCount(field, def.lambda * def.region.area());
-    const auto trees = poissonForest(def);
+    def.max_points = requireFeasibleCount(field, def.lambda * poissonDrawRegion(def).area(),
+                                          "trees drawn (λ × the region dilated by 2 r_max + "
+                                          "min_gap)");
+    const auto trees = drawBounded(field, [&] { return poissonForest(def); });
     out.insert(out.end(), trees.begin(), trees.end());
   } else if (type == "grid") {
     GridForestDef def;
@@ -118,7 +134,7 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     def.radius = readRadius(reader.required("radius"));
     def.jitter = reader.number("jitter", 0.0, Bound::non_negative);
     def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
-    requireFeasibleCount(field, static_cast<double>(def.rows) * def.cols);
+    requireFeasibleCount(field, static_cast<double>(def.rows) * def.cols, "trees (rows × cols)");
     const auto trees = gridForest(def);
     requireCentresInside(field, trees, aoi);
     out.insert(out.end(), trees.begin(), trees.end());
@@ -131,11 +147,13 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     def.radius = readRadius(reader.required("radius"));
     def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
     def.min_gap = readMinGap(reader);
-    const double margin = 5.0 * def.spread;
-    const double dilated_area =
-        (def.region.width() + 2 * margin) * (def.region.height() + 2 * margin);
-    requireFeasibleCount(field, def.parent_lambda * def.mean_trees * dilated_area);
-    const auto trees = clusterForest(def);
+    const double parents = def.parent_lambda * clusterParentRegion(def).area();
+    requireFeasibleCount(reader.required("parent_lambda"), parents,
+                         "cluster parents (parent_lambda × the region dilated by 5 spread)");
+    requireFeasibleCount(reader.required("mean_trees"), def.mean_trees, "trees per cluster");
+    def.max_points = requireFeasibleCount(field, parents * (1.0 + def.mean_trees),
+                                          "points drawn (parents × (1 + mean_trees))");
+    const auto trees = drawBounded(field, [&] { return clusterForest(def); });
     out.insert(out.end(), trees.begin(), trees.end());
   }
 }
@@ -146,7 +164,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
                    Json& effective, std::vector<std::string>& include_stack) {
   for (const Field& element : list.elements()) {
     Json element_out = Json::object();
-    const Field item(element.json(), element.file(), element.path(), &element_out, element.access());
+    const Field item(element.json(), element.file(), element.path(), &element_out, element.context());
     ObjectReader reader = item.object();
     if (reader.has("include")) {
       const Field name_field = reader.required("include");
@@ -172,7 +190,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
         const Json& inner = wrapped ? document.at("occluders") : document;
         include_stack.push_back(canonical);
         readOccluders(Field(inner, file.path.string(), wrapped ? "occluders" : "", nullptr,
-                            name_field.access()),
+                            name_field.context()),
                       aoi, trees, effective, include_stack);
         include_stack.pop_back();
       } catch (const ScenarioError& e) {

@@ -68,19 +68,19 @@ std::optional<std::string> readRegularFile(const fs::path& path, std::size_t max
   return text;
 }
 
-FileAccess fileAccessFor(const fs::path& scenario_file, const std::vector<fs::path>& allowed) {
-  FileAccess access;
+LoadContext loadContextFor(const fs::path& scenario_file, const std::vector<fs::path>& allowed) {
+  LoadContext context;
   fs::path folder = fs::path(scenario_file).parent_path();
   if (folder.empty()) folder = ".";
   for (const fs::path& root : {folder, libraryDir()}) {
     if (fs::path canonical = canonicalOrEmpty(root); !canonical.empty())
-      access.roots.push_back(canonical);
+      context.roots.push_back(canonical);
   }
   for (const fs::path& root : allowed) {
     if (fs::path canonical = canonicalOrEmpty(root); !canonical.empty())
-      access.roots.push_back(canonical);
+      context.roots.push_back(canonical);
   }
-  return access;
+  return context;
 }
 
 ReferencedFile readReferencedFile(const Field& field, const std::string& what,
@@ -96,9 +96,9 @@ ReferencedFile readReferencedFile(const Field& field, const std::string& what,
   }
   ReferencedFile file{canonicalOrEmpty(path), printable(path.string(), 200), {}};
   if (file.path.empty()) field.fail("cannot resolve the " + what + " '" + file.shown + "'");
-  const FileAccess* access = field.access();
+  const LoadContext* context = field.context();
   bool allowed = false;
-  for (const fs::path& root : access ? access->roots : std::vector<fs::path>{})
+  for (const fs::path& root : context ? context->roots : std::vector<fs::path>{})
     allowed = allowed || isInside(file.path, root);
   if (!allowed) {
     field.fail("the " + what + " '" + file.shown +

@@ -1,7 +1,7 @@
 #pragma once
 // Private to scenarios/: reading a file that a scenario names (a layout include, a track CSV).
 // The name resolves against the naming file's folder; the file must lie inside one of the
-// field's FileAccess roots (symbolic links resolved first), be a regular file (not a FIFO, a
+// field's LoadContext roots (symbolic links resolved first), be a regular file (not a FIFO, a
 // device or a folder) and hold at most kMaxReferencedBytes. Every refusal names the field.
 #include <cstddef>
 #include <filesystem>
@@ -30,8 +30,8 @@ ReferencedFile readReferencedFile(const Field& field, const std::string& what,
 std::optional<std::string> readRegularFile(const std::filesystem::path& path,
                                            std::size_t max_bytes, std::string& why);
 
-/// The FileAccess of a scenario file: its own folder, the scenario library, and `allowed`.
-FileAccess fileAccessFor(const std::filesystem::path& scenario_file,
+/// The LoadContext of a scenario file: its own folder, the scenario library, and `allowed`.
+LoadContext loadContextFor(const std::filesystem::path& scenario_file,
                          const std::vector<std::filesystem::path>& allowed);
 
 }  // namespace canopy::scenarios::internal

@@ -27,7 +27,7 @@ TEST(PoissonForest, CountIsPoissonWithMeanLambdaTimesArea) {
   const int seeds = 30;
   for (int s = 0; s < seeds; ++s) {
     const auto trees =
-        poissonForest({region, lambda, {1.0, 2.0}, static_cast<std::uint64_t>(s), std::nullopt});
+        poissonForest({region, lambda, {1.0, 2.0}, static_cast<std::uint64_t>(s), std::nullopt, SIZE_MAX});
     for (const auto& tree : trees) {
       ASSERT_TRUE(region.contains(tree.centre));
       ASSERT_GE(tree.radius, 1.0);
@@ -43,7 +43,7 @@ TEST(PoissonForest, CountIsPoissonWithMeanLambdaTimesArea) {
 
 TEST(PoissonForest, PointsAreSpatiallyUniform) {
   const Aabb region{Vec2(0, 0), Vec2(100, 100)};
-  const auto trees = poissonForest({region, 0.5, {0.1, 0.1}, 3, std::nullopt});  // ~5000
+  const auto trees = poissonForest({region, 0.5, {0.1, 0.1}, 3, std::nullopt, SIZE_MAX});  // ~5000
   int left = 0, bottom = 0;
   for (const auto& tree : trees) {
     left += tree.centre.x() < 50.0;

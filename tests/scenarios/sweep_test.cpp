@@ -58,7 +58,7 @@ TEST(Sweep, TheExampleSweepFileLoadsAsTwoTimesTwoConfigurations) {
             (std::vector<std::string>{"fusion.method=\"ci\"", "planner.algorithm=\"sma\"",
                                       "planner.horizon=5"}));
   for (const SweepConfig& config : configs) {  // every configuration is a valid scenario
-    EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt})) << config.id;
+    EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt, {}, 1.0})) << config.id;
   }
 }
 
@@ -76,7 +76,7 @@ TEST(Sweep, ANamedAxisSetsItsGroupOfPathsForEachValue) {
   EXPECT_EQ(configs[1].overrides,
             (std::vector<std::string>{"clock.duration=5", "uavs.0.v_max=4", "planner.horizon=1"}));
   EXPECT_EQ(configs[1].point, (std::vector<std::string>{"spread=4", "planner.horizon=1"}));
-  const ScenarioSpec spec = loadScenario(sweep.scenario, {configs[1].overrides, std::nullopt});
+  const ScenarioSpec spec = loadScenario(sweep.scenario, {configs[1].overrides, std::nullopt, {}, 1.0});
   EXPECT_EQ(spec.duration, 5.0);
 }
 
@@ -111,7 +111,7 @@ TEST(Sweep, TheSensitivityStudiesLoadWithEveryConfigurationValid) {
         loadSweep(std::string(CANOPY_SOURCE_DIR "/scenarios/sweeps/") + name + ".json");
     ASSERT_GE(sweep.axes.size(), 2u) << name;
     for (const SweepConfig& config : configurations(sweep)) {
-      EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt})) << config.id;
+      EXPECT_NO_THROW(loadScenario(sweep.scenario, {config.overrides, std::nullopt, {}, 1.0})) << config.id;
     }
   }
 }
