@@ -6,6 +6,7 @@
 namespace canopy::agents {
 namespace {
 constexpr int kMaxCells = 1 << 20;  // bounds the index's memory for sparse, wide maps
+constexpr int kMaxSide = 1 << 12;   // cells along either side, so a thin map stays bounded too
 }
 
 OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move(trees)) {
@@ -18,8 +19,10 @@ OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move
     bounds_.hi = bounds_.hi.cwiseMax(box.hi);
     max_extent = std::max({max_extent, box.width(), box.height()});
   }
-  // Cells about one crown wide keep a lookup to a handful of trees.
-  cell_ = std::max({max_extent, 1e-3, std::sqrt(bounds_.area() / kMaxCells)});
+  // Cells about one crown wide keep a lookup to a handful of trees; sparse or thin maps get
+  // wider cells, so that cols · rows ≤ kMaxSide² and ≈ kMaxCells at most (the index's memory).
+  cell_ = std::max({max_extent, 1e-3, std::sqrt(bounds_.area() / kMaxCells),
+                    bounds_.width() / kMaxSide, bounds_.height() / kMaxSide});
   cols_ = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell_)));
   rows_ = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell_)));
 

@@ -57,21 +57,20 @@ bool satisfies(double x, Bound bound) {
 
 }  // namespace
 
-Json parseJson(const std::string& text, const std::string& file) {
-  // The parser itself is iterative, but printing and destroying a value recurse on its depth:
-  // refuse deep nesting while parsing, before any of it is built.
-  bool too_deep = false;
-  const Json::parser_callback_t limit_depth = [&too_deep](int depth, Json::parse_event_t event,
-                                                          Json&) {
+Json parseBoundedJson(const std::string& text) {
+  const Json::parser_callback_t limit_depth = [](int depth, Json::parse_event_t event, Json&) {
     if (depth > kMaxJsonDepth && (event == Json::parse_event_t::object_start ||
                                   event == Json::parse_event_t::array_start)) {
-      too_deep = true;
-      throw std::length_error("too deep");
+      throw JsonTooDeep();
     }
     return true;
   };
+  return Json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+}
+
+Json parseJson(const std::string& text, const std::string& file) {
   try {
-    return Json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    return parseBoundedJson(text);
   } catch (const Json::parse_error& e) {
     // e.what(): "[json.exception.parse_error.101] parse error at line L, column C: detail"
     std::string detail = e.what();
@@ -90,8 +89,7 @@ Json parseJson(const std::string& text, const std::string& file) {
     if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
     throw ScenarioError(file, "",
                         "invalid JSON: " + printable(detail, 200) + " (numbers must be finite)");
-  } catch (const std::length_error&) {
-    if (!too_deep) throw;
+  } catch (const JsonTooDeep&) {
     throw ScenarioError(file, "",
                         "expected JSON nested at most " + std::to_string(kMaxJsonDepth) +
                             " levels deep (arrays and objects), this file nests deeper");

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,16 @@ using Json = nlohmann::json;
 
 constexpr int kMaxJsonDepth = 64;                         // nested arrays and objects
 constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
+
+/// Thrown by parseBoundedJson for input nested deeper than kMaxJsonDepth.
+struct JsonTooDeep : std::length_error {
+  JsonTooDeep() : std::length_error("JSON nested too deep") {}
+};
+
+/// The JSON library's parse (comments allowed), refusing nesting deeper than kMaxJsonDepth before
+/// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; the library's
+/// own exceptions for anything else.
+Json parseBoundedJson(const std::string& text);
 
 /// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError naming file:line:column.
 Json parseJson(const std::string& text, const std::string& file);

@@ -172,7 +172,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
       const ReferencedFile file = readReferencedFile(name_field, "layout file", libraryDir());
       const std::string canonical = file.path.string();
       if (std::find(include_stack.begin(), include_stack.end(), canonical) != include_stack.end()) {
-        name_field.fail("include cycle: '" + file.shown + "' is already being read");
+        name_field.fail("include cycle: " + file.quoted + " is already being read");
       }
       if (static_cast<int>(include_stack.size()) > kMaxIncludeDepth) {
         name_field.fail("includes nested more than 16 deep");

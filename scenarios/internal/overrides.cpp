@@ -15,7 +15,11 @@ void applyOverride(Json& document, const std::string& assignment) {
   const std::string text = assignment.substr(equals + 1);
   Json value;
   try {
-    value = Json::parse(text);  // numbers, booleans, null, arrays, objects, "quoted strings"
+    value = parseBoundedJson(text);  // numbers, booleans, null, arrays, objects, "quoted strings"
+  } catch (const JsonTooDeep&) {
+    throw ScenarioError("--set", key,
+                        "expected a value nested at most " + std::to_string(kMaxJsonDepth) +
+                            " levels deep (arrays and objects)");
   } catch (const Json::parse_error&) {
     value = text;  // a bare word: a string (e.g. planner.algorithm=sma)
   } catch (const Json::exception& e) {

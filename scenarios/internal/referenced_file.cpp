@@ -94,20 +94,24 @@ ReferencedFile readReferencedFile(const Field& field, const std::string& what,
     if (!fallback_dir.empty() && !fs::exists(path, error) && fs::exists(fallback_dir / name, error))
       path = fallback_dir / name;
   }
-  ReferencedFile file{canonicalOrEmpty(path), printable(path.string(), 200), {}};
-  if (file.path.empty()) field.fail("cannot resolve the " + what + " '" + file.shown + "'");
+  ReferencedFile file{canonicalOrEmpty(path), printable(path.string(), 200), {}, {}};
+  file.quoted = "'" + file.shown + "'";
+  if (file.path.empty()) field.fail("cannot resolve the " + what + " " + file.quoted);
+  std::error_code error;
+  if (file.path != fs::absolute(path, error).lexically_normal())  // through a link
+    file.quoted += " (a link to '" + printable(file.path.string(), 200) + "')";
   const LoadContext* context = field.context();
   bool allowed = false;
   for (const fs::path& root : context ? context->roots : std::vector<fs::path>{})
     allowed = allowed || isInside(file.path, root);
   if (!allowed) {
-    field.fail("the " + what + " '" + file.shown +
-               "' lies outside the scenario's folder and the scenario library "
+    field.fail("the " + what + " " + file.quoted +
+               " lies outside the scenario's folder and the scenario library "
                "(--allow-path DIR allows another folder)");
   }
   std::string why;
   std::optional<std::string> text = readRegularFile(file.path, kMaxReferencedBytes, why);
-  if (!text) field.fail("cannot read the " + what + " '" + file.shown + "': " + why);
+  if (!text) field.fail("cannot read the " + what + " " + file.quoted + ": " + why);
   file.text = std::move(*text);
   return file;
 }

@@ -16,7 +16,8 @@ constexpr std::size_t kMaxReferencedBytes = std::size_t{64} << 20;  // 64 MiB
 
 struct ReferencedFile {
   std::filesystem::path path;  // canonical
-  std::string shown;           // the path as messages show it (printable)
+  std::string shown;           // the path as named, for messages (printable)
+  std::string quoted;          // 'shown', and where it leads when that is through a link
   std::string text;
 };
 
