@@ -10,7 +10,7 @@ namespace {
 
 std::string roughly(double x) {
   char text[32];
-  std::snprintf(text, sizeof text, x < 1e6 ? "%.0f" : "%.1e", x);
+  std::snprintf(text, sizeof text, x < 1e6 ? "%.6g" : "%.1e", x);
   return text;
 }
 

@@ -31,6 +31,13 @@ std::string base(
   return R"({"aoi": [0, 0, 100, 50], "uavs": )" + uavs + R"(, "targets": )" + targets + rest + "}";
 }
 
+// 256 UAVs in a row, for the tracking-work case.
+std::string manyUavs() {
+  std::string list = "[";
+  for (int i = 0; i < 256; ++i) list += (i ? ", " : "") + std::string(R"({"start": [10, 10]})");
+  return list + "]";
+}
+
 // clang-format off: one case per line reads as a table.
 const std::vector<Case>& cases() {
   static const std::vector<Case> table = {
@@ -131,6 +138,42 @@ const std::vector<Case>& cases() {
        base("[{\"start\": [10, 10]}]", "[]",
             R"(, "occluders": [{"type": "poisson", "lambda": 1000, "radius": 1}])"),
        {"occluders[0]: expected at most 2.0e+06 trees drawn", "asks for about 5.0e+06"}},  // 1000 × 100 × 50
+      // Work budget (scenarios/budget.h): each estimate by hand in the comment.
+      {"PoissonGapDilatesTheDrawRegion",  // λ 1 × (100 + 2·1002) × (50 + 2·1002) = 4.3e6
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "poisson", "lambda": 1, "radius": 1, "min_gap": 1000}])"),
+       {"occluders[0]: expected at most 2.0e+06 trees drawn", "asks for about 4.3e+06"}},
+      {"PoissonWideRadiusDilatesTheDrawRegion",  // 0.01 × (100 + 2·10000) × (50 + 2·10000) = 4.0e6
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "poisson", "lambda": 0.01, "radius": [1, 5000], "min_gap": 0}])"),
+       {"occluders[0]: expected at most 2.0e+06 trees drawn", "asks for about 4.0e+06"}},
+      {"ClusterHugeMeanTrees",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "cluster", "parent_lambda": 1e-9, "mean_trees": 1e9, "spread": 1, "radius": 1}])"),
+       {"occluders[0].mean_trees: expected at most 2.0e+06 trees per cluster", "about 1.0e+09"}},
+      {"ClusterHugeParents",  // 1000 × (100 + 10) × (50 + 10) = 6.6e6
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "cluster", "parent_lambda": 1000, "mean_trees": 0, "spread": 1, "radius": 1}])"),
+       {"occluders[0].parent_lambda: expected at most 2.0e+06 cluster parents", "about 6.6e+06"}},
+      // Expected 0.5 parents × 1.5e6 trees, within the limit; seed 18 draws two parents (P ≈ 9 %).
+      {"ClusterDrawBeyondItsExpectation",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "occluders": [{"type": "cluster", "parent_lambda": 7.5758e-5, "mean_trees": 1500000, "spread": 1, "radius": 0.1, "seed": 18}])"),
+       {"occluders[0]: expected a layout of at most 2000000 drawn points", "this seed's draw"}},
+      {"PlannerThatWouldRunForDays",
+       base("[{\"start\": [10, 10]}]", "[]",
+            R"(, "planner": {"algorithm": "sma", "horizon": 50, "pso": {"particles_per_step": 10000, "max_iterations": 1000000}})"),
+       {"planner.pso: expected at most 2.0e+11 planning units"}},
+      // 5001 steps × 256 UAVs × (2² + 10⁷) = 1.3e13
+      {"TrackingHypothesesTimesUavsTimesSteps",
+       base(manyUavs(), R"([{"path": {"start": [20, 20], "velocity": [0, 0]}}, {"path": {"start": [30, 20], "velocity": [0, 0]}}])",
+            R"(, "clock": {"dt": 0.2, "duration": 1000}, "tracking": {"max_hypotheses": 10000000})"),
+       {"tracking.max_hypotheses: expected at most 2.0e+11 tracking units", "about 1.3e+13"}},
+      // 10⁷ + 1 steps × 1 UAV × (1000 + 600 × 1 target) = 1.6e10 bytes
+      {"RecordTooLargeForTheDisk",
+       base("[{\"start\": [10, 10]}]", R"([{"path": {"start": [20, 20], "velocity": [0, 0]}}])",
+            R"(, "clock": {"dt": 0.01, "duration": 100000})"),
+       {"clock.duration: expected at most 4.0e+09 bytes of record.jsonl", "about 1.6e+10"}},
       {"MissingInclude",
        base("[{\"start\": [10, 10]}]", "[]", R"(, "occluders": [{"include": "none.json"}])"),
        {"occluders[0].include: cannot read the layout file", "none.json': No such file"}},

@@ -1,0 +1,88 @@
+// Hostile sweep files through the command line: ids that could collide, repeated values, axis
+// products too large to build, and a corrected file in the folder of a refused one.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "tests/app/cli.h"
+
+namespace {
+namespace fs = std::filesystem;
+using canopy::cli_test::fresh;
+using canopy::cli_test::run;
+
+// A two-second demo: one trial takes a fraction of a second.
+void writeSweep(const fs::path& file, const std::string& axes, int trials = 1) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << R"({"name": "hostile", "scenario": "demo", "trials": )" << trials
+                      << R"(, "set": {"clock.duration": 2}, "axes": )" << axes << "}";
+}
+
+std::set<std::string> configDirs(const fs::path& out) {
+  std::set<std::string> dirs;
+  for (const auto& entry : fs::directory_iterator(out / "trials")) dirs.insert(entry.path().filename());
+  return dirs;
+}
+
+TEST(HostileSweep, ValuesWhoseNamesWouldCollideGetDistinctConfigurations) {
+  const fs::path dir = fresh("sweep_collide");
+  writeSweep(dir / "sweep.json", R"([{"path": "description", "values": ["a b", "a_b", "a/b"]}])");
+  ASSERT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 0);
+  const std::set<std::string> dirs = configDirs(dir / "out");
+  EXPECT_EQ(dirs.size(), 3u);  // one folder per value, each with its trial
+  for (const std::string& name : dirs) {
+    EXPECT_EQ(name.rfind("description-a_b~", 0), 0u) << name;  // the readable part, then a hash
+    EXPECT_TRUE(fs::exists(dir / "out" / "trials" / name / "trial_0000.json")) << name;
+  }
+}
+
+TEST(HostileSweep, ARepeatedValueIsRefusedNamingIt) {
+  const fs::path dir = fresh("sweep_repeat");
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [1, 5, 1.0]}])");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  writeSweep(dir / "twice.json", R"([{"path": "planner.horizon", "values": [1]},
+                                     {"path": "planner.horizon", "values": [5]}])");
+  EXPECT_EQ(run("sweep " + (dir / "twice.json").string() + " --out " + (dir / "out").string()), 2);
+}
+
+TEST(HostileSweep, AnAxisProductTooLargeIsRefusedBeforeItIsBuilt) {
+  const fs::path dir = fresh("sweep_product");
+  std::string axes = "[";
+  for (int a = 0; a < 10; ++a) {  // 10¹⁰ configurations
+    axes += (a ? ", " : "") + std::string(R"({"path": "x)") + std::to_string(a) +
+            R"(", "values": [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]})";
+  }
+  writeSweep(dir / "sweep.json", axes + "]");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // --budget scales the limit (10⁵ configurations): two configurations fit, not under 10⁻⁵ of it.
+  writeSweep(dir / "small.json", R"([{"path": "planner.horizon", "values": [1, 2]}])");
+  EXPECT_EQ(run("sweep " + (dir / "small.json").string() + " --budget 1e-5 --out " +
+                (dir / "out").string()),
+            2);
+  EXPECT_EQ(run("sweep " + (dir / "small.json").string() + " --budget 2e-5 --out " +
+                (dir / "out").string()),
+            0);
+}
+
+TEST(HostileSweep, ACorrectedSweepRunsInTheFolderOfTheRefusedOne) {
+  const fs::path dir = fresh("sweep_corrected");
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [1, 500]}])");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
+  EXPECT_FALSE(fs::exists(dir / "out" / "sweep.json"));
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [1, 5]}])");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 0);
+  // A folder that holds a sweep but no finished trial is not protected either.
+  fs::remove_all(dir / "out" / "trials");
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [2]}])");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 0);
+  // With finished trials, another sweep is still refused.
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [3]}])");
+  EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
+}
+
+}  // namespace
