@@ -4,7 +4,9 @@
 #include <chrono>
 #include <nlohmann/json.hpp>
 
+#include "core/printable.h"
 #include "scenarios/error.h"
+#include "scenarios/internal/json_reader.h"
 
 namespace canopy::scenarios {
 namespace {
@@ -102,7 +104,7 @@ std::string trialToJson(const TrialResult& trial) {
 TrialResult trialFromJson(const std::string& text, const std::string& file) {
   TrialResult trial;
   try {
-    const Json j = Json::parse(text);
+    const Json j = internal::parseBoundedJson(text);
     trial.scenario = j.at("scenario").get<std::string>();
     trial.config_id = j.at("config_id").get<std::string>();
     trial.seed = j.at("seed").get<std::uint64_t>();
@@ -117,7 +119,9 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
     trial.ospa = j.at("ospa").get<std::vector<double>>();
     trial.trace = j.at("trace").get<std::vector<double>>();
   } catch (const Json::exception& e) {
-    throw ScenarioError(file, "", std::string("not a trial result: ") + e.what());
+    throw ScenarioError(file, "", "not a trial result: " + printable(e.what(), 200));
+  } catch (const internal::JsonTooDeep&) {
+    throw ScenarioError(file, "", "not a trial result: nested too deep");
   }
   const std::size_t steps = trial.occluded.size();
   if (trial.visible.size() != steps || trial.in_footprint.size() != steps ||
