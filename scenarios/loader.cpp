@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "core/printable.h"
 #include "scenarios/budget.h"
 #include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
@@ -143,7 +144,11 @@ fs::path resolveScenario(const std::string& scenario) {
   for (const fs::path& candidate : {libraryDir() / scenario, libraryDir() / (scenario + ".json")}) {
     if (fs::is_regular_file(candidate, error)) return candidate;
   }
-  throw ScenarioError(scenario, "",
+  if (fs::exists(scenario, error)) {
+    throw ScenarioError(printable(scenario, 200), "",
+                        "not a regular file (expected a scenario JSON file or a built-in name)");
+  }
+  throw ScenarioError(printable(scenario, 200), "",
                       "no such scenario file, and no built-in scenario of that name "
                       "(see `canopy list`)");
 }
