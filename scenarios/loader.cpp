@@ -16,6 +16,8 @@ using internal::ObjectReader;
 
 namespace {
 
+constexpr double kMaxCoordinate = 1e7;  // m
+
 Aabb readAoi(ObjectReader& root) {
   const Field field = root.required("aoi");
   const std::vector<Field> v = field.elements(4, 4);
@@ -23,6 +25,9 @@ Aabb readAoi(ObjectReader& root) {
   if (!(aoi.hi.x() > aoi.lo.x() && aoi.hi.y() > aoi.lo.y())) {
     field.fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
   }
+  // Box2D holds positions in single precision: beyond 10⁷ m a step is coarser than a metre.
+  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate || aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
+    field.fail("expected an AOI within ±1e7 m of the origin (Box2D keeps positions as floats)");
   return aoi;
 }
 

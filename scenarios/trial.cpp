@@ -120,8 +120,8 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
     trial.trace = j.at("trace").get<std::vector<double>>();
   } catch (const Json::exception& e) {
     throw ScenarioError(file, "", "not a trial result: " + printable(e.what(), 200));
-  } catch (const internal::JsonTooDeep&) {
-    throw ScenarioError(file, "", "not a trial result: nested too deep");
+  } catch (const std::logic_error&) {  // JsonTooDeep, JsonDuplicateKey
+    throw ScenarioError(file, "", "not a trial result: nested too deep or a key twice");
   }
   const std::size_t steps = trial.occluded.size();
   if (trial.visible.size() != steps || trial.in_footprint.size() != steps ||

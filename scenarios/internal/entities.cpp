@@ -147,8 +147,10 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
       if (kind == "radius") {
         uav.sensor.footprint.shape = sensing::FootprintShape::disc;
         uav.sensor.footprint.radius = fov.required("radius").number(Bound::positive);
+        if (uav.sensor.footprint.radius > 1e7) fov.required("radius").fail("expected at most 1e7 m");
       } else if (kind == "size") {
         uav.sensor.footprint.size = fov.required("size").vec2(Bound::positive);
+        if (uav.sensor.footprint.size.maxCoeff() > 2e7) fov.required("size").fail("expected at most 2e7 m a side");
       } else {
         fov_field->fail("expected {\"size\": [w, h]} or {\"radius\": r}");
       }

@@ -58,14 +58,29 @@ bool satisfies(double x, Bound bound) {
 }  // namespace
 
 Json parseBoundedJson(const std::string& text) {
-  const Json::parser_callback_t limit_depth = [](int depth, Json::parse_event_t event, Json&) {
-    if (depth > kMaxJsonDepth && (event == Json::parse_event_t::object_start ||
-                                  event == Json::parse_event_t::array_start)) {
-      throw JsonTooDeep();
+  // The keys seen so far in each open object: a key given twice would silently keep the last.
+  std::vector<std::set<std::string>> keys;
+  const Json::parser_callback_t check = [&keys](int depth, Json::parse_event_t event,
+                                                Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        if (depth > kMaxJsonDepth) throw JsonTooDeep();
+        if (event == Json::parse_event_t::object_start) keys.emplace_back();
+        break;
+      case Json::parse_event_t::key:
+        if (!keys.empty() && !keys.back().insert(parsed.get<std::string>()).second)
+          throw JsonDuplicateKey(parsed.get<std::string>());
+        break;
+      case Json::parse_event_t::object_end:
+        if (!keys.empty()) keys.pop_back();
+        break;
+      default:
+        break;
     }
     return true;
   };
-  return Json::parse(text, limit_depth, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  return Json::parse(text, check, /*allow_exceptions=*/true, /*ignore_comments=*/true);
 }
 
 Json parseJson(const std::string& text, const std::string& file) {
@@ -89,6 +104,10 @@ Json parseJson(const std::string& text, const std::string& file) {
     if (bracket != std::string::npos) detail = detail.substr(bracket + 2);
     throw ScenarioError(file, "",
                         "invalid JSON: " + printable(detail, 200) + " (numbers must be finite)");
+  } catch (const JsonDuplicateKey& e) {
+    throw ScenarioError(file, "",
+                        "invalid JSON: the key \"" + printable(e.key, 60) +
+                            "\" appears twice in one object (only one value can count)");
   } catch (const JsonTooDeep&) {
     throw ScenarioError(file, "",
                         "expected JSON nested at most " + std::to_string(kMaxJsonDepth) +

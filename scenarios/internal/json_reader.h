@@ -26,9 +26,16 @@ struct JsonTooDeep : std::length_error {
   JsonTooDeep() : std::length_error("JSON nested too deep") {}
 };
 
+/// Thrown by parseBoundedJson for an object that gives a key twice.
+struct JsonDuplicateKey : std::invalid_argument {
+  explicit JsonDuplicateKey(std::string k)
+      : std::invalid_argument("duplicate JSON key"), key(std::move(k)) {}
+  std::string key;
+};
+
 /// The JSON library's parse (comments allowed), refusing nesting deeper than kMaxJsonDepth before
-/// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; the library's
-/// own exceptions for anything else.
+/// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; a key twice
+/// in one object: JsonDuplicateKey; the library's own exceptions for anything else.
 Json parseBoundedJson(const std::string& text);
 
 /// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError naming file:line:column.

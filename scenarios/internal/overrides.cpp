@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/printable.h"
 #include "scenarios/internal/sections.h"
 
 namespace canopy::scenarios::internal {
@@ -20,6 +21,9 @@ void applyOverride(Json& document, const std::string& assignment) {
     throw ScenarioError("--set", key,
                         "expected a value nested at most " + std::to_string(kMaxJsonDepth) +
                             " levels deep (arrays and objects)");
+  } catch (const JsonDuplicateKey& e) {
+    throw ScenarioError("--set", key,
+                        "the key \"" + printable(e.key, 60) + "\" appears twice in one object");
   } catch (const Json::parse_error&) {
     value = text;  // a bare word: a string (e.g. planner.algorithm=sma)
   } catch (const Json::exception& e) {

@@ -184,7 +184,9 @@ TEST(Sweep, RefusesToResumeWhenTheScenarioBehindItChanged) {
   EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 1);
   EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 0);  // resumes: nothing to do
   // The same sweep text, but the scenario file now says something else.
-  std::ofstream(scenario) << demo.substr(0, demo.rfind('}')) << R"(, "description": "changed"})";
+  std::string changed = demo;
+  changed.insert(changed.find("\"description\": \"") + 16, "changed: ");
+  std::ofstream(scenario) << changed;
   try {
     runSweep(loadSweepText(text, "s.json"), {out, 1, {}});
     FAIL() << "expected a ScenarioError";
