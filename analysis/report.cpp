@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/findings.h"
 #include "analysis/heatmap.h"
 #include "analysis/report_numbers.h"
 
@@ -23,61 +24,6 @@ std::string num(double x, const char* format = "%.2f") {
   return text;
 }
 
-// The value a configuration gives an axis or path, unquoted ("planner.horizon" → "5").
-std::string valueOf(const ConfigStatistics& s, const std::string& path) {
-  std::string v = s.axisValue(path);
-  if (v.size() >= 2 && v.front() == '"') v = v.substr(1, v.size() - 2);
-  return v;
-}
-
-const ExperimentResult* find(const std::vector<ExperimentResult>& results,
-                             const std::string& scenario) {
-  for (const ExperimentResult& r : results) {
-    if (r.experiment.scenario == scenario) return &r;
-  }
-  return nullptr;
-}
-
-const ConfigStatistics* config(const ExperimentResult& r, const std::string& path,
-                               const std::string& value, const std::string& path2 = "",
-                               const std::string& value2 = "") {
-  for (const ConfigStatistics& s : r.analysis.configs) {
-    if (valueOf(s, path) == value && (path2.empty() || valueOf(s, path2) == value2)) return &s;
-  }
-  return nullptr;
-}
-
-// Per trial, the fraction of the Sankey columns L/4 … L at which it is in M*; their mean over
-// trials (the mean over those columns of the fraction of trials in M*) says how early and how
-// often the team is in the cooperative state.
-Estimate cooperation(const ConfigStatistics& s) {
-  const auto m_star = std::find(s.states.begin(), s.states.end(), "M*") - s.states.begin();
-  std::vector<double> per_trial;
-  for (const std::array<int, 5>& columns : s.trial_states) {
-    int in = 0;
-    for (int c = 1; c < 5; ++c) in += columns[c] == m_star;
-    per_trial.push_back(in / 4.0);
-  }
-  Estimate e = meanOf(per_trial);
-  e.ci = clipped(e.ci, 0.0, 1.0);
-  return e;
-}
-
-const OcclusionStatistics* episode(const ConfigStatistics& s, int target) {
-  for (const OcclusionStatistics& o : s.occlusions) {
-    if (o.target == target) return &o;
-  }
-  return nullptr;
-}
-
-int targetIndex(const SweepAnalysis& a, const std::string& name) {
-  const auto& targets = a.specs.front().targets;
-  for (int t = 0; t < static_cast<int>(targets.size()); ++t) {
-    if (targets[t].name == name) return t;
-  }
-  return -1;
-}
-
 }  // namespace
 
 double meanOver(const std::vector<double>& curve, const Interval& hidden) {
@@ -87,11 +33,6 @@ double meanOver(const std::vector<double>& curve, const Interval& hidden) {
 }
 
 namespace {
-
-struct ReactionTimes {
-  std::string apriori, dynamic;  // "never", "1.6 s", or empty when Joint Effect was not run
-  double apriori_onset = 0.0;  // s, coverage of I first below 0.9 with the a-priori map (−1 never)
-};
 
 void writeHeader(std::ostream& md, const ReportContext& ctx) {
   md << "# canopy — reproduction of *Emergent Cooperative Behavior in Distributed Target Tracking "
@@ -126,47 +67,39 @@ void writeTrialWarnings(std::ostream& md, const std::vector<ExperimentResult>& r
 
 void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& results) {
   // The configuration, read from the first experiment's scenario (shared defaults).
-  if (!results.empty() && !results.front().analysis.specs.empty()) {
-    const scenarios::ScenarioSpec& spec = results.front().analysis.specs.front();
-    static const char* kFusion[] = {"consensus on information (CI)", "HCMCI", "observer average"};
-    md << "## Configuration\n\n";
-    md << "- Clock: dt " << spec.dt << " s, planning every " << spec.planner.plan_period
-       << " s from t = 0.\n";
-    md << "- Fusion: " << kFusion[static_cast<int>(spec.fusion.method)]
-       << ", L = " << spec.fusion.rounds
-       << " rounds, complete graph, no message loss. Trees are fused like targets: the dynamic map "
-          "is shared.\n";
-    md << "- Tracking: JPDAF, P_G " << spec.tracking.gate_probability << ", P_D "
-       << spec.tracking.p_detect << ", σ_a " << spec.tracking.sigma_a
-       << " m/s²; every target pre-seeded at its true start with P₀ = I.\n";
-    md << "- Planner: NBO with particle swarm (20·H particles, w 0.9, c1 0.5, c2 0.3, ftol 5e-4 "
-          "over 50 "
-          "iterations, at most "
-       << spec.planner.pso.max_iterations << " iterations, warm start); terminal penalty "
-       << (spec.planner.terminal_penalty ? "on, w = " + num(spec.planner.terminal_penalty_weight)
-                                         : "off")
-       << "; cost on tr(P_pos); γ = " << spec.planner.discount << ".\n";
-    md << "- Sensing: range-bearing noise α 0.3, r0 2 m, noise drawn from R itself "
-          "(truth_noise_scale "
-       << spec.sensing.truth_noise_scale << "), p_detect " << spec.sensing.p_detect
-       << ", no clutter.\n";
-    md << "- Seeds: trial i of every configuration uses the same seed (common random numbers), "
-          "derived from "
-          "the sweep seed; each trial's streams are named per purpose and agent.\n\n";
-  }
+  if (results.empty() || results.front().analysis.specs.empty()) return;
+  const scenarios::ScenarioSpec& spec = results.front().analysis.specs.front();
+  static const char* kFusion[] = {"consensus on information (CI)", "HCMCI", "observer average"};
+  const agents::FusionConfig& fusion = spec.fusion;
+  const agents::PsoConfig& pso = spec.planner.pso;
+  const sensing::SensorQuality& quality = spec.uavs.front().sensor.quality;
+  md << "## Configuration\n\n";
+  md << "- Clock: dt " << spec.dt << " s, planning every " << spec.planner.plan_period
+     << " s from t = 0.\n";
+  md << "- Fusion: " << kFusion[static_cast<int>(fusion.method)] << ", L = " << fusion.rounds
+     << " rounds, "
+     << (std::isfinite(fusion.comm_range) ? "links within " + num(fusion.comm_range, "%g") + " m"
+                                          : std::string("complete graph"))
+     << ", message loss " << num(fusion.comm_drop, "%g")
+     << ". Trees are fused like targets: the dynamic map is shared.\n";
+  md << "- Tracking: JPDAF, P_G " << spec.tracking.gate_probability << ", P_D "
+     << spec.tracking.p_detect << ", σ_a " << spec.tracking.sigma_a << " m/s²"
+     << (spec.tracking.preseed ? "; every target pre-seeded at its true start" : "") << ".\n";
+  md << "- Planner: NBO with particle swarm (" << pso.particles_per_step << "·H particles, w "
+     << pso.inertia << ", c1 " << pso.c1 << ", c2 " << pso.c2 << ", ftol " << pso.ftol
+     << " over " << pso.stall_iterations << " iterations, at most " << pso.max_iterations
+     << " iterations" << (pso.warm_start ? ", warm start" : "") << "); terminal penalty "
+     << (spec.planner.terminal_penalty ? "on, w = " + num(spec.planner.terminal_penalty_weight)
+                                       : "off")
+     << "; cost on " << (spec.planner.full_trace ? "tr(P)" : "tr(P_pos)")
+     << "; γ = " << spec.planner.discount << ".\n";
+  md << "- Sensing: range-bearing noise α " << quality.alpha << ", r0 " << quality.r0
+     << " m, noise drawn from R itself (truth_noise_scale " << spec.sensing.truth_noise_scale
+     << "), p_detect " << spec.sensing.p_detect << ", clutter "
+     << num(spec.sensing.clutter_rate, "%g") << " per scan.\n";
+  md << "- Seeds: trial i of every configuration uses the same seed (common random numbers), "
+        "derived from the sweep seed; each trial's streams are named per purpose and agent.\n\n";
 }
-
-// The planners of the TH and RA experiments (the sweep axis "planner", experiments.cpp).
-struct PlannerVariant {
-  const char* axis_value;  // the axis value
-  const char* algorithm;   // the paper's algorithm it stands for
-  const char* label;
-};
-constexpr PlannerVariant kPlanners[] = {
-    {"sma", "sma", "SMA-NBO"},
-    {"dec_pomdp", "dec_pomdp", "Dec-POMDP"},
-    {"dec_pomdp_blocks", "dec_pomdp", "Dec-POMDP, block search"},
-};
 
 void writeOwnershipRow(std::ostream& md, const PaperOwnership& paper, const char* label,
                        const ConfigStatistics& s) {
@@ -193,12 +126,12 @@ void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& resul
         "paper | paper inside? | M* at L (ours) | paper | paper inside? | note |\n";
   md << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
   for (const PaperOwnership& paper : paperOwnership()) {
-    const ExperimentResult* r = find(results, paper.scenario);
+    const ExperimentResult* r = findExperiment(results, paper.scenario);
     if (!r) continue;
     for (const PlannerVariant& planner : kPlanners) {
       if (planner.algorithm != paper.algorithm) continue;
-      const ConfigStatistics* s = config(*r, "planner", planner.axis_value, "planner.horizon",
-                                         std::to_string(paper.horizon));
+      const ConfigStatistics* s = findConfig(*r, "planner", planner.axis_value, "planner.horizon",
+                                             std::to_string(paper.horizon));
       if (s) writeOwnershipRow(md, paper, planner.label, *s);
     }
   }
@@ -230,7 +163,7 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
         md << "| " << r.experiment.scenario << " | "
            << r.analysis.specs.front().targets[o.target].name << " | "
            << num(o.hidden.first * s.dt, "%.1f") << "–" << num(o.hidden.last * s.dt, "%.1f")
-           << " s | " << valueOf(s, "planner.occlusion_map") << " | " << o.trials << " | "
+           << " s | " << axisText(s, "planner.occlusion_map") << " | " << o.trials << " | "
            << numberWithInterval(s.coverageOver(o.target, o.hidden)) << " | "
            << percentWithInterval(o.awareEstimate()) << " | "
            << (o.with_event ? percentWithInterval(o.awareGivenEventEstimate()) : "—") << " ("
@@ -246,132 +179,79 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
   }
 }
 
-ReactionTimes writeReaction(std::ostream& md, const std::vector<ExperimentResult>& results) {
+std::string seconds(const std::optional<double>& t) {
+  return t ? num(*t, "%.1f s") : "never";
+}
+
+void writeReaction(std::ostream& md, const Findings& findings) {
   // Reaction times in JE: when the coverage of I first drops below 0.9 and below 0.5.
   md << "### Reaction to the occlusion (Joint Effect, trajectory I)\n\n";
   md << "First time the mean coverage of I falls below 0.9 (the onset: a tenth of the trials have "
         "left I) and below 0.5 (half of them have); I is hidden from 2.2 s.\n\n";
   md << "| map | onset (ours) | half (ours) | paper |\n|---|---:|---:|---:|\n";
-  ReactionTimes reaction;
-  if (const ExperimentResult* je = find(results, "joint_effect")) {
-    const int I = targetIndex(je->analysis, "I");
-    for (const char* mode : {"a_priori", "dynamic", "none"}) {
-      const ConfigStatistics* s = config(*je, "planner.occlusion_map", mode);
-      if (!s || I < 0) continue;
-      const int k = firstBelow(s->coverage[I], 0.5), onset = firstBelow(s->coverage[I], 0.9);
-      const std::string when = k < 0 ? "never" : num(k * s->dt, "%.1f s");
-      md << "| " << mode << " | " << (onset < 0 ? "never" : num(onset * s->dt, "%.1f s")) << " | "
-         << when << " | "
-         << (std::string(mode) == "a_priori"  ? "≈ 1.6 s"
-             : std::string(mode) == "dynamic" ? "≈ 2.2 s"
-                                              : "keeps observing")
-         << " |\n";
-      if (std::string(mode) == "a_priori") {
-        reaction.apriori = when;
-        reaction.apriori_onset = onset < 0 ? -1.0 : onset * s->dt;
-      }
-      if (std::string(mode) == "dynamic") reaction.dynamic = when;
-    }
+  for (const ReactionRow& row : findings.reaction) {
+    md << "| " << row.map << " | " << seconds(row.onset_s) << " | " << seconds(row.half_s)
+       << " | "
+       << (row.map == "a_priori"  ? "≈ 1.6 s"
+           : row.map == "dynamic" ? "≈ 2.2 s"
+                                  : "keeps observing")
+       << " |\n";
   }
   md << "\n";
-  return reaction;
 }
 
-void writeHorizonFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
-  int pairs = 0, holds = 0;
-  std::ostringstream detail;
-  for (const char* scenario : {"trajectory_handover", "resource_allocation"}) {
-    const ExperimentResult* r = find(results, scenario);
-    if (!r) continue;
-    for (const PlannerVariant& planner : kPlanners) {
-      const char* algorithm = planner.label;
-      const ConfigStatistics* h1 =
-          config(*r, "planner", planner.axis_value, "planner.horizon", "1");
-      const ConfigStatistics* h5 =
-          config(*r, "planner", planner.axis_value, "planner.horizon", "5");
-      if (!h1 || !h5) continue;
-      ++pairs;
-      const Estimate c5 = cooperation(*h5), c1 = cooperation(*h1);
-      holds += c5.value > c1.value;
-      detail << "  - " << scenario << ", " << algorithm << ": mean M* frequency over L/4…L "
-             << percentWithInterval(c5) << " (H = 5) vs " << percentWithInterval(c1)
-             << " (H = 1)\n";
-    }
-  }
-  md << "1. **H = 5 is more cooperative than H = 1** — "
-     << (pairs && holds == pairs
-             ? "holds"
-             : "holds in " + std::to_string(holds) + " of " + std::to_string(pairs) + " cases")
-     << ":\n"
-     << detail.str() << "\n";
+// "holds", or "holds in k of n cases".
+template <typename Case>
+std::string verdict(const std::vector<Case>& cases) {
+  const auto holds = std::count_if(cases.begin(), cases.end(), [](const Case& c) { return c.holds(); });
+  if (!cases.empty() && holds == static_cast<long>(cases.size())) return "holds";
+  return "holds in " + std::to_string(holds) + " of " + std::to_string(cases.size()) + " cases";
 }
 
-void writeWastedCoverageFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
-  int wasted_cases = 0, wasted_holds = 0;
-  std::ostringstream wasted;
-  for (const char* scenario : {"joint_effect", "occlusion_sharing"}) {
-    const ExperimentResult* r = find(results, scenario);
-    if (!r) continue;
-    const ConfigStatistics* none = config(*r, "planner.occlusion_map", "none");
-    if (!none) continue;
-    for (const OcclusionStatistics& o : none->occlusions) {
-      const Estimate c_none = none->coverageOver(o.target, o.hidden);
-      for (const char* mode : {"a_priori", "dynamic"}) {
-        const ConfigStatistics* s = config(*r, "planner.occlusion_map", mode);
-        if (!s) continue;
-        const Estimate c = s->coverageOver(o.target, o.hidden);
-        ++wasted_cases;
-        wasted_holds += c.value < c_none.value;
-        wasted << "  - " << scenario << ", " << r->analysis.specs.front().targets[o.target].name
-               << ", " << mode << ": " << numberWithInterval(c) << " vs "
-               << numberWithInterval(c_none) << " with no map\n";
-      }
-    }
+void writeHorizonFinding(std::ostream& md, const Findings& findings) {
+  md << "1. **H = 5 is more cooperative than H = 1** — " << verdict(findings.horizon) << ":\n";
+  for (const HorizonCase& c : findings.horizon) {
+    md << "  - " << c.scenario << ", " << c.planner << ": mean M* frequency over L/4…L "
+       << percentWithInterval(c.h5) << " (H = 5) vs " << percentWithInterval(c.h1)
+       << " (H = 1)\n";
   }
+  md << "\n";
+}
+
+void writeWastedCoverageFinding(std::ostream& md, const Findings& findings) {
   md << "2. **A-priori and dynamic maps cut wasted coverage of occluded trajectories** — "
-     << (wasted_cases && wasted_holds == wasted_cases
-             ? "holds"
-             : "holds in " + std::to_string(wasted_holds) + " of " + std::to_string(wasted_cases) +
-                   " cases")
-     << ":\n"
-     << wasted.str() << "\n";
+     << verdict(findings.wasted) << ":\n";
+  for (const WastedCoverageCase& c : findings.wasted) {
+    md << "  - " << c.scenario << ", " << c.target << ", " << c.map << ": "
+       << numberWithInterval(c.with_map) << " vs " << numberWithInterval(c.without_map)
+       << " with no map\n";
+  }
+  md << "\n";
 }
 
-void writeCatchUpFinding(std::ostream& md, const std::vector<ExperimentResult>& results) {
-  if (const ExperimentResult* os = find(results, "occlusion_sharing")) {
-    const int III = targetIndex(os->analysis, "III");
-    const ConfigStatistics* apr = config(*os, "planner.occlusion_map", "a_priori");
-    const ConfigStatistics* dyn = config(*os, "planner.occlusion_map", "dynamic");
-    const ConfigStatistics* none = config(*os, "planner.occlusion_map", "none");
-    const OcclusionStatistics* hidden = apr && III >= 0 ? episode(*apr, III) : nullptr;
-    if (apr && dyn && none && hidden) {
-      const Estimate a = apr->coverageOver(III, hidden->hidden);
-      const Estimate d = dyn->coverageOver(III, hidden->hidden);
-      const Estimate n = none->coverageOver(III, hidden->hidden);
-      const double ca = a.value, cd = d.value, cn = n.value;
-      const bool catches_up = cn > ca && (cd - ca) <= 0.25 * (cn - ca);
-      md << "3. **The dynamic map catches up with the a-priori map on the second occlusion (III)** "
-            "— "
-         << (catches_up ? "holds" : "does not hold") << ": mean coverage of III while hidden "
-         << numberWithInterval(d) << " (dynamic) vs " << numberWithInterval(a) << " (a-priori) and "
-         << numberWithInterval(n)
-         << " (no map); the criterion is that the dynamic map closes at least 75 % of the gap "
-            "between no map and "
-            "the a-priori map.\n\n";
-    }
-  }
+void writeCatchUpFinding(std::ostream& md, const Findings& findings) {
+  if (!findings.catch_up) return;
+  const CatchUpFinding& c = *findings.catch_up;
+  md << "3. **The dynamic map catches up with the a-priori map on the second occlusion (III)** — "
+     << (c.holds() ? "holds" : "does not hold") << ": mean coverage of III while hidden "
+     << numberWithInterval(c.dynamic) << " (dynamic) vs " << numberWithInterval(c.a_priori)
+     << " (a-priori) and " << numberWithInterval(c.none)
+     << " (no map); the criterion is that the dynamic map closes at least 75 % of the gap "
+        "between no map and the a-priori map.\n\n";
 }
 
-void writeReactionOrderFinding(std::ostream& md, const ReactionTimes& reaction) {
-  if (!reaction.apriori.empty()) {
-    const bool both_leave = reaction.apriori != "never" && reaction.dynamic != "never";
-    md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
-       << (!both_leave                                                 ? "cannot be checked here"
-           : std::stod(reaction.dynamic) > std::stod(reaction.apriori) ? "holds"
-                                                                       : "does not hold")
-       << ": the first time the coverage of I falls below 0.5 is " << reaction.apriori
-       << " (a-priori map) and " << reaction.dynamic << " (dynamic map).\n\n";
+void writeReactionOrderFinding(std::ostream& md, const Findings& findings) {
+  if (findings.reaction.empty()) return;
+  std::optional<double> a_priori, dynamic;
+  for (const ReactionRow& row : findings.reaction) {
+    if (row.map == "a_priori") a_priori = row.half_s;
+    if (row.map == "dynamic") dynamic = row.half_s;
   }
+  const std::optional<bool> later = dynamicReactsLater(findings.reaction);
+  md << "4. **The dynamic map reacts later than the a-priori map** (Joint Effect) — "
+     << (!later ? "cannot be checked here" : *later ? "holds" : "does not hold")
+     << ": the first time the coverage of I falls below 0.5 is " << seconds(a_priori)
+     << " (a-priori map) and " << seconds(dynamic) << " (dynamic map).\n\n";
 }
 
 void writeDifferences(std::ostream& md) {
@@ -406,25 +286,10 @@ void writeDifferences(std::ostream& md) {
         "Dec-POMDP plans that were never applied and its truth noise drawn from 0.5·R.\n\n";
 }
 
-void writeWhyNot(std::ostream& md, const std::vector<ExperimentResult>& results,
-                 const ReactionTimes& reaction) {
+void writeWhyNot(std::ostream& md, const FailureSymptoms& f) {
   // Reasons we found for the findings that fail; each is written only while its symptom shows.
-  bool swarm_never = false;  // Dec-POMDP's single swarm never reaches M* in Resource Allocation
-  if (const ExperimentResult* ra = find(results, "resource_allocation")) {
-    const ConfigStatistics* s = config(*ra, "planner", "dec_pomdp", "planner.horizon", "5");
-    swarm_never = s && s->stateFraction("M*", 4) == 0.0;
-  }
-  const bool je_late = reaction.apriori_onset < 0 || reaction.apriori_onset >= 2.2;
-  bool os_unranked = false;  // the maps do not change the coverage of I during its 0.8 s occlusion
-  if (const ExperimentResult* os = find(results, "occlusion_sharing")) {
-    const int I = targetIndex(os->analysis, "I");
-    const ConfigStatistics* apr = config(*os, "planner.occlusion_map", "a_priori");
-    const ConfigStatistics* none = config(*os, "planner.occlusion_map", "none");
-    const OcclusionStatistics* hidden = apr && I >= 0 ? episode(*apr, I) : nullptr;
-    os_unranked = hidden && none &&
-                  meanOver(apr->coverage[I], hidden->hidden) >=
-                      meanOver(none->coverage[I], hidden->hidden) - 0.05;
-  }
+  const bool swarm_never = f.single_swarm_never, je_late = f.reaction_late,
+             os_unranked = f.first_occlusion_unranked;
   if (!swarm_never && !je_late && !os_unranked) return;
   md << "## Why some findings do not reproduce (what we found, not a certainty)\n\n";
   if (swarm_never) {
@@ -483,15 +348,16 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
   writeConfiguration(md, results);
   writeOwnership(md, results);
   writeOcclusion(md, results);
-  const ReactionTimes reaction = writeReaction(md, results);
+  const Findings findings = computeFindings(results);
+  writeReaction(md, findings);
   md << "## The paper's qualitative findings, checked\n\n";
-  writeHorizonFinding(md, results);
-  writeWastedCoverageFinding(md, results);
-  writeCatchUpFinding(md, results);
-  writeReactionOrderFinding(md, reaction);
+  writeHorizonFinding(md, findings);
+  writeWastedCoverageFinding(md, findings);
+  writeCatchUpFinding(md, findings);
+  writeReactionOrderFinding(md, findings);
   writeWhereItEmerges(md, studies);
   writeDifferences(md);
-  writeWhyNot(md, results, reaction);
+  writeWhyNot(md, findings.symptoms);
   return md.str();
 }
 

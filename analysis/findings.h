@@ -1,0 +1,89 @@
+#pragma once
+// The report's qualitative findings as values: each computed from the experiments into a small
+// struct with its numbers and its verdict, so that report.md only renders them (and tests check
+// the computation without reading prose).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/report.h"
+
+namespace canopy::analysis {
+
+/// Finding 1: a longer horizon is more cooperative. Per scenario and planner, the mean over
+/// trials of the fraction of the Sankey columns L/4 … L spent in M*, at H = 5 and H = 1.
+struct HorizonCase {
+  std::string scenario, planner;
+  Estimate h5, h1;
+  bool holds() const { return h5.value > h1.value; }
+};
+
+/// Finding 2: a map cuts the wasted coverage of an occluded trajectory (footprints on it while
+/// it is hidden), against no map.
+struct WastedCoverageCase {
+  std::string scenario, target, map;
+  Estimate with_map, without_map;
+  bool holds() const { return with_map.value < without_map.value; }
+};
+
+/// Finding 3 (Occlusion Sharing, III): the dynamic map closes at least 75 % of the gap between
+/// no map and the a-priori map.
+struct CatchUpFinding {
+  Estimate a_priori, dynamic, none;
+  bool holds() const {
+    return none.value > a_priori.value &&
+           dynamic.value - a_priori.value <= 0.25 * (none.value - a_priori.value);
+  }
+};
+
+/// Joint Effect's reaction to I hiding, per map: the first time the mean coverage of I is below
+/// 0.9 (onset) and below 0.5 (half); nothing when it never is.
+struct ReactionRow {
+  std::string map;
+  std::optional<double> onset_s, half_s;
+};
+
+/// Finding 4: the dynamic map reacts later than the a-priori map (half-way times); nothing when
+/// either map never gets there.
+std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows);
+
+/// Symptoms behind the findings that fail, each with the numbers that show it.
+struct FailureSymptoms {
+  bool single_swarm_never = false;  // Dec-POMDP, one swarm, H = 5: 0 trials in M* at L (RA)
+  bool reaction_late = false;       // JE: the a-priori onset is not before I hides (2.2 s)
+  bool first_occlusion_unranked = false;  // OS: a map cuts I's 0.8 s coverage by < 0.05
+};
+
+struct Findings {
+  std::vector<HorizonCase> horizon;
+  std::vector<WastedCoverageCase> wasted;
+  std::optional<CatchUpFinding> catch_up;
+  std::vector<ReactionRow> reaction;  // empty when Joint Effect was not run
+  FailureSymptoms symptoms;
+};
+
+Findings computeFindings(const std::vector<ExperimentResult>& results);
+
+// Lookups shared with report.cpp.
+const ExperimentResult* findExperiment(const std::vector<ExperimentResult>& results,
+                                       const std::string& scenario);
+/// The configuration whose value on `path` (and `path2`, when given) is as asked, unquoted.
+const ConfigStatistics* findConfig(const ExperimentResult& r, const std::string& path,
+                                   const std::string& value, const std::string& path2 = "",
+                                   const std::string& value2 = "");
+/// The value a configuration gives an axis or path, unquoted ("planner.horizon" → "5").
+std::string axisText(const ConfigStatistics& s, const std::string& path);
+
+/// The planners of the TH and RA experiments (the sweep axis "planner", experiments.cpp).
+struct PlannerVariant {
+  const char* axis_value;  // the axis value
+  const char* algorithm;   // the paper's algorithm it stands for
+  const char* label;
+};
+inline constexpr PlannerVariant kPlanners[] = {
+    {"sma", "sma", "SMA-NBO"},
+    {"dec_pomdp", "dec_pomdp", "Dec-POMDP"},
+    {"dec_pomdp_blocks", "dec_pomdp", "Dec-POMDP, block search"},
+};
+
+}  // namespace canopy::analysis
