@@ -2,7 +2,8 @@
 
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
+
+#include "core/output_file.h"
 
 namespace canopy {
 
@@ -16,18 +17,14 @@ std::optional<std::string> readTextFile(const std::filesystem::path& path) {
 }
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& text) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  if (path.has_parent_path()) {
+    std::error_code error;
+    std::filesystem::create_directories(path.parent_path(), error);
+    if (error) throw WriteError(path.parent_path(), error.message());
   }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+  AtomicFile file(path);
+  file.write(text);
+  file.commit();
 }
 
 }  // namespace canopy

@@ -9,9 +9,10 @@ namespace canopy {
 /// The file's bytes, or nothing when it cannot be opened or read.
 std::optional<std::string> readTextFile(const std::filesystem::path& path);
 
-/// Writes `text` to a temporary file beside `path` and renames it over `path`, so that a reader
-/// (or a process killed mid-write) never leaves a half-written file. Creates missing parent
-/// directories; throws std::runtime_error when it cannot write.
+/// Writes `text` to a new temporary file beside `path` and renames it over `path` (an AtomicFile,
+/// core/output_file.h), so that a reader never sees a half-written file and a link planted at
+/// `path` or at a temporary name is never followed. Creates missing parent directories; throws
+/// WriteError (a std::runtime_error) naming the file when it cannot write.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace canopy

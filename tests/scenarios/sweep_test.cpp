@@ -24,10 +24,11 @@ constexpr const char* kSweep = R"({
 })";
 
 // Every trial file of a sweep directory, by relative path.
+// The trial files, without the temporaries a killed writer leaves behind (never read back).
 std::map<std::string, std::string> trialFiles(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& entry : fs::recursive_directory_iterator(dir / "trials")) {
-    if (entry.is_regular_file())
+    if (entry.is_regular_file() && entry.path().extension() != ".tmp")
       files[fs::relative(entry.path(), dir).string()] = readTextFile(entry.path()).value();
   }
   return files;

@@ -1,0 +1,142 @@
+#include "core/output_file.h"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <set>
+
+#include "core/text_file.h"
+
+namespace canopy {
+namespace {
+
+namespace fs = std::filesystem;
+
+class OutputFile : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("canopy_output_file_" +
+            std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::set<std::string> names() const {
+    std::set<std::string> found;
+    for (const auto& entry : fs::directory_iterator(dir_))
+      found.insert(entry.path().filename().string());
+    return found;
+  }
+  fs::path dir_;
+};
+
+TEST_F(OutputFile, AppearsOnlyWhenCommitted) {
+  {
+    AtomicFile file(dir_ / "a.txt");
+    file.write("one ");
+    file.write(std::string(100000, 'x'));  // larger than the buffer
+    EXPECT_EQ(names().count("a.txt"), 0u);
+    file.commit();
+  }
+  EXPECT_EQ(names(), std::set<std::string>{"a.txt"});
+  EXPECT_EQ(readTextFile(dir_ / "a.txt")->size(), 4u + 100000u);
+}
+
+TEST_F(OutputFile, LeavesNothingWithoutCommit) {
+  writeFileAtomically(dir_ / "a.txt", "old");
+  {
+    AtomicFile file(dir_ / "a.txt");
+    file.write("new, never finished");
+  }
+  EXPECT_EQ(names(), std::set<std::string>{"a.txt"});
+  EXPECT_EQ(readTextFile(dir_ / "a.txt"), "old");
+}
+
+TEST_F(OutputFile, ReplacesALinkInsteadOfFollowingIt) {
+  std::ofstream(dir_ / "target") << "precious";
+  fs::create_symlink(dir_ / "target", dir_ / "a.txt");
+  fs::create_symlink(dir_ / "target", dir_ / "a.txt.tmp");  // the old fixed temporary name
+  writeFileAtomically(dir_ / "a.txt", "mine");
+  EXPECT_EQ(readTextFile(dir_ / "target"), "precious");
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir_ / "a.txt")));
+  EXPECT_EQ(readTextFile(dir_ / "a.txt"), "mine");
+}
+
+TEST_F(OutputFile, ADirectoryInTheWayIsAWriteErrorNamingTheFile) {
+  fs::create_directories(dir_ / "a.txt" / "inside");
+  try {
+    writeFileAtomically(dir_ / "a.txt", "text");
+    FAIL() << "no WriteError";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(e.path(), dir_ / "a.txt");
+    EXPECT_NE(std::string(e.what()).find("cannot write '" + (dir_ / "a.txt").string() + "'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(names(), std::set<std::string>{"a.txt"});  // no temporary left
+}
+
+// Files limited to 1000 bytes (RLIMIT_FSIZE, SIGXFSZ ignored): the write of 5000 fails with EFBIG,
+// as on a full disk. In a child process, so that the limit stays there.
+TEST_F(OutputFile, AFailedWriteThrowsAndRemovesTheTemporary) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{1000, 1000};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      writeFileAtomically(dir_ / "big.txt", std::string(5000, 'x'));
+    } catch (const WriteError& e) {
+      const std::string what = e.what();
+      ::_exit(what.find("big.txt': File too large") != std::string::npos ? 0 : 2);
+    }
+    ::_exit(1);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: no error, 2: wrong message";
+  EXPECT_EQ(names(), std::set<std::string>{});
+}
+
+TEST_F(OutputFile, DirectoriesBelowTheRootAreNeverLinks) {
+  fs::create_directories(dir_ / "elsewhere");
+  fs::create_directory_symlink(dir_ / "elsewhere", dir_ / "root");  // the user's own link: fine
+  makeOutputDirectories(dir_ / "root" / "a" / "b", dir_ / "root");
+  EXPECT_TRUE(fs::is_directory(dir_ / "elsewhere" / "a" / "b"));
+
+  fs::create_directory_symlink(dir_ / "elsewhere", dir_ / "root" / "a" / "planted");
+  EXPECT_THROW(makeOutputDirectories(dir_ / "root" / "a" / "planted" / "c", dir_ / "root"),
+               WriteError);
+  EXPECT_THROW(checkOutputDirectories(dir_ / "root" / "a" / "planted", dir_ / "root"), WriteError);
+  EXPECT_FALSE(fs::exists(dir_ / "elsewhere" / "c"));
+  std::ofstream(dir_ / "root" / "file") << "x";
+  EXPECT_THROW(makeOutputDirectories(dir_ / "root" / "file" / "d", dir_ / "root"), WriteError);
+  EXPECT_THROW(makeOutputDirectories(dir_ / "outside", dir_ / "root"), WriteError);
+  checkOutputDirectories(dir_ / "root" / "new" / "deeper", dir_ / "root");  // absent is fine
+  EXPECT_FALSE(fs::exists(dir_ / "root" / "new"));
+}
+
+TEST(SafeFileName, IsOneComponentThatCannotLeaveItsDirectory) {
+  EXPECT_EQ(safeFileName("occlusion_sharing"), "occlusion_sharing");
+  EXPECT_EQ(safeFileName("demo-2.v1"), "demo-2.v1");
+  EXPECT_EQ(safeFileName("../../x"), "_._.._x");
+  EXPECT_EQ(safeFileName(".."), "_.");
+  EXPECT_EQ(safeFileName("."), "_");
+  EXPECT_EQ(safeFileName(""), "_");
+  EXPECT_EQ(safeFileName("a/b"), "a_b");
+  EXPECT_EQ(safeFileName("/etc"), "_etc");
+  EXPECT_EQ(safeFileName("\x1b[2J"), "__2J");
+  EXPECT_EQ(safeFileName("Ålesund"), "__lesund");  // two bytes of UTF-8, two '_'
+  EXPECT_EQ(safeFileName(std::string(300, 'a')), std::string(kMaxSafeFileName, 'a'));
+}
+
+}  // namespace
+}  // namespace canopy
