@@ -33,7 +33,26 @@ std::size_t utf8Length(std::string_view text, std::size_t i) {
   return n;
 }
 
+// U+0080..U+009F (C2 80..C2 9F): the C1 controls, which some terminals obey (U+009B is CSI).
+bool isC1Control(std::string_view text, std::size_t i) {
+  return static_cast<unsigned char>(text[i]) == 0xC2 &&
+         static_cast<unsigned char>(text[i + 1]) <= 0x9F;
+}
+
 }  // namespace
+
+bool isValidUtf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    if (static_cast<unsigned char>(text[i]) < 0x80) {
+      ++i;
+    } else if (const std::size_t n = utf8Length(text, i); n > 0) {
+      i += n;
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
 
 std::string printable(std::string_view text, std::size_t max_chars) {
   const bool cut = text.size() > max_chars;
@@ -51,7 +70,8 @@ std::string printable(std::string_view text, std::size_t max_chars) {
       out += "\\t", ++i;
     } else if (c == '\r') {
       out += "\\r", ++i;
-    } else if (const std::size_t n = c >= 0x80 ? utf8Length(text, i) : 0; n > 0) {
+    } else if (const std::size_t n = c >= 0x80 ? utf8Length(text, i) : 0;
+               n > 0 && !isC1Control(text, i)) {
       out.append(text.substr(i, n));
       i += n;
     } else {

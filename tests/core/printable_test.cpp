@@ -18,10 +18,28 @@ TEST(Printable, ControlCharactersAreEscaped) {
 
 TEST(Printable, ValidUtf8PassesAndInvalidBytesAreEscaped) {
   EXPECT_EQ(printable("Ålesund τ 🌲"), "Ålesund τ 🌲");
-  EXPECT_EQ(printable("\xC3"), "\\xC3");              // a lead byte without its continuation
-  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");     // overlong '/'
+  EXPECT_EQ(printable("\xC3"), "\\xC3");                    // a lead byte without its continuation
+  EXPECT_EQ(printable("\xC0\xAF"), "\\xC0\\xAF");           // overlong '/'
   EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");  // a UTF-16 surrogate, U+D800
   EXPECT_EQ(printable("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // above U+10FFFF
+}
+
+TEST(Printable, C1ControlsAreEscapedThoughValidUtf8) {
+  EXPECT_EQ(printable("\xC2\x9B"
+                      "2J"),
+            "\\xC2\\x9B2J");                       // U+009B, CSI in some terminals
+  EXPECT_EQ(printable("\xC2\x85"), "\\xC2\\x85");  // U+0085, next line
+  EXPECT_EQ(printable("\xC2\xA0"), "\xC2\xA0");    // U+00A0 is not a control: kept
+}
+
+TEST(Printable, ValidUtf8IsRecognised) {
+  EXPECT_TRUE(isValidUtf8(""));
+  EXPECT_TRUE(isValidUtf8("Ålesund τ 🌲"));
+  EXPECT_TRUE(isValidUtf8(std::string("nul\0", 4)));  // controls are valid UTF-8
+  EXPECT_FALSE(isValidUtf8("bad\xFF"));
+  EXPECT_FALSE(isValidUtf8("\xC3"));
+  EXPECT_FALSE(isValidUtf8("\xC0\xAF"));
+  EXPECT_FALSE(isValidUtf8("\xED\xA0\x80"));
 }
 
 TEST(Printable, LongTextIsCut) {
