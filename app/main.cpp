@@ -1,9 +1,15 @@
 // canopy: the command line. Thin: parses, calls the libraries, prints.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <filesystem>
+#include <new>
 #include <string>
 
 #include "app/commands.h"
+#include "core/output_file.h"
+#include "core/printable.h"
 #include "scenarios/error.h"
 
 namespace {
@@ -23,7 +29,8 @@ usage:
 
 SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run without one
 runs the built-in "demo". --set overrides any field by its dotted path, e.g.
---set planner.horizon=1 or --set uavs.0.v_max=3. Bad input exits with code 2.
+--set planner.horizon=1 or --set uavs.0.v_max=3. Bad input exits with code 2, a failed write
+with code 1 (and leaves no partial result).
 
 run, validate, sweep and analyze also take --budget K and --allow-path DIR. A scenario is
 checked at load time against work limits (trees, steps, tracking, planning, record size; a
@@ -39,36 +46,66 @@ as CSV: step, t, covered_px, multi_px, aoi_px, covered_fraction, then 0/1 per ta
 trials in state NAME at L (default M*, or the hidden coverage for occlusion scenarios).
 )";
 
+using namespace canopy::app;
+
+int dispatch(const std::string& command, Args& args) {
+  if (command == "run") return runCommand(args);
+  if (command == "validate") return validateCommand(args);
+  if (command == "list") return listCommand(args);
+  if (command == "forest") return forestCommand(args);
+  if (command == "coverage") return coverageCommand(args);
+  if (command == "sweep") return sweepCommand(args);
+  if (command == "analyze") return analyzeCommand(args);
+  if (command == "reproduce") return reproduceCommand(args);
+  if (command == "help" || command == "--help" || command == "-h") {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  }
+  std::fprintf(stderr, "canopy: unknown command '%s'\n\n%s",
+               canopy::printable(command, 100).c_str(), kUsage);
+  return kExitUsage;
+}
+
+// Every message may quote the user's text (names, paths, values): shown through printable().
+void report(const std::string& message) {
+  std::fprintf(stderr, "canopy: %s\n", canopy::printable(message).c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace canopy::app;
   if (argc < 2) {
     std::fputs(kUsage, stderr);
     return kExitUsage;
   }
-  const std::string command = argv[1];
   Args args(argc, argv, 2);
+  int code = kExitFailure;
   try {
-    if (command == "run") return runCommand(args);
-    if (command == "validate") return validateCommand(args);
-    if (command == "list") return listCommand(args);
-    if (command == "forest") return forestCommand(args);
-    if (command == "coverage") return coverageCommand(args);
-    if (command == "sweep") return sweepCommand(args);
-    if (command == "analyze") return analyzeCommand(args);
-    if (command == "reproduce") return reproduceCommand(args);
-    if (command == "help" || command == "--help" || command == "-h") {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    }
-    std::fprintf(stderr, "canopy: unknown command '%s'\n\n%s", command.c_str(), kUsage);
-    return kExitUsage;
+    code = dispatch(argv[1], args);
   } catch (const canopy::scenarios::ScenarioError& e) {
-    std::fprintf(stderr, "canopy: %s\n", e.what());
+    report(e.what());
     return kExitUsage;
+  } catch (const canopy::WriteError& e) {
+    report(e.what());
+    return kExitFailure;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Not e.what(), the library's own wording: the path and the system's reason.
+    report("cannot access '" + e.path1().string() + "': " + e.code().message());
+    return kExitFailure;
+  } catch (const std::bad_alloc&) {
+    report("out of memory");
+    return kExitFailure;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "canopy: error: %s\n", e.what());
+    report(std::string("error: ") + e.what());
     return kExitFailure;
   }
+  // Results printed on stdout are output too: a full disk or a closed pipe must not exit 0.
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (!flushed || std::ferror(stdout)) {
+    report(std::string("cannot write the standard output: ") +
+           (flushed ? "a write failed" : std::strerror(error)));
+    return code == kExitOk ? kExitFailure : code;
+  }
+  return code;
 }

@@ -230,6 +230,37 @@ const std::vector<Case>& cases() {
        {"planner.horizon: expected an integer in [1, 50], got the string \"abc\""},
        {},
        "--set planner.horizon=abc"},
+      {"ControlCharactersInAName",
+       base(R"([{"name": "\u001b[2J", "start": [1, 1]}, {"name": "\u001b[2J", "start": [2, 2]}])"),
+       {"uavs[1].name: expected a unique UAV name, got \"\\x1B[2J\" twice"}},
+      {"InvalidUtf8InAName",
+       base(std::string(R"([{"name": "bad)") + "\xFF" + R"(", "start": [1, 1]}])"),
+       {"invalid JSON", "ill-formed UTF-8"}},
+      {"OverrideIndexBeyondEveryInteger",
+       base(),
+       {"--set: uavs.99999999999999999999999.v_max: 'uavs' is an array of 1 elements; expected an "
+        "index below that, got '99999999999999999999999'"},
+       {},
+       "--set uavs.99999999999999999999999.v_max=3",
+       false},
+      {"OverrideNotUtf8",
+       base(),
+       {"--set: name=bad\\xFF: expected UTF-8 text"},
+       {},
+       "--set 'name=bad\xFF'",
+       false},
+      {"OverrideNumberOverflow",
+       base(),
+       {"--set: uavs.0.v_max: expected a finite value, got '1e999'"},
+       {},
+       "--set uavs.0.v_max=1e999",
+       false},
+      {"OverrideNestedTooDeep",
+       base(),
+       {"--set: description: expected a value nested at most 64 levels deep"},
+       {},
+       "--set 'description=" + std::string(100, '[') + std::string(100, ']') + "'",
+       false},
   };
   return table;
 }
@@ -276,6 +307,14 @@ TEST_P(MalformedScenario, ExitsWithCode2AndNamesFileFieldAndExpectation) {
   for (const std::string& fragment : c.expected) {
     EXPECT_NE(outcome.output.find(fragment), std::string::npos)
         << "missing \"" << fragment << "\" in: " << outcome.output;
+  }
+  // In the program's own words, and every byte of it safe for a terminal.
+  for (const char* library : {"json.exception", "stoull", "filesystem error"}) {
+    EXPECT_EQ(outcome.output.find(library), std::string::npos) << outcome.output;
+  }
+  for (const char ch : outcome.output) {
+    const auto byte = static_cast<unsigned char>(ch);
+    EXPECT_TRUE((byte >= 0x20 && byte != 0x7F) || byte == '\n') << "raw byte " << int(byte);
   }
 }
 
