@@ -1,7 +1,6 @@
 #include "scenarios/recorder.h"
 
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
 namespace canopy::scenarios {
 namespace {
@@ -114,23 +113,24 @@ std::string recordLine(const Simulation& sim) {
   return line.dump();
 }
 
-Recorder::Recorder(const std::string& dir)
-    : record_(dir + "/record.jsonl", std::ios::binary | std::ios::trunc),
-      timings_(dir + "/timings.jsonl", std::ios::binary | std::ios::trunc) {
-  if (!record_ || !timings_) throw std::runtime_error("cannot write the records in " + dir);
-}
+Recorder::Recorder(const std::filesystem::path& dir)
+    : record_(dir / "record.jsonl"), timings_(dir / "timings.jsonl") {}
 
 void Recorder::write(const Simulation& sim) {
-  record_ << recordLine(sim) << '\n';
+  record_.write(recordLine(sim) + '\n');
   if (sim.plan()) {
     Json seconds = Json::array();
     for (const auto& report : sim.plan()->reports) seconds.push_back(report.seconds);
-    timings_ << Json{{"k", sim.truth().step},
-                     {"epoch", sim.plan()->epoch},
-                     {"plan_seconds", seconds}}
-                    .dump()
-             << '\n';
+    timings_.write(
+        Json{{"k", sim.truth().step}, {"epoch", sim.plan()->epoch}, {"plan_seconds", seconds}}
+            .dump() +
+        '\n');
   }
+}
+
+void Recorder::commit() {
+  record_.commit();
+  timings_.commit();
 }
 
 }  // namespace canopy::scenarios

@@ -3,23 +3,27 @@
 // (footprint membership, visibility, observations), every agent's fused tracks and occlusion map,
 // and on planning epochs the team's plans and intention messages. Same seed, same bytes: wall
 // times, which differ from run to run, go to timings.jsonl instead.
-#include <fstream>
+#include <filesystem>
 #include <string>
 
+#include "core/output_file.h"
 #include "scenarios/simulation.h"
 
 namespace canopy::scenarios {
 
 class Recorder {
  public:
-  /// Opens (truncates) record.jsonl and timings.jsonl in `dir`; throws std::runtime_error when
-  /// it cannot.
-  explicit Recorder(const std::string& dir);
+  /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
+  /// appears under either name until commit(), and a recorder destroyed without it leaves
+  /// nothing. Throws WriteError when it cannot write.
+  explicit Recorder(const std::filesystem::path& dir);
   void write(const Simulation& sim);
+  /// Publishes both files, once, after the last step.
+  void commit();
 
  private:
-  std::ofstream record_;
-  std::ofstream timings_;
+  AtomicFile record_;
+  AtomicFile timings_;
 };
 
 /// One step as a JSON line (without the newline).

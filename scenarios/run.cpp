@@ -1,10 +1,11 @@
 #include "scenarios/run.h"
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
+#include "core/output_file.h"
 #include "core/random.h"
 #include "core/text_file.h"
 #include "scenarios/recorder.h"
@@ -27,17 +28,24 @@ std::string manifestJson(const ScenarioSpec& spec, const std::string& command_li
   manifest["labels"] = spec.labels;
   manifest["trees"] = spec.trees.size();
   manifest["effective_config"] = Json::parse(spec.effective_config);
-  return manifest.dump(2);
+  // The command line and the file's path are the user's bytes, not necessarily UTF-8: invalid
+  // bytes are recorded as U+FFFD instead of failing the run.
+  return manifest.dump(2, ' ', false, Json::error_handler_t::replace);
 }
 
-RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
-  std::filesystem::create_directories(options.out_dir);
+namespace {
+
+// What a run writes in its directory. summary.json, the mark of a finished run, comes first: it
+// is removed before anything else and written after everything else.
+constexpr std::array<const char*, 4> kRunFiles = {"summary.json", "manifest.json", "record.jsonl",
+                                                  "timings.jsonl"};
+
+RunResult simulate(const ScenarioSpec& spec, const RunOptions& options) {
   writeFileAtomically(options.out_dir / "manifest.json",
                       manifestJson(spec, options.command_line) + "\n");
-
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
-  Recorder recorder(options.out_dir.string());
+  Recorder recorder(options.out_dir);
   SummaryBuilder summary(spec);
   while (!sim.done()) {
     sim.tick();
@@ -45,6 +53,7 @@ RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
     summary.add(sim);
     if (options.on_step) options.on_step(sim);
   }
+  recorder.commit();
   RunResult result;
   result.steps = summary.steps();
   result.wall_seconds =
@@ -52,6 +61,24 @@ RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
   result.summary_json = summary.json(result.wall_seconds);
   writeFileAtomically(options.out_dir / "summary.json", result.summary_json + "\n");
   return result;
+}
+
+}  // namespace
+
+RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options) {
+  makeOutputDirectories(options.out_dir, options.out_dir);
+  // The files of an earlier run would be read as this run's if this one failed part way.
+  for (const char* name : kRunFiles) removeOutputFile(options.out_dir / name);
+  try {
+    return simulate(spec, options);
+  } catch (...) {
+    // A failed run leaves none of its files: nothing a later reader could take for a result.
+    for (const char* name : kRunFiles) {
+      std::error_code ignored;
+      std::filesystem::remove(options.out_dir / name, ignored);
+    }
+    throw;
+  }
 }
 
 }  // namespace canopy::scenarios

@@ -21,7 +21,11 @@ struct RunResult {
   std::string summary_json;
 };
 
-/// Runs the scenario to its end and writes the outputs; throws std::runtime_error on I/O failure.
+/// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
+/// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
+/// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
+/// from on_step) removes whatever of these it wrote, so out_dir never holds a partial record or
+/// a summary of a run that did not finish.
 RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options);
 
 /// manifest.json's content: version, scenario, hash of the effective config, seed, config.
