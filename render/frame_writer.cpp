@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/output_file.h"
 #include "render/image.h"
 
 namespace canopy::render {
@@ -26,10 +27,9 @@ FrameWriter::FrameWriter(SceneModel model, FrameOptions options)
       options_(std::move(options)),
       canvas_(chosenSize(model_, options_)) {
   if (options_.every < 1) throw std::invalid_argument("FrameWriter: every must be >= 1");
+  // The frames directory itself must not be a link: stale frames are deleted in it.
+  makeOutputDirectories(options_.dir, options_.dir.parent_path());
   std::error_code error;
-  std::filesystem::create_directories(options_.dir, error);
-  if (error)
-    throw std::runtime_error("cannot create " + options_.dir.string() + ": " + error.message());
   for (const auto& entry : std::filesystem::directory_iterator(options_.dir, error)) {
     const std::string name = entry.path().filename().string();
     if (name.starts_with("frame_") && entry.path().extension() == ".png") {

@@ -27,8 +27,8 @@ ImageSize defaultFrameSize(const Aabb& aoi, const SceneOptions& scene = {});
 class FrameWriter {
  public:
   /// Creates `options.dir` and deletes stale frame_*.png files in it, so that a video never mixes
-  /// two runs; starts no GL (the canvas starts it with the first frame). Throws
-  /// std::runtime_error when the directory cannot be made, std::invalid_argument for a bad size.
+  /// two runs; starts no GL (the canvas starts it with the first frame). Throws WriteError when
+  /// the directory cannot be made or is a symbolic link, std::invalid_argument for a bad size.
   FrameWriter(SceneModel model, FrameOptions options);
 
   /// Call after every step: extends the trails, and on frame steps renders and writes a PNG.

@@ -6,8 +6,11 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <vector>
+
+#include "core/output_file.h"
 
 extern char** environ;
 
@@ -51,6 +54,14 @@ VideoResult assembleVideo(const std::filesystem::path& frames_dir, const std::fi
   }
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", fps);
+  // ffmpeg writes into a temporary we have just created (never a link planted at `out`), which
+  // becomes `out` only once it exits successfully; the format is named, as the name is not .mp4.
+  std::optional<AtomicFile> video;
+  try {
+    video.emplace(out);
+  } catch (const WriteError& e) {
+    return {VideoStatus::failed, std::string("video failed: ") + e.what()};
+  }
   const std::string pattern = globEscaped((frames_dir / "frame_").string()) + "*.png";
   std::vector<std::string> args = {ffmpeg.string(),
                                    "-nostdin",
@@ -67,7 +78,9 @@ VideoResult assembleVideo(const std::filesystem::path& frames_dir, const std::fi
                                    "pad=ceil(iw/2)*2:ceil(ih/2)*2",
                                    "-pix_fmt",
                                    "yuv420p",
-                                   out.string()};
+                                   "-f",
+                                   "mp4",
+                                   video->temporary().string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -81,6 +94,11 @@ VideoResult assembleVideo(const std::filesystem::path& frames_dir, const std::fi
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return {VideoStatus::failed,
             "video failed: " + ffmpeg.string() + " exited with code " + std::to_string(code)};
+  }
+  try {
+    video->commit();
+  } catch (const WriteError& e) {
+    return {VideoStatus::failed, std::string("video failed: ") + e.what()};
   }
   return {VideoStatus::made, "video: " + out.string()};
 }
