@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
 
+#include "core/text_file.h"
 #include "render/canvas.h"
 #include "render/image.h"
 #include "render/scene.h"
@@ -60,9 +59,7 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
 }
 
 void writeFigure(const Figure& figure, const std::filesystem::path& stem) {
-  std::ofstream out(stem.string() + ".svg", std::ios::trunc);
-  out << toSvg(figure);
-  if (!out) throw std::runtime_error("cannot write " + stem.string() + ".svg");
+  writeFileAtomically(stem.string() + ".svg", toSvg(figure));
   writeFigurePng(figure, stem.string() + ".png");
 }
 

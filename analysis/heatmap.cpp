@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "analysis/figure_png.h"
+#include "core/text_file.h"
 #include "scenarios/error.h"
 
 namespace canopy::analysis {
@@ -197,9 +197,7 @@ std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
   std::vector<Heatmap> maps = sensitivityMaps(analysis, *metric);
   for (const Heatmap& map : maps) {
     const std::filesystem::path stem = out_dir / map.stem;
-    std::ofstream csv(stem.string() + ".csv", std::ios::trunc);
-    csv << heatmapCsv(map);
-    if (!csv) throw std::runtime_error("cannot write " + stem.string() + ".csv");
+    writeFileAtomically(stem.string() + ".csv", heatmapCsv(map));
     writeFigure(heatmapFigure(map, analysis.name + ": where the behaviour emerges"), stem);
   }
   return maps;

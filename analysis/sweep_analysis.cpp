@@ -1,12 +1,12 @@
 #include "analysis/sweep_analysis.h"
 
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "analysis/figure_png.h"
 #include "analysis/heatmap.h"
 #include "analysis/plots.h"
+#include "core/output_file.h"
+#include "core/text_file.h"
 #include "scenarios/loader.h"
 #include "scenarios/sweep.h"
 
@@ -34,15 +34,19 @@ SweepAnalysis analyseSweep(const fs::path& sweep_dir, const scenarios::LoadOptio
 
 namespace {
 
-std::ofstream openCsv(const fs::path& path, const char* header) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  out << header << '\n';
-  return out;
-}
+// A table built in memory and written whole (writeFileAtomically) by write().
+struct Csv {
+  fs::path path;
+  std::ostringstream text;
+  Csv(fs::path file, const char* header) : path(std::move(file)) { text << header << '\n'; }
+  void write() const { writeFileAtomically(path, text.str()); }
+};
 
+// A CSV field in quotes, its own quotes doubled (RFC 4180).
 std::string quoted(const std::string& text) {
-  return "\"" + text + "\"";
+  std::string out = "\"";
+  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
 }
 
 // "value,low,high" in the stream's default format (±inf where the interval is unbounded).
@@ -55,26 +59,28 @@ std::string estimate(const Estimate& e) {
 }  // namespace
 
 void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
-  fs::create_directories(out_dir);
-  auto states = openCsv(out_dir / "ownership_states.csv",
-                        "config,column,step,t_s,state,trials,fraction,fraction_low,fraction_high,"
-                        "reached_trials,reached_fraction,reached_low,reached_high");
-  auto flows = openCsv(out_dir / "ownership_flows.csv",
-                       "config,from_column,to_column,from_state,to_state,trials");
-  auto changes =
-      openCsv(out_dir / "ownership_changes.csv",
-              "config,from_uav,to_uav,target,trials,fraction,fraction_low,fraction_high");
-  auto aware = openCsv(out_dir / "occlusion_aware.csv",
-                       "config,target,hidden_from_s,hidden_to_s,trials,p_aware,p_aware_low,p_aware_"
-                       "high,trials_with_event,p_aware_given_event,p_aware_given_event_low,p_aware_"
-                       "given_event_high,mean_coverage_hidden,mean_coverage_hidden_low,mean_"
-                       "coverage_hidden_high");
-  auto coverage = openCsv(out_dir / "coverage.csv",
-                          "config,target,step,t_s,mean_coverage,mean_coverage_low,mean_coverage_"
-                          "high,occluded");
-  auto tracking = openCsv(out_dir / "tracking.csv",
-                          "config,step,t_s,mean_ospa_m,mean_ospa_low_m,mean_ospa_high_m,mean_trace_"
-                          "pos_m2,mean_trace_pos_low_m2,mean_trace_pos_high_m2");
+  makeOutputDirectories(out_dir, out_dir);
+  Csv states_csv(out_dir / "ownership_states.csv",
+                 "config,column,step,t_s,state,trials,fraction,fraction_low,fraction_high,"
+                 "reached_trials,reached_fraction,reached_low,reached_high");
+  Csv flows_csv(out_dir / "ownership_flows.csv",
+                "config,from_column,to_column,from_state,to_state,trials");
+  Csv changes_csv(out_dir / "ownership_changes.csv",
+                  "config,from_uav,to_uav,target,trials,fraction,fraction_low,fraction_high");
+  Csv aware_csv(out_dir / "occlusion_aware.csv",
+                "config,target,hidden_from_s,hidden_to_s,trials,p_aware,p_aware_low,p_aware_"
+                "high,trials_with_event,p_aware_given_event,p_aware_given_event_low,p_aware_"
+                "given_event_high,mean_coverage_hidden,mean_coverage_hidden_low,mean_"
+                "coverage_hidden_high");
+  Csv coverage_csv(out_dir / "coverage.csv",
+                   "config,target,step,t_s,mean_coverage,mean_coverage_low,mean_coverage_"
+                   "high,occluded");
+  Csv tracking_csv(out_dir / "tracking.csv",
+                   "config,step,t_s,mean_ospa_m,mean_ospa_low_m,mean_ospa_high_m,mean_trace_"
+                   "pos_m2,mean_trace_pos_low_m2,mean_trace_pos_high_m2");
+  std::ostringstream &states = states_csv.text, &flows = flows_csv.text,
+                     &changes = changes_csv.text, &aware = aware_csv.text,
+                     &coverage = coverage_csv.text, &tracking = tracking_csv.text;
 
   for (std::size_t c = 0; c < analysis.configs.size(); ++c) {
     const ConfigStatistics& s = analysis.configs[c];
@@ -130,6 +136,10 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
                << ',' << estimate({s.trace[k], s.trace_ci[k]}) << '\n';
     }
   }
+  for (const Csv* csv :
+       {&states_csv, &flows_csv, &changes_csv, &aware_csv, &coverage_csv, &tracking_csv}) {
+    csv->write();
+  }
 }
 
 }  // namespace canopy::analysis
@@ -138,7 +148,7 @@ namespace canopy::analysis {
 
 void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
                   const std::string& heatmap_state) {
-  fs::create_directories(out_dir);
+  makeOutputDirectories(out_dir, out_dir);
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
   for (const ConfigStatistics& s : analysis.configs) {
