@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers for the command line: argument cursor and typed option values.
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,8 @@ class Args {
   std::uint64_t unsignedValue(const std::string& name);
   int intValue(const std::string& name, int min_value, int max_value);
   double doubleValue(const std::string& name);
+  /// The value after option `name` as an output directory (checkOutputDir).
+  std::string outputDirValue(const std::string& name);
   /// "a,b,c,d" as numbers.
   std::vector<double> listValue(const std::string& name, std::size_t count);
   /// The whole command line, for manifests.
@@ -37,11 +40,17 @@ class Args {
   std::size_t next_;
 };
 
+/// Throws ScenarioError("command line", what, message); `what` and `message` are shown through
+/// printable() by main.
 [[noreturn]] void usageError(const std::string& what, const std::string& message);
 
 /// The options shared by every command that loads scenarios: `--budget K` (every work limit of
 /// scenarios/budget.h times K) and `--allow-path DIR` (includes and track files may also be read
 /// from DIR). Takes its value and returns true when `arg` is one of them.
 bool takeLoadOption(Args& args, const std::string& arg, scenarios::LoadOptions& load);
+
+/// A usage error naming `source` (the option) when `dir` cannot be an output directory: it exists
+/// and is not a directory (a link to one is fine), or one of its parents is not a directory.
+void checkOutputDir(const std::filesystem::path& dir, const std::string& source);
 
 }  // namespace canopy::app

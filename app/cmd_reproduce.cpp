@@ -1,12 +1,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <string>
 #include <thread>
 
 #include "analysis/report.h"
 #include "app/commands.h"
+#include "core/output_file.h"
+#include "core/printable.h"
+#include "core/text_file.h"
 
 namespace canopy::app {
 
@@ -18,7 +20,7 @@ int reproduceCommand(Args& args) {
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
-      out = args.value(arg);
+      out = args.outputDirValue(arg);
     } else if (arg == "--trials") {
       trials = args.intValue(arg, 1, 100000);
     } else if (arg == "--jobs") {
@@ -37,6 +39,7 @@ int reproduceCommand(Args& args) {
     std::vector<analysis::ExperimentResult> done;
     for (const analysis::Experiment& experiment : experiments) {
       const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
+      checkOutputDirectories(dir / "analysis", out);  // no links planted in DIR
       ran += runSweepWithProgress(experiment.sweep, dir, jobs);
       analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
       analysis::writeTables(analysed, dir / "analysis");
@@ -57,9 +60,9 @@ int reproduceCommand(Args& args) {
   context.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::filesystem::path report = std::filesystem::path(out) / "report.md";
-  std::ofstream(report) << analysis::reportMarkdown(results, context, studies);
+  writeFileAtomically(report, analysis::reportMarkdown(results, context, studies));
   std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds,
-              report.string().c_str());
+              printable(report.string()).c_str());
   return kExitOk;
 }
 

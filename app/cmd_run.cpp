@@ -1,8 +1,11 @@
 #include <cstdio>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "app/commands.h"
+#include "core/output_file.h"
+#include "core/printable.h"
 #include "render/frame_writer.h"
 #include "render/video.h"
 #include "scenarios/loader.h"
@@ -48,7 +51,7 @@ int runCommand(Args& args) {
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
-      out_dir = args.value(arg);
+      out_dir = args.outputDirValue(arg);
     } else if (arg == "--seed") {
       load.seed = args.unsignedValue(arg);
     } else if (arg == "--set") {
@@ -74,7 +77,11 @@ int runCommand(Args& args) {
   if (!frames && size) usageError("--size", "only applies with --frames or --video");
   if (scenario.empty()) scenario = kDefaultScenario;
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
-  if (out_dir.empty()) out_dir = "out/" + spec.name;
+  if (out_dir.empty()) {
+    // The scenario's name is the file's text: one safe component, so it stays under out/.
+    out_dir = "out/" + safeFileName(spec.name);
+    checkOutputDir(out_dir, "--out (default, from the scenario's name)");
+  }
 
   scenarios::RunOptions options;
   options.out_dir = out_dir;
@@ -93,18 +100,21 @@ int runCommand(Args& args) {
   }
   const scenarios::RunResult result = scenarios::runScenario(spec, options);
   std::printf("%s: %d steps in %.3f s → %s/{manifest.json, record.jsonl, summary.json}\n",
-              spec.name.c_str(), result.steps, result.wall_seconds, out_dir.c_str());
-  std::printf("%s\n", result.summary_json.c_str());
+              printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
+              printable(out_dir).c_str());
+  // JSON escapes C0 controls but passes DEL and C1 in names through: printed line by line.
+  std::stringstream summary(result.summary_json);
+  for (std::string line; std::getline(summary, line);) std::printf("%s\n", printable(line).c_str());
   if (!writer) return kExitOk;
 
   std::printf("frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
               writer->framesWritten(), writer->size().width, writer->size().height,
-              every.value_or(1), writer->dir().c_str());
+              every.value_or(1), printable(writer->dir().string()).c_str());
   if (!video) return kExitOk;
   const double fps = 1.0 / (spec.dt * every.value_or(1));  // real time
   const render::VideoResult made =
       render::assembleVideo(writer->dir(), options.out_dir / "frames.mp4", fps);
-  std::printf("%s\n", made.message.c_str());
+  std::printf("%s\n", printable(made.message).c_str());
   return made.status == render::VideoStatus::failed ? kExitFailure : kExitOk;
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "core/printable.h"
 #include "scenarios/budget.h"
 #include "scenarios/error.h"
 #include "scenarios/forest.h"
@@ -29,8 +30,8 @@ int validateCommand(Args& args) {
   if (scenario.empty()) usageError("validate", "expected a scenario to check");
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps of %g s\n",
-              spec.file.string().c_str(), spec.uavs.size(), spec.targets.size(), spec.trees.size(),
-              spec.steps(), spec.dt);
+              printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
+              spec.trees.size(), spec.steps(), spec.dt);
   return kExitOk;
 }
 
@@ -43,7 +44,7 @@ int listCommand(Args& args) {
     } catch (const scenarios::ScenarioError& e) {
       description = std::string("(invalid: ") + e.what() + ")";
     }
-    std::printf("%-24s %s\n", name.c_str(), description.c_str());
+    std::printf("%-24s %s\n", printable(name, 100).c_str(), printable(description, 300).c_str());
   }
   return kExitOk;
 }

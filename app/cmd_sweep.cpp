@@ -9,6 +9,8 @@
 #include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
+#include "core/output_file.h"
+#include "core/printable.h"
 #include "scenarios/sweep.h"
 
 namespace canopy::app {
@@ -17,7 +19,8 @@ namespace {
 // A one-line progress bar on stderr: redrawn in place on a terminal, a line per 10 % otherwise.
 class ProgressBar {
  public:
-  explicit ProgressBar(std::string label) : label_(std::move(label)), tty_(isatty(STDERR_FILENO)) {}
+  explicit ProgressBar(const std::string& label)
+      : label_(printable(label, 100)), tty_(isatty(STDERR_FILENO)) {}
   void update(const scenarios::SweepProgress& p) {
     if (p.total == 0) return;
     const double elapsed =
@@ -52,6 +55,10 @@ int defaultJobs() {
 
 int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
                          int jobs) {
+  // runSweep makes DIR/trials/CONFIG/ as it goes and follows what is there: links planted in DIR
+  // would lead the trial files out of it. Refused before anything is written.
+  for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
+    checkOutputDirectories(out / "trials" / config.id, out);
   ProgressBar bar(sweep.name);
   return scenarios::runSweep(
       sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
@@ -64,7 +71,7 @@ int sweepCommand(Args& args) {
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
-      out = args.value(arg);
+      out = args.outputDirValue(arg);
     } else if (arg == "--jobs") {
       jobs = args.intValue(arg, 1, 1024);
     } else if (takeLoadOption(args, arg, load)) {
@@ -82,8 +89,8 @@ int sweepCommand(Args& args) {
   const int ran = runSweepWithProgress(sweep, out, jobs);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n", sweep.name.c_str(), ran,
-              seconds, jobs, out.c_str());
+  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n",
+              printable(sweep.name, 200).c_str(), ran, seconds, jobs, printable(out).c_str());
   return kExitOk;
 }
 
@@ -93,7 +100,7 @@ int analyzeCommand(Args& args) {
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
-      out = args.value(arg);
+      out = args.outputDirValue(arg);
     } else if (takeLoadOption(args, arg, load)) {
     } else if (arg == "--state") {
       state = args.value(arg);
@@ -106,23 +113,27 @@ int analyzeCommand(Args& args) {
     }
   }
   if (dir.empty()) usageError("analyze", "expected a sweep directory");
-  if (out.empty()) out = dir + "/analysis";
   const analysis::SweepAnalysis result = analysis::analyseSweep(dir, load);
   analysis::heatmapMetric(result, state);  // a bad --state fails before anything is written
+  if (out.empty()) {
+    out = dir + "/analysis";
+    checkOutputDir(out, "--out (default, DIR/analysis)");
+    checkOutputDirectories(out, dir);  // not a link planted in the sweep's directory
+  }
   analysis::writeTables(result, out);
   analysis::writeFigures(result, out, state);
   for (const analysis::ConfigStatistics& config : result.configs) {
-    std::printf("%-40s %3d trials  at L:", config.id.c_str(), config.trials);
+    std::printf("%-40s %3d trials  at L:", printable(config.id, 200).c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {
       if (config.state_counts[4][i] > 0) {
         const analysis::Estimate e = analysis::proportion(config.state_counts[4][i], config.trials);
-        std::printf("  %s %.0f%% [%.0f, %.0f]", config.states[i].c_str(), 100.0 * e.value,
-                    100.0 * e.ci.low, 100.0 * e.ci.high);
+        std::printf("  %s %.0f%% [%.0f, %.0f]", printable(config.states[i], 100).c_str(),
+                    100.0 * e.value, 100.0 * e.ci.low, 100.0 * e.ci.high);
       }
     }
     std::printf("\n");
   }
-  std::printf("tables and figures → %s/\n", out.c_str());
+  std::printf("tables and figures → %s/\n", printable(out).c_str());
   return kExitOk;
 }
 
