@@ -276,7 +276,11 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   progress.total = static_cast<int>(configs.size()) * sweep.trials;
   for (int c = 0; c < static_cast<int>(configs.size()); ++c) {
     for (int t = 0; t < sweep.trials; ++t) {
-      if (fs::exists(trialPath(options.out_dir, configs[c].id, t))) {
+      // Only a regular file counts as finished: a link or FIFO planted there is run again
+      // (and replaced, since the trial's file is renamed over it).
+      std::error_code status_error;
+      if (fs::symlink_status(trialPath(options.out_dir, configs[c].id, t), status_error).type() ==
+          fs::file_type::regular) {
         ++progress.resumed;
       } else {
         todo.push_back({c, t});

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/printable.h"
+#include "core/text_file.h"
 #include "scenarios/internal/referenced_file.h"
 
 namespace canopy::scenarios::internal {

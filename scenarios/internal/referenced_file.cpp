@@ -1,13 +1,7 @@
 #include "scenarios/internal/referenced_file.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include "core/printable.h"
+#include "core/text_file.h"
 #include "scenarios/loader.h"
 
 namespace canopy::scenarios::internal {
@@ -31,42 +25,6 @@ bool isInside(const fs::path& path, const fs::path& root) {
 }
 
 }  // namespace
-
-std::optional<std::string> readRegularFile(const fs::path& path, std::size_t max_bytes,
-                                           std::string& why) {
-  // O_NONBLOCK: opening a FIFO must not wait for a writer; O_NOFOLLOW: the last component was
-  // checked as it is, a link planted since is refused.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
-  if (fd < 0) {
-    why = std::strerror(errno);
-    return std::nullopt;
-  }
-  struct stat info {};
-  std::optional<std::string> text;
-  if (::fstat(fd, &info) != 0) {
-    why = std::strerror(errno);
-  } else if (!S_ISREG(info.st_mode)) {
-    why = "not a regular file";
-  } else if (static_cast<unsigned long long>(info.st_size) > max_bytes) {
-    why = "larger than " + std::to_string(max_bytes >> 20) + " MiB";
-  } else {
-    std::string bytes(static_cast<std::size_t>(info.st_size), '\0');
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-    if (done == bytes.size()) {
-      text = std::move(bytes);
-    } else {
-      why = "the file changed while it was read";
-    }
-  }
-  ::close(fd);
-  return text;
-}
 
 LoadContext loadContextFor(const fs::path& scenario_file, const std::vector<fs::path>& allowed) {
   LoadContext context;

@@ -26,11 +26,6 @@ struct ReferencedFile {
 ReferencedFile readReferencedFile(const Field& field, const std::string& what,
                                   const std::filesystem::path& fallback_dir = {});
 
-/// The bytes of the regular file at `path` (not followed if it is a symbolic link, never waiting
-/// on a FIFO), at most `max_bytes`; nothing, with the reason in `why`, otherwise.
-std::optional<std::string> readRegularFile(const std::filesystem::path& path,
-                                           std::size_t max_bytes, std::string& why);
-
 /// The LoadContext of a scenario file: its own folder, the scenario library, and `allowed`.
 LoadContext loadContextFor(const std::filesystem::path& scenario_file,
                          const std::vector<std::filesystem::path>& allowed);

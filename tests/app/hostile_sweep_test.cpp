@@ -1,6 +1,10 @@
 // Hostile sweep files through the command line: ids that could collide, repeated values, axis
 // products too large to build, and a corrected file in the folder of a refused one.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
 
 #include <filesystem>
 #include <fstream>
@@ -83,6 +87,29 @@ TEST(HostileSweep, ACorrectedSweepRunsInTheFolderOfTheRefusedOne) {
   // With finished trials, another sweep is still refused.
   writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [3]}])");
   EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
+}
+
+// A FIFO or a link planted where a finished trial would be is no finished trial: the sweep runs
+// that trial again (never blocking on the FIFO) and its file replaces what was planted.
+TEST(HostileSweep, PlantedTrialFilesAreRunAgainNotTrustedOrWaitedOn) {
+  const fs::path dir = fresh("sweep_planted");
+  writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [1]}])", 2);
+  const std::string sweep = "sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string();
+  ASSERT_EQ(run(sweep), 0);
+  const fs::path trials = dir / "out" / "trials" / "horizon-1";
+  const std::string first = canopy::cli_test::slurp(trials / "trial_0000.json");
+  fs::remove(trials / "trial_0000.json");
+  fs::remove(trials / "trial_0001.json");
+  ASSERT_EQ(mkfifo((trials / "trial_0000.json").c_str(), 0600), 0);
+  std::ofstream(dir / "outside.json") << "precious";
+  fs::create_symlink(dir / "outside.json", trials / "trial_0001.json");
+  const int status = std::system(
+      ("timeout 20 " + std::string(CANOPY_BINARY) + " " + sweep + " >/dev/null 2>&1").c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "killed after 20 s or failed";
+  EXPECT_EQ(fs::symlink_status(trials / "trial_0000.json").type(), fs::file_type::regular);
+  EXPECT_EQ(fs::symlink_status(trials / "trial_0001.json").type(), fs::file_type::regular);
+  EXPECT_EQ(canopy::cli_test::slurp(trials / "trial_0000.json"), first);  // same seed, same bits
+  EXPECT_EQ(canopy::cli_test::slurp(dir / "outside.json"), "precious");
 }
 
 }  // namespace
