@@ -102,8 +102,8 @@ int forestCommand(Args& args) {
   try {
     trees = scenarios::poissonForest(def);
   } catch (const scenarios::ForestTooLarge& e) {
-    usageError("--seed", "this seed's draw made more than " + std::to_string(e.max_points) +
-                             " trees; change the seed or raise the limit with --budget K");
+    usageError("--seed", "this seed's draw needs more than " + std::to_string(e.max_points) + " " +
+                             e.what_counted + "; change the seed or raise the limit with --budget K");
   }
   Json occluders = Json::array();
   for (const world::TreeDef& tree : trees) {

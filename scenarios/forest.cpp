@@ -1,7 +1,9 @@
 #include "scenarios/forest.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <unordered_map>
 
@@ -9,6 +11,9 @@
 
 namespace canopy::scenarios {
 namespace {
+
+// Distance checks of Matérn thinning allowed per point of the draw limit (ForestTooLarge beyond).
+constexpr std::size_t kChecksPerPoint = 100;
 
 struct Candidate {
   Vec2 centre;
@@ -27,15 +32,22 @@ double drawRadius(const RadiusRange& range, RandomStream& rng) {
 // Counts the points of one draw and throws ForestTooLarge past the limit.
 class DrawCounter {
  public:
-  explicit DrawCounter(std::size_t limit) : limit_(limit) {}
+  explicit DrawCounter(std::size_t limit, const char* what = "drawn points")
+      : limit_(limit), what_(what) {}
   void add(std::size_t n = 1) {
-    if (n > limit_ - count_) throw ForestTooLarge(limit_);
+    if (n > limit_ - count_) throw ForestTooLarge(limit_, what_);
     count_ += n;
   }
 
  private:
   std::size_t limit_, count_ = 0;
+  const char* what_;
 };
+
+std::size_t checkLimit(std::size_t max_points) {
+  const std::size_t most = std::numeric_limits<std::size_t>::max();
+  return max_points > most / kChecksPerPoint ? most : kChecksPerPoint * max_points;
+}
 
 // Homogeneous Poisson points on `box`: x-coordinates are the arrivals of a 1-D Poisson process
 // of rate λ · height (exponential gaps), y-coordinates uniform. Exact, and O(number of points).
@@ -50,8 +62,12 @@ void poissonPoints(const Aabb& box, double lambda, RandomStream& rng, DrawCounte
   }
 }
 
-// Matérn II thinning on a uniform hash grid; keeps the input order of the survivors.
-std::vector<Candidate> thin(const std::vector<Candidate>& points, double max_radius, double gap) {
+// Matérn II thinning on a uniform hash grid; keeps the input order of the survivors. Each cell
+// lists its points by ascending mark, so a point looks only at the points that could dominate it
+// and stops at the first that does: in a crowded cell that is one of the first few. The distance
+// checks are counted against `max_checks` (a bound on the work of every draw).
+std::vector<Candidate> thin(const std::vector<Candidate>& points, double max_radius, double gap,
+                            std::size_t max_checks) {
   const double reach = 2.0 * max_radius + gap;  // largest centre distance that can conflict
   if (points.empty() || reach <= 0.0) return points;
   auto cellOf = [reach](const Vec2& p) {
@@ -64,25 +80,40 @@ std::vector<Candidate> thin(const std::vector<Candidate>& points, double max_rad
     const auto [cx, cy] = cellOf(points[i].centre);
     grid[key(cx, cy)].push_back(i);
   }
+  const auto by_mark = [&points](int a, int b) {
+    return points[a].mark < points[b].mark || (points[a].mark == points[b].mark && a < b);
+  };
+  for (auto& [cell, members] : grid) std::sort(members.begin(), members.end(), by_mark);
+  DrawCounter checks(max_checks, "distance checks of the min_gap thinning");
   std::vector<Candidate> kept;
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
     const Candidate& p = points[i];
     const auto [cx, cy] = cellOf(p.centre);
-    bool dominated = false;
-    for (long long dx = -1; dx <= 1 && !dominated; ++dx) {
-      for (long long dy = -1; dy <= 1 && !dominated; ++dy) {
+    // The 3 × 3 neighbouring cells merged in ascending mark: the first smaller-mark point within
+    // reach ends the search, wherever it lies.
+    std::array<std::pair<const int*, const int*>, 9> cursors{};
+    int n_cursors = 0;
+    for (long long dx = -1; dx <= 1; ++dx) {
+      for (long long dy = -1; dy <= 1; ++dy) {
         const auto cell = grid.find(key(cx + dx, cy + dy));
-        if (cell == grid.end()) continue;
-        for (const int j : cell->second) {
-          if (j == i) continue;
-          const Candidate& q = points[j];
-          const double d = p.radius + q.radius + gap;
-          if (q.mark < p.mark && (q.centre - p.centre).squaredNorm() < d * d) {
-            dominated = true;
-            break;
-          }
+        if (cell != grid.end() && !cell->second.empty()) {
+          cursors[n_cursors++] = {cell->second.data(), cell->second.data() + cell->second.size()};
         }
       }
+    }
+    bool dominated = false;
+    while (!dominated) {
+      int best = -1;
+      for (int c = 0; c < n_cursors; ++c) {
+        if (cursors[c].first == cursors[c].second) continue;
+        if (best < 0 || by_mark(*cursors[c].first, *cursors[best].first)) best = c;
+      }
+      if (best < 0) break;
+      const Candidate& q = points[*cursors[best].first++];
+      if (!(q.mark < p.mark)) break;  // every remaining point has a larger mark
+      checks.add();
+      const double d = p.radius + q.radius + gap;
+      dominated = (q.centre - p.centre).squaredNorm() < d * d;
     }
     if (!dominated) kept.push_back(p);
   }
@@ -122,7 +153,7 @@ std::vector<world::TreeDef> poissonForest(const PoissonForestDef& def) {
     const double radius = drawRadius(def.radius, rng);
     points.push_back({p, radius, rng.uniform()});
   });
-  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap);
+  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap, checkLimit(def.max_points));
   return keepInside(points, def.region);
 }
 
@@ -157,7 +188,7 @@ std::vector<world::TreeDef> clusterForest(const ClusterForestDef& def) {
       points.push_back({centre, radius, rng.uniform()});
     }
   }
-  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap);
+  if (def.min_gap) points = thin(points, def.radius.hi, *def.min_gap, checkLimit(def.max_points));
   return keepInside(points, def.region);
 }
 

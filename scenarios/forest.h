@@ -14,12 +14,14 @@
 namespace canopy::scenarios {
 
 /// Thrown by a generator whose random draw exceeds its `max_points` (points drawn, counting
-/// candidates later thinned or dropped and cluster parents): a bound on every draw, not only on
-/// the expected count.
+/// candidates later thinned or dropped and cluster parents), or whose min_gap thinning needs more
+/// than 100 distance checks per allowed point: a bound on every draw, not only on the expected
+/// count.
 struct ForestTooLarge : std::length_error {
-  explicit ForestTooLarge(std::size_t limit)
-      : std::length_error("forest draw exceeds its limit"), max_points(limit) {}
-  std::size_t max_points;
+  ForestTooLarge(std::size_t limit, const char* counted)
+      : std::length_error("forest draw exceeds its limit"), max_points(limit), what_counted(counted) {}
+  std::size_t max_points;    // the limit
+  const char* what_counted;  // "drawn points", or the thinning's distance checks (100 per point)
 };
 
 /// Crown radii drawn uniformly from [lo, hi] (lo == hi: a fixed radius).

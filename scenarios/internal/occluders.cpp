@@ -67,9 +67,10 @@ auto drawBounded(const Field& field, Generate generate) {
   try {
     return generate();
   } catch (const ForestTooLarge& e) {
-    field.fail("expected a layout of at most " + std::to_string(e.max_points) +
-               " drawn points, this seed's draw made more (the expected count is within the "
-               "limit, this draw is not); change the seed or raise the limit with --budget K");
+    field.fail("expected a layout of at most " + std::to_string(e.max_points) + " " +
+               e.what_counted +
+               ", this seed's draw needs more (the expected count is within the limit, this "
+               "draw is not); change the seed or raise the limit with --budget K");
   }
 }
 
