@@ -10,12 +10,13 @@
 namespace {
 namespace fs = std::filesystem;
 using canopy::cli_test::fresh;
-using canopy::cli_test::run;
 using canopy::cli_test::slurp;
 
 TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   const fs::path dir = fresh("reproduce");
-  ASSERT_EQ(run("reproduce --out " + dir.string() + " --trials 2 --jobs 2"), 0);
+  const canopy::cli_test::Outcome outcome =
+      canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() + " --trials 2 --jobs 2");
+  ASSERT_EQ(outcome.code, 0) << outcome.err;
   const std::string report = slurp(dir / "report.md");
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
   EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
