@@ -1,0 +1,11 @@
+// libFuzzer target: a scenario with --set overrides (fuzz/inputs.h says what the bytes mean).
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "fuzz/inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  canopy::fuzz::loadScenarioInput(std::string_view(reinterpret_cast<const char*>(data), size));
+  return 0;
+}
