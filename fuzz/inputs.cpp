@@ -52,7 +52,7 @@ const fs::path& sandboxDir() {
   return sandbox.dir();
 }
 
-void loadScenarioInput(std::string_view data) {
+bool loadScenarioInput(std::string_view data) {
   const std::size_t nul = data.find('\0');
   const std::string text(data.substr(0, nul));
   scenarios::LoadOptions options;
@@ -67,23 +67,29 @@ void loadScenarioInput(std::string_view data) {
   try {
     scenarios::loadScenarioText(text, (sandboxDir() / "scenario.json").string(), options);
   } catch (const scenarios::ScenarioError&) {
+    return false;
   }
+  return true;
 }
 
-void loadSweepInput(std::string_view data) {
+bool loadSweepInput(std::string_view data) {
   try {
     const scenarios::SweepSpec sweep =
         scenarios::loadSweepText(std::string(data), (sandboxDir() / "sweep.json").string());
     scenarios::configurations(sweep);
   } catch (const scenarios::ScenarioError&) {
+    return false;
   }
+  return true;
 }
 
-void parseTrackInput(std::string_view data) {
+bool parseTrackInput(std::string_view data) {
   try {
     scenarios::parseTrackCsv(std::string(data), (sandboxDir() / "track.csv").string());
   } catch (const scenarios::ScenarioError&) {
+    return false;
   }
+  return true;
 }
 
 const std::vector<Target>& targets() {

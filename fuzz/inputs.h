@@ -1,8 +1,8 @@
 #pragma once
 // The entry points of the fuzz targets, shared with their regression test
-// (tests/scenarios/fuzz_regression_test.cpp): each feeds raw bytes to one loader. Loading or a
-// ScenarioError is the contract; anything else escapes: another exception, or a crash, leak, UB
-// or hang that the sanitizers and libFuzzer catch.
+// (tests/scenarios/fuzz_regression_test.cpp): each feeds raw bytes to one loader and returns true
+// when they load, false on a ScenarioError. Those two are the contract; anything else escapes:
+// another exception, or a crash, leak, UB or hang that the sanitizers and libFuzzer catch.
 #include <filesystem>
 #include <string_view>
 #include <vector>
@@ -11,15 +11,15 @@ namespace canopy::fuzz {
 
 /// Scenario text, then after the first NUL byte the --set overrides, one per line (empty lines
 /// skipped): loadScenarioText with LoadOptions::overrides.
-void loadScenarioInput(std::string_view data);
+bool loadScenarioInput(std::string_view data);
 /// Sweep text: loadSweepText, then configurations (no trials run).
-void loadSweepInput(std::string_view data);
+bool loadSweepInput(std::string_view data);
 /// Track CSV text: parseTrackCsv.
-void parseTrackInput(std::string_view data);
+bool parseTrackInput(std::string_view data);
 
 struct Target {
   const char* name;  // the fuzz target (fuzz/<name>.cpp) and its folders of inputs
-  void (*run)(std::string_view data);
+  bool (*run)(std::string_view data);
 };
 /// Every target, in a fixed order.
 const std::vector<Target>& targets();
