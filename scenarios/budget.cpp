@@ -25,7 +25,7 @@ WorkLimits workLimits(double scale) {
   WorkLimits limits;
   for (double* limit : {&limits.trees, &limits.world_units, &limits.record_bytes,
                         &limits.tracking_units, &limits.fusion_units, &limits.planning_units,
-                        &limits.sweep_configurations, &limits.sweep_trials}) {
+                        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
   return limits;

@@ -20,6 +20,7 @@ struct WorkLimits {
   double planning_units = 2e11;       // evaluations × H × substeps × targets × UAVs
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
   double sweep_trials = 1e7;          // configurations × trials
+  double sweep_bytes = 1e9;           // configurations × (their overrides' text + 4 kB)
 };
 
 /// The limits multiplied by `scale` (> 0).

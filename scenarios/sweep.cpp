@@ -83,6 +83,27 @@ void requireFeasibleSweep(const Field& root, const SweepSpec& sweep) {
                         budgetMessage(configurations, limits.sweep_configurations,
                                       "configurations (the product of the axes' lengths)"));
   }
+  // Each configuration holds its own copy of the fixed overrides and of one value per axis, and
+  // later its loaded scenario (a few kB for the library's).
+  double bytes = 4096.0;
+  for (const std::string& fixed : sweep.fixed) bytes += static_cast<double>(fixed.size());
+  for (const SweepAxis& axis : sweep.axes) {
+    std::size_t largest = 0;
+    for (std::size_t v = 0; v < axis.values.size(); ++v) {
+      std::size_t size = axis.path.size() + axis.values[v].size();
+      if (!axis.set.empty()) {
+        for (const std::string& o : axis.set[v]) size += o.size();
+      }
+      largest = std::max(largest, size);
+    }
+    bytes += static_cast<double>(largest);
+  }
+  if (configurations * bytes > limits.sweep_bytes) {
+    throw ScenarioError(root.file(), "axes",
+                        budgetMessage(configurations * bytes, limits.sweep_bytes,
+                                      "bytes of configurations (configurations × (their "
+                                      "overrides' text + 4 kB))"));
+  }
   if (configurations * sweep.trials > limits.sweep_trials) {
     throw ScenarioError(root.file(), "trials",
                         budgetMessage(configurations * sweep.trials, limits.sweep_trials,
@@ -275,6 +296,17 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
   SweepProgress progress;
   progress.total = static_cast<int>(configs.size()) * sweep.trials;
   for (int c = 0; c < static_cast<int>(configs.size()); ++c) {
+    // A run killed mid-write leaves its temporary behind (never trusted): clear them.
+    std::error_code list_error;
+    const fs::path config_dir = trialPath(options.out_dir, configs[c].id, 0).parent_path();
+    for (auto it = fs::directory_iterator(config_dir, list_error);
+         !list_error && it != fs::directory_iterator(); it.increment(list_error)) {
+      const std::string name = it->path().filename().string();
+      if (name.rfind("trial_", 0) == 0 && name.size() > 4 && name.ends_with(".tmp")) {
+        std::error_code ignored;
+        fs::remove(it->path(), ignored);
+      }
+    }
     for (int t = 0; t < sweep.trials; ++t) {
       // Only a regular file counts as finished: a link or FIFO planted there is run again
       // (and replaced, since the trial's file is renamed over it).
