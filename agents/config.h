@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/enum_names.h"
 #include "core/types.h"
 
 namespace canopy::agents {
@@ -30,6 +31,11 @@ struct TrackingConfig {
 };
 
 enum class FusionMethod { ci, hcmci, observer_average };
+inline constexpr EnumNames<FusionMethod, 3> kFusionMethodNames{{
+    {FusionMethod::ci, "ci"},
+    {FusionMethod::hcmci, "hcmci"},
+    {FusionMethod::observer_average, "observer_average"},
+}};
 
 /// Distributed fusion (algorithms.md §5).
 struct FusionConfig {
@@ -41,12 +47,27 @@ struct FusionConfig {
 };
 
 enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized };
+inline constexpr EnumNames<PlannerAlgorithm, 4> kPlannerAlgorithmNames{{
+    {PlannerAlgorithm::none, "none"},
+    {PlannerAlgorithm::sma, "sma"},
+    {PlannerAlgorithm::dec_pomdp, "dec_pomdp"},
+    {PlannerAlgorithm::centralized, "centralized"},
+}};
 enum class OcclusionMapMode { a_priori, dynamic, none };
+inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
+    {OcclusionMapMode::a_priori, "a_priori"},
+    {OcclusionMapMode::dynamic, "dynamic"},
+    {OcclusionMapMode::none, "none"},
+}};
 /// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md): one swarm
 /// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
 /// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
 /// rounds — on the same joint cost.
 enum class JointSearch { swarm, block_coordinate };
+inline constexpr EnumNames<JointSearch, 2> kJointSearchNames{{
+    {JointSearch::swarm, "swarm"},
+    {JointSearch::block_coordinate, "block_coordinate"},
+}};
 
 /// The particle swarm (algorithms.md §6).
 struct PsoConfig {

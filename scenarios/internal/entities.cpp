@@ -156,7 +156,8 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
       }
       fov.finish();
     } else {
-      (*reader.field().out())["fov"] = Json{{"size", {20.0, 20.0}}};
+      const Vec2& size = uav.sensor.footprint.size;  // sensing/footprint.h's default
+      (*reader.field().out())["fov"] = Json{{"size", {size.x(), size.y()}}};
     }
     uav.sensor.quality.alpha = reader.number("quality", uav.sensor.quality.alpha, Bound::positive);
     uav.sensor.quality.r0 = reader.number("r0", uav.sensor.quality.r0, Bound::positive);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.h"
 #include "core/types.h"
 #include "scenarios/error.h"
 
@@ -116,6 +117,19 @@ class ObjectReader {
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key, const std::string& fallback);
   int choice(const std::string& key, const std::vector<std::string>& choices, int fallback);
+  /// One of the spellings in `names` (core/enum_names.h); when absent, `fallback` — the config
+  /// struct's default — recorded by its spelling.
+  template <class Enum, std::size_t N>
+  Enum enumeration(const std::string& key, const EnumNames<Enum, N>& names, Enum fallback) {
+    std::vector<std::string> spellings;
+    int fallback_index = -1;
+    for (const EnumName<Enum>& entry : names) {
+      if (entry.value == fallback) fallback_index = static_cast<int>(spellings.size());
+      spellings.emplace_back(entry.name);
+    }
+    if (fallback_index < 0) throw std::logic_error("enumeration: the default has no spelling");
+    return names[static_cast<std::size_t>(choice(key, spellings, fallback_index))].value;
+  }
   /// Fails when two of the keys are present; returns the one present, or "" when none (after
   /// rejecting any unknown member, which is likely a misspelt alternative).
   std::string oneOf(const std::vector<std::string>& keys);

@@ -34,8 +34,7 @@ void readPso(ObjectReader& planner, agents::PsoConfig& pso) {
 std::string readSensing(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "sensing");
   sensing::SensingConfig& s = spec.sensing;
-  s.occlusion_model = static_cast<sensing::OcclusionModel>(
-      reader.choice("occlusion_model", {"canopy", "line_of_sight"}, 0));
+  s.occlusion_model = reader.enumeration("occlusion_model", sensing::kOcclusionModelNames, s.occlusion_model);
   s.p_detect = reader.number("p_detect", s.p_detect, Bound::probability);
   s.clutter_rate = reader.number("clutter_rate", s.clutter_rate, Bound::non_negative);
   if (s.clutter_rate > 1000.0) {
@@ -85,8 +84,7 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
 void readFusion(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "fusion");
   agents::FusionConfig& f = spec.fusion;
-  f.method = static_cast<agents::FusionMethod>(
-      reader.choice("method", {"ci", "hcmci", "observer_average"}, 0));
+  f.method = reader.enumeration("method", agents::kFusionMethodNames, f.method);
   f.rounds = reader.integer("rounds", f.rounds, 0, 1000);
   if (auto range = reader.optional("comm_range"); range && !range->json().is_null()) {
     f.comm_range = range->number(Bound::positive);
@@ -102,8 +100,7 @@ void readFusion(ObjectReader& root, ScenarioSpec& spec) {
 void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   ObjectReader reader = section(root, "planner");
   agents::PlannerConfig& p = spec.planner;
-  p.algorithm = static_cast<agents::PlannerAlgorithm>(
-      reader.choice("algorithm", {"none", "sma", "dec_pomdp", "centralized"}, 0));
+  p.algorithm = reader.enumeration("algorithm", agents::kPlannerAlgorithmNames, p.algorithm);
   p.horizon = reader.integer("horizon", p.horizon, 1, 50);
   p.plan_period = reader.number("plan_period", p.plan_period, Bound::positive);
   const double ratio = p.plan_period / spec.dt;
@@ -112,17 +109,15 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
     text << "expected a whole multiple of clock.dt (" << spec.dt << " s), got " << p.plan_period;
     reader.required("plan_period").fail(text.str());
   }
-  p.occlusion_map = static_cast<agents::OcclusionMapMode>(
-      reader.choice("occlusion_map", {"a_priori", "dynamic", "none"}, 1));
+  p.occlusion_map = reader.enumeration("occlusion_map", agents::kOcclusionMapModeNames, p.occlusion_map);
   p.discount = reader.number("discount", p.discount, Bound::unit_interval);
-  p.full_trace = reader.choice("cost_trace", {"position", "full"}, 0) == 1;
+  p.full_trace = reader.choice("cost_trace", {"position", "full"}, p.full_trace ? 1 : 0) == 1;
   p.terminal_penalty = reader.boolean("terminal_penalty", p.terminal_penalty);
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);
   p.cost_substeps = reader.integer("cost_substeps", p.cost_substeps, 1, 100);
   readPso(reader, p.pso);
-  p.joint_search = static_cast<agents::JointSearch>(
-      reader.choice("joint_search", {"swarm", "block_coordinate"}, 0));
+  p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
   p.order.clear();
   if (auto order = reader.optional("order")) {

@@ -4,7 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
+#include "agents/config.h"
 #include "core/random.h"
 #include "scenarios/error.h"
 
@@ -43,6 +45,32 @@ TEST(Loader, FillsEveryDefaultOfAlgorithmsMd) {
   EXPECT_DOUBLE_EQ(spec.planner.pso.inertia, 0.9);
   EXPECT_EQ(spec.planner.order, (std::vector<int>{0}));
   EXPECT_EQ(spec.analysis.m, 5);
+}
+
+TEST(Loader, EffectiveConfigSpellsEveryEnumDefaultOfAlgorithmsMd) {
+  // The spellings algorithms.md gives for the defaults, written here by hand.
+  const ScenarioSpec spec = loadScenarioText(kMinimal, "minimal.json");
+  const nlohmann::json config = nlohmann::json::parse(spec.effective_config);
+  EXPECT_EQ(config["sensing"]["occlusion_model"], "canopy");
+  EXPECT_EQ(config["fusion"]["method"], "ci");
+  EXPECT_EQ(config["planner"]["algorithm"], "none");
+  EXPECT_EQ(config["planner"]["occlusion_map"], "dynamic");
+  EXPECT_EQ(config["planner"]["joint_search"], "swarm");
+  EXPECT_EQ(config["planner"]["cost_trace"], "position");
+  EXPECT_EQ(config["uavs"][0]["fov"]["size"], nlohmann::json({20.0, 20.0}));
+}
+
+TEST(Loader, ReadsEverySpellingOfEachEnum) {
+  for (const auto& [value, name] : agents::kOcclusionMapModeNames) {
+    LoadOptions options;
+    options.overrides = {"planner.occlusion_map=\"" + std::string(name) + "\""};
+    EXPECT_EQ(loadScenarioText(kMinimal, "minimal.json", options).planner.occlusion_map, value);
+  }
+  for (const auto& [value, name] : agents::kFusionMethodNames) {
+    LoadOptions options;
+    options.overrides = {"fusion.method=\"" + std::string(name) + "\""};
+    EXPECT_EQ(loadScenarioText(kMinimal, "minimal.json", options).fusion.method, value);
+  }
 }
 
 TEST(Loader, EffectiveConfigReloadsToTheSameConfig) {
