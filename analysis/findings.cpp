@@ -90,6 +90,20 @@ std::optional<CatchUpFinding> catchUp(const std::vector<ExperimentResult>& resul
                         none->coverageOver(III, hidden->hidden)};
 }
 
+std::optional<FirstOcclusionRanking> firstRanking(const std::vector<ExperimentResult>& results) {
+  const ExperimentResult* os = findExperiment(results, "occlusion_sharing");
+  if (!os) return std::nullopt;
+  const int I = targetIndex(os->analysis, "I");
+  const ConfigStatistics* apr = findConfig(*os, "planner.occlusion_map", "a_priori");
+  const ConfigStatistics* dyn = findConfig(*os, "planner.occlusion_map", "dynamic");
+  const ConfigStatistics* none = findConfig(*os, "planner.occlusion_map", "none");
+  const OcclusionStatistics* hidden = apr && I >= 0 ? episode(*apr, I) : nullptr;
+  if (!apr || !dyn || !none || !hidden) return std::nullopt;
+  return FirstOcclusionRanking{apr->coverageOver(I, hidden->hidden),
+                               dyn->coverageOver(I, hidden->hidden),
+                               none->coverageOver(I, hidden->hidden)};
+}
+
 std::vector<ReactionRow> reactionRows(const std::vector<ExperimentResult>& results) {
   std::vector<ReactionRow> rows;
   const ExperimentResult* je = findExperiment(results, "joint_effect");
@@ -107,7 +121,8 @@ std::vector<ReactionRow> reactionRows(const std::vector<ExperimentResult>& resul
 }
 
 FailureSymptoms symptoms(const std::vector<ExperimentResult>& results,
-                         const std::vector<ReactionRow>& reaction) {
+                         const std::vector<ReactionRow>& reaction,
+                         const std::optional<FirstOcclusionRanking>& ranking) {
   FailureSymptoms f;
   if (const ExperimentResult* ra = findExperiment(results, "resource_allocation")) {
     const ConfigStatistics* s = findConfig(*ra, "planner", "dec_pomdp", "planner.horizon", "5");
@@ -116,16 +131,7 @@ FailureSymptoms symptoms(const std::vector<ExperimentResult>& results,
   for (const ReactionRow& row : reaction) {
     if (row.map == "a_priori") f.reaction_late = !row.onset_s || *row.onset_s >= 2.2;
   }
-  if (const ExperimentResult* os = findExperiment(results, "occlusion_sharing")) {
-    const int I = targetIndex(os->analysis, "I");
-    const ConfigStatistics* apr = findConfig(*os, "planner.occlusion_map", "a_priori");
-    const ConfigStatistics* none = findConfig(*os, "planner.occlusion_map", "none");
-    const OcclusionStatistics* hidden = apr && I >= 0 ? episode(*apr, I) : nullptr;
-    f.first_occlusion_unranked =
-        hidden && none &&
-        apr->coverageOver(I, hidden->hidden).value >=
-            none->coverageOver(I, hidden->hidden).value - 0.05;
-  }
+  f.first_occlusion_unranked = ranking && !ranking->holds();
   return f;
 }
 
@@ -169,8 +175,9 @@ Findings computeFindings(const std::vector<ExperimentResult>& results) {
   f.horizon = horizonCases(results);
   f.wasted = wastedCases(results);
   f.catch_up = catchUp(results);
+  f.first_ranking = firstRanking(results);
   f.reaction = reactionRows(results);
-  f.symptoms = symptoms(results, f.reaction);
+  f.symptoms = symptoms(results, f.reaction, f.first_ranking);
   return f;
 }
 

@@ -36,6 +36,16 @@ struct CatchUpFinding {
   }
 };
 
+/// Finding 5 (Occlusion Sharing, I's 0.8 s occlusion): the maps ranked in the order of their
+/// awareness, a-priori below dynamic below no map in footprints on hidden I.
+struct FirstOcclusionRanking {
+  Estimate a_priori, dynamic, none;
+  bool holds() const { return a_priori.value < dynamic.value && dynamic.value < none.value; }
+  /// Each step of the ranking clear of sampling error: the lower map's interval lies below the
+  /// higher map's point estimate.
+  bool clear() const { return a_priori.ci.high < dynamic.value && dynamic.ci.high < none.value; }
+};
+
 /// Joint Effect's reaction to I hiding, per map: the first time the mean coverage of I is below
 /// 0.9 (onset) and below 0.5 (half); nothing when it never is.
 struct ReactionRow {
@@ -51,13 +61,14 @@ std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows);
 struct FailureSymptoms {
   bool single_swarm_never = false;  // Dec-POMDP, one swarm, H = 5: 0 trials in M* at L (RA)
   bool reaction_late = false;       // JE: the a-priori onset is not before I hides (2.2 s)
-  bool first_occlusion_unranked = false;  // OS: a map cuts I's 0.8 s coverage by < 0.05
+  bool first_occlusion_unranked = false;  // OS: finding 5 does not hold
 };
 
 struct Findings {
   std::vector<HorizonCase> horizon;
   std::vector<WastedCoverageCase> wasted;
   std::optional<CatchUpFinding> catch_up;
+  std::optional<FirstOcclusionRanking> first_ranking;
   std::vector<ReactionRow> reaction;  // empty when Joint Effect was not run
   FailureSymptoms symptoms;
 };

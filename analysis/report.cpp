@@ -254,6 +254,18 @@ void writeReactionOrderFinding(std::ostream& md, const Findings& findings) {
      << " (a-priori map) and " << seconds(dynamic) << " (dynamic map).\n\n";
 }
 
+void writeFirstRankingFinding(std::ostream& md, const Findings& findings) {
+  if (!findings.first_ranking) return;
+  const FirstOcclusionRanking& r = *findings.first_ranking;
+  md << "5. **Occlusion Sharing, I's first occlusion: the maps ranked a-priori, dynamic, none** — "
+     << (!r.holds() ? "does not hold"
+                    : r.clear() ? "holds"
+                                : "holds in point estimates, not clear of sampling error")
+     << ": mean coverage of I while hidden " << numberWithInterval(r.a_priori) << " (a-priori), "
+     << numberWithInterval(r.dynamic) << " (dynamic), " << numberWithInterval(r.none)
+     << " (no map).\n\n";
+}
+
 void writeDifferences(std::ostream& md) {
   // Each bullet is one line of the report; the source breaks them at sentence boundaries.
   md << "## Where our setting differs from the paper's\n\n";
@@ -355,6 +367,7 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
   writeWastedCoverageFinding(md, findings);
   writeCatchUpFinding(md, findings);
   writeReactionOrderFinding(md, findings);
+  writeFirstRankingFinding(md, findings);
   writeWhereItEmerges(md, studies);
   writeDifferences(md);
   writeWhyNot(md, findings.symptoms);

@@ -65,11 +65,22 @@ TEST(Findings, CatchUpNeedsThreeQuartersOfTheGapClosed) {
   EXPECT_FALSE((CatchUpFinding{{1.0, {}}, {1.0, {}}, {1.0, {}}}.holds()));  // no gap to close
 }
 
+TEST(Findings, FirstOcclusionRankingNeedsStrictOrderAndClearsOnlyOutsideTheIntervals) {
+  // Seed 1 of the calibrated layout (report.md): 0.77 [0.65, 0.88], 0.97 [0.94, 1.01], 1.00.
+  const FirstOcclusionRanking seen{{0.77, {0.65, 0.88}}, {0.97, {0.94, 1.01}}, {1.0, {1.0, 1.0}}};
+  EXPECT_TRUE(seen.holds());
+  EXPECT_FALSE(seen.clear());  // 1.01 is above the no-map value 1.00
+  EXPECT_TRUE((FirstOcclusionRanking{{0.5, {0.4, 0.6}}, {0.8, {0.7, 0.9}}, {1.0, {1.0, 1.0}}}.clear()));
+  EXPECT_FALSE((FirstOcclusionRanking{{0.8, {}}, {0.8, {}}, {1.0, {}}}.holds()));  // a tie
+  EXPECT_FALSE((FirstOcclusionRanking{{0.9, {}}, {0.8, {}}, {1.0, {}}}.holds()));
+}
+
 TEST(Findings, NoExperimentsGiveNoFindings) {
   const Findings f = computeFindings({});
   EXPECT_TRUE(f.horizon.empty());
   EXPECT_TRUE(f.wasted.empty());
   EXPECT_FALSE(f.catch_up);
+  EXPECT_FALSE(f.first_ranking);
   EXPECT_TRUE(f.reaction.empty());
   EXPECT_FALSE(f.symptoms.single_swarm_never || f.symptoms.reaction_late ||
                f.symptoms.first_occlusion_unranked);
