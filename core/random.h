@@ -49,7 +49,7 @@ inline std::uint64_t RandomStream::nextU64() {
 
 inline double RandomStream::uniform() {
   // The top 53 bits, · 2⁻⁵³. Below 2⁵³ the signed conversion is exact and equals the unsigned
-  // one, and x86-64 has an instruction for it (the unsigned one needs a branch and two more).
+  // one (g++ 12 -O3 emits the same single cvtsi2sd for both here: it knows the range).
   return static_cast<double>(static_cast<std::int64_t>(nextU64() >> 11)) * 0x1.0p-53;
 }
 
