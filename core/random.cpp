@@ -13,10 +13,6 @@ std::uint64_t splitMix64(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-std::uint64_t rotl(std::uint64_t x, int k) {
-  return (x << k) | (x >> (64 - k));
-}
-
 }  // namespace
 
 std::uint64_t fnv1a64(std::string_view text) {
@@ -34,26 +30,6 @@ RandomStream::RandomStream(std::uint64_t trial_seed, std::string_view purpose,
   state ^= splitMix64(state) ^ fnv1a64(purpose);
   state ^= splitMix64(state) ^ (index * 0xd1b54a32d192ed03ULL);
   for (std::uint64_t& word : s_) word = splitMix64(state);
-}
-
-std::uint64_t RandomStream::nextU64() {
-  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
-  const std::uint64_t t = s_[1] << 17;
-  s_[2] ^= s_[0];
-  s_[3] ^= s_[1];
-  s_[1] ^= s_[2];
-  s_[0] ^= s_[3];
-  s_[2] ^= t;
-  s_[3] = rotl(s_[3], 45);
-  return result;
-}
-
-double RandomStream::uniform() {
-  return static_cast<double>(nextU64() >> 11) * 0x1.0p-53;
-}
-
-double RandomStream::uniform(double lo, double hi) {
-  return lo + (hi - lo) * uniform();
 }
 
 double RandomStream::normal() {

@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <numbers>
+
+#include "agents/tracking/motion_model.h"
+#include "sensing/noise.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -15,51 +17,6 @@ namespace {
 constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is kept (as the world)
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in reach_
-
-/// R(z, p) of sensing/noise.h (paper eq. 2) without trigonometry: cos ρ and sin ρ are the
-/// components of the unit bearing (z − p)/|z − p|; ρ = 0 when z = p, as atan2(0, 0) gives.
-Mat2 noiseCovariance(const Vec2& z, const Vec2& p, const sensing::SensorQuality& q) {
-  const Vec2 offset = z - p;
-  const double r = offset.norm();
-  const double d = std::max(q.r0, r);                               // d = max(r0, |z − p_i|)
-  const double c = r > 0.0 ? offset.x() / r : 1.0;                  // cos ρ
-  const double s = r > 0.0 ? offset.y() / r : 0.0;                  // sin ρ
-  const double range_var = q.alpha * 0.1 * d;                       // α · 0.1 d
-  const double bearing_var = q.alpha * 0.1 * std::numbers::pi * d;  // α · 0.1 π d
-  Mat2 R;                                                           // G diag(range, bearing) Gᵀ
-  R(0, 0) = c * c * range_var + s * s * bearing_var;
-  R(1, 1) = s * s * range_var + c * c * bearing_var;
-  R(0, 1) = R(1, 0) = c * s * (range_var - bearing_var);
-  return R;
-}
-
-/// P⁻ = F P Fᵀ + Q with F = [[I, Δ I], [0, I]] (NCV), written by 2x2 blocks.
-void predict(Mat4& P, const Mat4& Q, double dt) {
-  const Mat2 Ppv = P.topRightCorner<2, 2>();
-  const Mat2 Pvv = P.bottomRightCorner<2, 2>();
-  const Mat2 Ppv_new = Ppv + dt * Pvv;  // P_pv + Δ P_vv
-  // P_pp + Δ(P_pv + P_vp) + Δ² P_vv
-  P.topLeftCorner<2, 2>() += dt * (Ppv + Ppv.transpose()) + (dt * dt) * Pvv;
-  P.topRightCorner<2, 2>() = Ppv_new;
-  P.bottomLeftCorner<2, 2>() = Ppv_new.transpose();
-  P += Q;
-}
-
-/// One position measurement of covariance R, Kalman form of the information update:
-/// P ← P − C S⁻¹ Cᵀ = (P⁻¹ + Hᵀ R⁻¹ H)⁻¹, C = P Hᵀ = [c0 c1], S = H P Hᵀ + R.
-/// S is solved by its LDLᵀ factors, S = L D Lᵀ with L = [[1, 0], [l, 1]], D = diag(d0, d1):
-///   C S⁻¹ Cᵀ = (C L⁻ᵀ) D⁻¹ (C L⁻ᵀ)ᵀ = c0 c0ᵀ/d0 + g gᵀ/d1,  g = c1 − l c0,
-/// two rank-one downdates. Each term is an outer product of a vector with itself, so P stays
-/// exactly symmetric (the symmetrisation is built in).
-void measurementUpdate(Mat4& P, const Mat2& R) {
-  const Vec4 c0 = P.col(0);
-  const Vec4 c1 = P.col(1);
-  const double d0 = P(0, 0) + R(0, 0);                            // S₀₀
-  const double l = (P(1, 0) + R(1, 0)) / d0;                      // S₁₀ / d0
-  const double d1 = P(1, 1) + R(1, 1) - l * (P(0, 1) + R(0, 1));  // S₁₁ − l S₀₁
-  const Vec4 g = c1 - l * c0;
-  P -= (c0 * c0.transpose()) * (1.0 / d0) + (g * g.transpose()) * (1.0 / d1);
-}
 
 sensing::Footprint placeFootprint(const sensing::FootprintDef& def, const Vec2& centre, double c,
                                   double s) {
@@ -120,8 +77,8 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
   }
 }
 
-double NominalCost::stageTrace(const Mat4& P) const {
-  return full_trace_ ? P.trace() : P(0, 0) + P(1, 1);  // tr(P) or tr(P_pos)
+double NominalCost::stageTrace(const SymmetricCov4& P) const {
+  return full_trace_ ? P.trace() : P.positionTrace();  // tr(P) or tr(P_pos)
 }
 
 void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> free_agents,
@@ -146,14 +103,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     std::abort();
   }
 
-  // Q(τ) = σ_a² [[τ⁴/4 I, τ³/2 I], [τ³/2 I, τ² I]] (per axis, paper eq. 4), τ = Δ/S.
-  const double q = s.sigma_a * s.sigma_a;
-  Q_.setZero();
-  for (int k = 0; k < 2; ++k) {
-    Q_(k, k) = q * tau * tau * tau * tau / 4.0;
-    Q_(k, k + 2) = Q_(k + 2, k) = q * tau * tau * tau / 2.0;
-    Q_(k + 2, k + 2) = q * tau * tau;
-  }
+  Q_ = NcvNoise::of(tracking::ncvProcessNoise(tau, s.sigma_a));  // Q(τ), τ = Δ/S (paper eq. 4)
   discount_.resize(H);
   for (int m = 0; m < H; ++m) discount_[m] = std::pow(s.discount, m);  // γ^{m−1}, m = 1..H
 
@@ -204,7 +154,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   for (int j = 0; j < n_targets; ++j) {
     Vec4 x = problem.targets[j].x;
     const Mat4& P0 = problem.targets[j].P;
-    Mat4 P = 0.5 * (P0 + P0.transpose());  // symmetric, so the recursion keeps it exactly so
+    // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
+    SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
     double cost = 0.0;
     bool started = false;
     for (int t = 0; t < T; ++t) {
@@ -220,7 +171,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
           if (!fixed_fp[im].contains(z)) continue;
-          const Mat2 R = noiseCovariance(z, fixed_pos[im], sampleQuality(problem.uavs[i].quality));
+          const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
+                                                         sampleQuality(problem.uavs[i].quality));
           if (seen++ == 0) fixed_R_[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
@@ -240,8 +192,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         cost_start_[j] = cost;
       }
       if (started) continue;
-      predict(P, Q_, tau);
-      if (fixed_seen_[k]) measurementUpdate(P, fixed_R_[k]);
+      predictCovariance(P, tau, Q_);
+      if (fixed_seen_[k]) updatePosition(P, fixed_R_[k]);
       if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
       if (t == T - 1) seen_final_[j] = fixed_seen_[k];
     }
@@ -270,25 +222,26 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   double J = 0.0;
   const int n_targets = static_cast<int>(start_.size());
   for (int j = 0; j < n_targets; ++j) {
-    Mat4 P = P_start_[j];
+    SymmetricCov4 P = P_start_[j];
     J += cost_start_[j];
     bool seen_final = seen_final_[j];
     int m = start_[j] / S;         // the action (0-based) of the first sample
     int left = S - start_[j] % S;  // samples of it still to come, the first included
     for (int t = start_[j]; t < T; ++t) {
       const std::size_t k = static_cast<std::size_t>(j) * T + t;
-      predict(P, Q_, tau);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
+      predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
       bool seen = false;
       if (!occluded_[k]) {  // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map}
         if (fixed_seen_[k]) {
-          measurementUpdate(P, fixed_R_[k]);
+          updatePosition(P, fixed_R_[k]);
           seen = true;
         }
         for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
           const int f = std::countr_zero(bits);
           const std::size_t fq = static_cast<std::size_t>(f) * T + t;
           if (!free_fp_[fq].contains(z_[k])) continue;
-          measurementUpdate(P, noiseCovariance(z_[k], free_pos_[fq], free_[f].quality));  // S·R
+          const Mat2 R = sensing::rangeBearingCovariance(z_[k], free_pos_[fq], free_[f].quality);
+          updatePosition(P, R);  // S·R
           seen = true;
         }
       }
@@ -298,7 +251,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
       }
       if (t == T - 1) seen_final = seen;
     }
-    trace_final_[j] = P(0, 0) + P(1, 1);  // tr(P_{j,H}[pos])
+    trace_final_[j] = P.positionTrace();  // tr(P_{j,H}[pos])
     in_view_final_[j] = seen_final;
   }
   if (!terminal_ || charged_.empty()) return J;

@@ -10,6 +10,7 @@
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
 #include "agents/planning/plan.h"
+#include "agents/planning/symmetric_covariance.h"
 #include "agents/planning/uav_state.h"
 #include "core/types.h"
 #include "sensing/footprint.h"
@@ -87,7 +88,7 @@ class NominalCost {
   // Moves a UAV through H actions: fills H positions (m) and footprints.
   void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
            sensing::Footprint* footprints) const;
-  double stageTrace(const Mat4& P) const;
+  double stageTrace(const SymmetricCov4& P) const;
 
   int horizon_ = 0;               // H
   int substeps_ = 1;              // S samples per action
@@ -95,7 +96,7 @@ class NominalCost {
   bool full_trace_ = false;       // stage cost on tr(P) rather than tr(P_pos)
   bool terminal_ = true;          // add the terminal penalty
   double weight_ = 0.5;           // 1/m, w
-  Mat4 Q_ = Mat4::Zero();         // Q(Δ) of the NCV model
+  NcvNoise Q_;                    // Q(τ) of the NCV model, τ = Δ/S
   std::vector<double> discount_;  // γ^{m−1}, m = 1..H
   std::vector<Mover> free_;       // the free UAVs, in prepare's order
   std::vector<Vec2> all_final_;   // m, p_{i,H} of every UAV (free ones filled per call)
@@ -110,7 +111,7 @@ class NominalCost {
 
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;                // first such sample t (H·S: none)
-  std::vector<Mat4> P_start_;             // P_{j,start−1}
+  std::vector<SymmetricCov4> P_start_;    // P_{j,start−1}
   std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
   std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
 

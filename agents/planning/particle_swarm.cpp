@@ -29,14 +29,6 @@ SwarmOptions SwarmOptions::from(const PsoConfig& config, int horizon) {
   return o;
 }
 
-double wrapPeriodic(double x, double lo, double hi) {
-  const double width = hi - lo;
-  if (!(width > 0.0)) return lo;
-  if (x > hi) return lo + std::fmod(x - hi, width);
-  if (x < lo) return hi - std::fmod(lo - x, width);
-  return x;
-}
-
 SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const double> lo,
                                     std::span<const double> hi, const SwarmOptions& options,
                                     RandomStream& rng, std::span<const double> warm_start) {
@@ -74,17 +66,25 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
   result.best_cost = cost_[best];
 
   int stalls = 0;
+  r_.resize(2 * n * dim);
+  width_.resize(dim);
+  for (std::size_t d = 0; d < dim; ++d) width_[d] = hi[d] - lo[d];
+  // Locals, so that the stores to v and x need not reload the weights and bounds (they could
+  // alias them as far as the compiler knows).
+  const double w = options.inertia, c1 = options.c1, c2 = options.c2;
   while (result.iterations < options.max_iterations) {
+    rng.fillUniform(r_);  // r1, r2 per particle and coordinate, in the documented draw order
+    const double* r = r_.data();
+    const double* swarm_best = result.best.data();
+    const double* own_best = own_best_.data();
+    const double* width = width_.data();
+    double* x = x_.data();
+    double* v = v_.data();
     for (std::size_t p = 0; p < n; ++p) {
-      for (std::size_t d = 0; d < dim; ++d) {
-        const std::size_t k = p * dim + d;
-        const double r1 = rng.uniform();
-        const double r2 = rng.uniform();
-        const double width = hi[d] - lo[d];
-        v_[k] = options.inertia * v_[k] +
-                options.c1 * r1 * shortestDisplacement(own_best_[k] - x_[k], width) +
-                options.c2 * r2 * shortestDisplacement(result.best[d] - x_[k], width);
-        x_[k] = wrapPeriodic(x_[k] + v_[k], lo[d], hi[d]);
+      for (std::size_t d = 0; d < dim; ++d, r += 2, ++x, ++v, ++own_best) {
+        *v = w * *v + c1 * r[0] * shortestDisplacement(*own_best - *x, width[d]) +
+             c2 * r[1] * shortestDisplacement(swarm_best[d] - *x, width[d]);
+        *x = wrapPeriodic(*x + *v, lo[d], hi[d]);
       }
     }
     cost(x_, cost_);

@@ -1,6 +1,7 @@
 #pragma once
 // A global-best particle swarm over a box with periodic boundaries (algorithms.md §6). Generic: it
 // minimises any batch cost over a flat vector, so it can be tested on standard functions.
+#include <cmath>
 #include <functional>
 #include <span>
 #include <vector>
@@ -55,10 +56,18 @@ class ParticleSwarm {
 
  private:
   std::vector<double> x_, v_, own_best_, own_best_cost_, cost_;
+  std::vector<double> r_;      // one iteration's r1, r2, drawn in one batch
+  std::vector<double> width_;  // hi − lo per coordinate
 };
 
 /// x wrapped periodically into the closed interval [lo, hi]: above hi it re-enters at lo, below lo
-/// at hi.
-double wrapPeriodic(double x, double lo, double hi);
+/// at hi. Inline: the swarm wraps every coordinate of every particle each iteration.
+inline double wrapPeriodic(double x, double lo, double hi) {
+  const double width = hi - lo;
+  if (!(width > 0.0)) return lo;
+  if (x > hi) return lo + std::fmod(x - hi, width);
+  if (x < lo) return hi - std::fmod(lo - x, width);
+  return x;
+}
 
 }  // namespace canopy::agents::planning

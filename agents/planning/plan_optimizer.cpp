@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agents/planning/heading.h"
 #include "core/angles.h"
 
 namespace canopy::agents::planning {
@@ -10,7 +11,7 @@ namespace canopy::agents::planning {
 void PlanOptimizer::decode(std::span<const double> x) {
   for (std::size_t k = 0; k < actions_.size(); ++k) {
     const double speed = x[2 * k], heading = x[2 * k + 1];
-    actions_[k] = speed * Vec2(std::cos(heading), std::sin(heading));  // a = s (cos θ, sin θ)
+    actions_[k] = speed * unitHeading(heading);  // a = s (cos θ, sin θ)
   }
 }
 

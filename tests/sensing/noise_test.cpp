@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -42,6 +43,26 @@ TEST(RangeBearingCovariance, ScalesLinearlyWithAlphaAndRange) {
   const Mat2 a = rangeBearingCovariance(Vec2(0, 5), Vec2(0, 0), {0.2, 2.0});
   const Mat2 b = rangeBearingCovariance(Vec2(0, 10), Vec2(0, 0), {0.6, 2.0});
   EXPECT_TRUE(b.isApprox(a * 6.0, 1e-14));  // 3× α and 2× d
+}
+
+// The trig-free form equals the literal eq. 2 with ρ = atan2 and G(ρ) built from cos ρ, sin ρ.
+TEST(RangeBearingCovariance, EqualsTheRotationFormWithAtan2) {
+  RandomStream rng(12, "noise-test");
+  for (int k = 0; k < 1000; ++k) {
+    const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
+    const Vec2 p_i(rng.uniform(-50, 50), rng.uniform(-50, 50));
+    const SensorQuality q{rng.uniform(0.1, 1.0), rng.uniform(0.5, 5.0)};
+    const Vec2 offset = z - p_i;
+    const double d = std::max(q.r0, offset.norm());
+    const double rho = std::atan2(offset.y(), offset.x());
+    Mat2 G;
+    G << std::cos(rho), -std::sin(rho), std::sin(rho), std::cos(rho);
+    const Mat2 D = Vec2(q.alpha * 0.1 * d, q.alpha * 0.1 * std::numbers::pi * d).asDiagonal();
+    const Mat2 expected = G * D * G.transpose();
+    const Mat2 R = rangeBearingCovariance(z, p_i, q);
+    EXPECT_LE((R - expected).cwiseAbs().maxCoeff(), 1e-14 * expected.norm()) << k;
+    EXPECT_EQ(R(0, 1), R(1, 0));
+  }
 }
 
 TEST(RangeBearingCovariance, DrawnNoiseHasCovarianceR) {
