@@ -4,6 +4,7 @@
 // and on planning epochs the team's plans and intention messages. Same seed, same bytes: wall
 // times, which differ from run to run, go to timings.jsonl instead.
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "core/output_file.h"
@@ -11,12 +12,16 @@
 
 namespace canopy::scenarios {
 
+class RecordLineWriter;
+
 class Recorder {
  public:
   /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
   /// appears under either name until commit(), and a recorder destroyed without it leaves
-  /// nothing. Throws WriteError when it cannot write.
-  explicit Recorder(const std::filesystem::path& dir);
+  /// nothing. Throws WriteError when it cannot write. Each line is streamed into one reused
+  /// buffer (no JSON document per step); the bytes are those of nlohmann's dump().
+  Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec);
+  ~Recorder();
   void write(const Simulation& sim);
   /// Publishes both files, once, after the last step.
   void commit();
@@ -24,6 +29,8 @@ class Recorder {
  private:
   AtomicFile record_;
   AtomicFile timings_;
+  std::unique_ptr<RecordLineWriter> lines_;
+  std::string line_;
 };
 
 /// One step as a JSON line (without the newline).

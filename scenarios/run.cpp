@@ -45,7 +45,7 @@ RunResult simulate(const ScenarioSpec& spec, const RunOptions& options) {
                       manifestJson(spec, options.command_line) + "\n");
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
-  Recorder recorder(options.out_dir);
+  Recorder recorder(options.out_dir, spec);
   SummaryBuilder summary(spec);
   while (!sim.done()) {
     sim.tick();
