@@ -255,7 +255,7 @@ Recorder::Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec)
 
 Recorder::~Recorder() = default;
 
-void Recorder::write(const Simulation& sim) {
+void Recorder::onStep(const Simulation& sim) {
   line_.clear();  // keeps its capacity: no allocation per step once the longest line was seen
   lines_->write(sim, line_);
   line_ += '\n';

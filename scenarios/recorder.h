@@ -8,13 +8,13 @@
 #include <string>
 
 #include "core/output_file.h"
-#include "scenarios/simulation.h"
+#include "scenarios/step_observer.h"
 
 namespace canopy::scenarios {
 
 class RecordLineWriter;
 
-class Recorder {
+class Recorder final : public StepObserver {
  public:
   /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
   /// appears under either name until commit(), and a recorder destroyed without it leaves
@@ -22,7 +22,7 @@ class Recorder {
   /// buffer (no JSON document per step); the bytes are those of nlohmann's dump().
   Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec);
   ~Recorder();
-  void write(const Simulation& sim);
+  void onStep(const Simulation& sim) override;
   /// Publishes both files, once, after the last step.
   void commit();
 
