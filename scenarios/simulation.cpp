@@ -87,10 +87,10 @@ void Simulation::tick() {
   }
   team_.track(dt, scans_, footprints_, positions_);
   plan_.reset();
-  if (spec_.planner.algorithm == agents::PlannerAlgorithm::none) {
-    commandScriptedUavs();
-  } else {
+  if (team_.plans()) {
     commandFromPlan();
+  } else {
+    commandScriptedUavs();
   }
   // Every UAV is commanded every step, so an external command (commandNext) lasts one step.
   for (std::size_t i = 0; i < commands_.size(); ++i)
