@@ -32,7 +32,7 @@ void Team::track(double dt, const std::vector<sensing::Scan>& scans,
 
 std::optional<planning::TeamPlan> Team::plan(int epoch, const std::vector<Vec2>& positions,
                                              const std::vector<double>& yaws) {
-  if (config_.planner.algorithm == PlannerAlgorithm::none) return std::nullopt;
+  if (!plans()) return std::nullopt;
   planning_views_.clear();
   for (std::size_t i = 0; i < agents_.size(); ++i) {
     uav_states_[i].position = positions[i];

@@ -36,6 +36,10 @@ class Team {
   void track(double dt, const std::vector<sensing::Scan>& scans,
              const std::vector<sensing::Footprint>& footprints, const std::vector<Vec2>& positions);
 
+  /// Whether the team plans at all (planner.algorithm ≠ none): the one place this is decided;
+  /// without a planner the UAVs follow their scripted paths.
+  bool plans() const { return config_.planner.algorithm != PlannerAlgorithm::none; }
+
   /// One planning epoch; uavs: each UAV's position and yaw now (the rest from the config).
   /// Returns the team plan (plans[i].command() is UAV i's command), or nothing without a planner.
   std::optional<planning::TeamPlan> plan(int epoch, const std::vector<Vec2>& positions,

@@ -28,6 +28,18 @@ render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
   return model;
 }
 
+// The frames as one more observer of the run's steps.
+class FrameObserver final : public scenarios::StepObserver {
+ public:
+  explicit FrameObserver(render::FrameWriter& writer) : writer_(writer) {}
+  void onStep(const scenarios::Simulation& sim) override {
+    writer_.onStep(sim.truth(), sim.beliefs());
+  }
+
+ private:
+  render::FrameWriter& writer_;
+};
+
 }  // namespace
 
 render::ImageSize imageSizeValue(Args& args, const std::string& name) {
@@ -88,15 +100,15 @@ int runCommand(Args& args) {
   options.command_line = args.joined();
   // Without --frames nothing of the renderer is made, so no GL context is ever created.
   std::optional<render::FrameWriter> writer;
+  std::optional<FrameObserver> frame_observer;
   if (frames) {
     render::FrameOptions frame_options;
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = every.value_or(1);
     frame_options.size = size.value_or(render::ImageSize{});
     writer.emplace(sceneModel(spec), frame_options);
-    options.on_step = [&writer](const scenarios::Simulation& sim) {
-      writer->onStep(sim.truth(), sim.beliefs());
-    };
+    frame_observer.emplace(*writer);
+    options.observers.push_back(&*frame_observer);
   }
   const scenarios::RunResult result = scenarios::runScenario(spec, options);
   std::printf("%s: %d steps in %.3f s → %s/{manifest.json, record.jsonl, summary.json}\n",

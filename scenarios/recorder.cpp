@@ -2,123 +2,266 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scenarios/internal/json_line.h"
+
 namespace canopy::scenarios {
 namespace {
-using Json = nlohmann::json;
+using internal::JsonLine;
 
-Json vec(const Vec2& v) {
-  return Json::array({v.x(), v.y()});
+// Keys are written in the order dump() of a std::map-backed object gives: sorted by byte.
+
+void vec(JsonLine& j, const Vec2& v) {
+  j.beginArray();
+  j.number(v.x());
+  j.number(v.y());
+  j.endArray();
 }
-Json sym(const Mat2& m) {
-  return Json::array({m(0, 0), m(0, 1), m(1, 1)});
-}  // upper triangle
-
+void sym(JsonLine& j, const Mat2& m) {  // upper triangle
+  j.beginArray();
+  j.number(m(0, 0));
+  j.number(m(0, 1));
+  j.number(m(1, 1));
+  j.endArray();
+}
 template <typename Vector>
-Json values(const Vector& x) {
-  Json a = Json::array();
-  for (int r = 0; r < x.size(); ++r) a.push_back(x(r));
-  return a;
+void values(JsonLine& j, const Vector& x) {
+  j.beginArray();
+  for (int r = 0; r < x.size(); ++r) j.number(x(r));
+  j.endArray();
 }
 template <typename Matrix>
-Json upperTriangle(const Matrix& P) {  // row by row: P00, P01, …, P0n, P11, …
-  Json a = Json::array();
+void upperTriangle(JsonLine& j, const Matrix& P) {  // row by row: P00, P01, …, P0n, P11, …
+  j.beginArray();
   for (int r = 0; r < P.rows(); ++r) {
-    for (int c = r; c < P.cols(); ++c) a.push_back(P(r, c));
+    for (int c = r; c < P.cols(); ++c) j.number(P(r, c));
   }
-  return a;
+  j.endArray();
 }
-Json key(const agents::TrackKey& k) {
-  return Json::array({k.origin, k.serial});
+void key(JsonLine& j, const agents::TrackKey& k) {
+  j.beginArray();
+  j.integer(k.origin);
+  j.integer(k.serial);
+  j.endArray();
 }
-
-Json beliefJson(const ScenarioSpec& spec, const agents::AgentBelief& belief) {
-  Json tracks = Json::array(), map = Json::array(), path = Json::array();
-  for (const agents::TrackEstimate& t : belief.tracks) {
-    tracks.push_back({{"key", key(t.key)},
-                      {"label", spec.labels[t.label]},
-                      {"x", values(t.belief.x)},
-                      {"P", upperTriangle(t.belief.P)}});
-  }
-  for (const agents::TreeEstimate& t : belief.trees) {
-    map.push_back(
-        {{"key", key(t.key)}, {"x", values(t.belief.x)}, {"P", upperTriangle(t.belief.P)}});
-  }
-  for (const Vec2& p : belief.planned_path) path.push_back(vec(p));
-  return {{"tracks", tracks}, {"map", map}, {"planned_path", path}};
+void integers(JsonLine& j, const std::vector<int>& list) {
+  j.beginArray();
+  for (int i : list) j.integer(i);
+  j.endArray();
 }
-
-Json planJson(const agents::planning::TeamPlan& plan) {
-  using agents::planning::Plan;
-  auto velocities = [](const Plan& p) {
-    Json a = Json::array();
-    for (const Vec2& v : p.velocities) a.push_back(vec(v));
-    return a;
-  };
-  Json agents = Json::array(), messages = Json::array();
-  for (const auto& report : plan.reports) {
-    agents.push_back({{"agent", report.agent},
-                      {"velocities", velocities(report.plan)},
-                      {"cost", report.cost},
-                      {"joint_epoch", report.joint_epoch},
-                      {"iterations", report.iterations},
-                      {"evaluations", report.evaluations}});
-  }
-  for (const auto& m : plan.messages) {
-    messages.push_back({{"from", m.from},
-                        {"agent", m.agent},
-                        {"epoch", m.epoch},
-                        {"velocities", velocities(m.plan)}});
-  }
-  return {{"epoch", plan.epoch}, {"agents", agents}, {"messages", messages}};
+void velocities(JsonLine& j, const agents::planning::Plan& plan) {
+  j.beginArray();
+  for (const Vec2& v : plan.velocities) vec(j, v);
+  j.endArray();
 }
 
 }  // namespace
 
-std::string recordLine(const Simulation& sim) {
-  const ScenarioSpec& spec = sim.spec();
-  const world::WorldSnapshot& truth = sim.truth();
-  Json line;
-  line["k"] = truth.step;
-  line["t"] = truth.time;
-  Json& targets = line["targets"] = Json::array();
-  for (const world::TargetState& target : truth.targets) {
-    targets.push_back({{"p", vec(target.position)}, {"v", vec(target.velocity)}});
+/// Labels as dump() escapes them, each escaped once, when it is first written (so a label that
+/// dump() would refuse fails the run at the same step as before).
+class RecordLineWriter {
+ public:
+  explicit RecordLineWriter(const std::vector<std::string>& labels)
+      : names_(labels), labels_(labels.size()) {}
+
+  /// Appends step's line (without the newline) to `out`.
+  void write(const Simulation& sim, std::string& out);
+
+ private:
+  const std::string& label(sensing::LabelId id) {
+    std::optional<std::string>& escaped = labels_.at(static_cast<std::size_t>(id));
+    if (!escaped) escaped = JsonLine::escaped(names_.at(static_cast<std::size_t>(id)));
+    return *escaped;
   }
-  Json& uavs = line["uavs"] = Json::array();
-  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
-    const world::UavState& uav = truth.uavs[i];
-    uavs.push_back({{"p", vec(uav.position)},
-                    {"v", vec(uav.velocity)},
-                    {"yaw", uav.yaw},
-                    {"cmd", vec(sim.world().commandedVelocity(static_cast<int>(i)))}});
+  void belief(JsonLine& j, const agents::AgentBelief& belief);
+  void scan(JsonLine& j, const sensing::Scan& scan);
+
+  std::vector<std::string> names_;                  // the scenario's labels, by LabelId
+  std::vector<std::optional<std::string>> labels_;  // escaped, once written
+};
+
+void RecordLineWriter::belief(JsonLine& j, const agents::AgentBelief& belief) {
+  j.beginObject();
+  j.key("map");
+  j.beginArray();
+  for (const agents::TreeEstimate& t : belief.trees) {
+    j.beginObject();
+    j.key("P");
+    upperTriangle(j, t.belief.P);
+    j.key("key");
+    key(j, t.key);
+    j.key("x");
+    values(j, t.belief.x);
+    j.endObject();
   }
-  Json& scans = line["scans"] = Json::array();
-  for (const sensing::Scan& scan : sim.scans()) {
-    Json observations = Json::array();
-    for (const sensing::Observation& o : scan.observations) {
-      Json obs = {
-          {"label", spec.labels[o.label]}, {"z", vec(o.z)}, {"R", sym(o.R)}, {"truth", o.truth}};
-      if (o.label == sensing::kTreeLabel) obs["radius"] = o.radius;
-      observations.push_back(std::move(obs));
-    }
-    scans.push_back({{"uav", scan.uav},
-                     {"in_footprint", scan.in_footprint},
-                     {"visible", scan.visible},
-                     {"obs", std::move(observations)}});
+  j.endArray();
+  j.key("planned_path");
+  j.beginArray();
+  for (const Vec2& p : belief.planned_path) vec(j, p);
+  j.endArray();
+  j.key("tracks");
+  j.beginArray();
+  for (const agents::TrackEstimate& t : belief.tracks) {
+    j.beginObject();
+    j.key("P");
+    upperTriangle(j, t.belief.P);
+    j.key("key");
+    key(j, t.key);
+    j.key("label");
+    j.escapedString(label(t.label));
+    j.key("x");
+    values(j, t.belief.x);
+    j.endObject();
   }
-  Json& agents = line["agents"] = Json::array();
-  for (const agents::AgentBelief& belief : sim.beliefs())
-    agents.push_back(beliefJson(spec, belief));
-  if (sim.plan()) line["plan"] = planJson(*sim.plan());
-  return line.dump();
+  j.endArray();
+  j.endObject();
 }
 
-Recorder::Recorder(const std::filesystem::path& dir)
-    : record_(dir / "record.jsonl"), timings_(dir / "timings.jsonl") {}
+void RecordLineWriter::scan(JsonLine& j, const sensing::Scan& scan) {
+  j.beginObject();
+  j.key("in_footprint");
+  integers(j, scan.in_footprint);
+  j.key("obs");
+  j.beginArray();
+  for (const sensing::Observation& o : scan.observations) {
+    j.beginObject();
+    j.key("R");
+    sym(j, o.R);
+    j.key("label");
+    j.escapedString(label(o.label));
+    if (o.label == sensing::kTreeLabel) {
+      j.key("radius");
+      j.number(o.radius);
+    }
+    j.key("truth");
+    j.integer(o.truth);
+    j.key("z");
+    vec(j, o.z);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("uav");
+  j.integer(scan.uav);
+  j.key("visible");
+  integers(j, scan.visible);
+  j.endObject();
+}
 
-void Recorder::write(const Simulation& sim) {
-  record_.write(recordLine(sim) + '\n');
+namespace {
+
+void plan(JsonLine& j, const agents::planning::TeamPlan& plan) {
+  j.beginObject();
+  j.key("agents");
+  j.beginArray();
+  for (const auto& report : plan.reports) {
+    j.beginObject();
+    j.key("agent");
+    j.integer(report.agent);
+    j.key("cost");
+    j.number(report.cost);
+    j.key("evaluations");
+    j.integer(report.evaluations);
+    j.key("iterations");
+    j.integer(report.iterations);
+    j.key("joint_epoch");
+    integers(j, report.joint_epoch);
+    j.key("velocities");
+    velocities(j, report.plan);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("epoch");
+  j.integer(plan.epoch);
+  j.key("messages");
+  j.beginArray();
+  for (const auto& m : plan.messages) {
+    j.beginObject();
+    j.key("agent");
+    j.integer(m.agent);
+    j.key("epoch");
+    j.integer(m.epoch);
+    j.key("from");
+    j.integer(m.from);
+    j.key("velocities");
+    velocities(j, m.plan);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+}  // namespace
+
+void RecordLineWriter::write(const Simulation& sim, std::string& out) {
+  const world::WorldSnapshot& truth = sim.truth();
+  JsonLine j(out);
+  j.beginObject();
+  j.key("agents");
+  j.beginArray();
+  for (const agents::AgentBelief& b : sim.beliefs()) belief(j, b);
+  j.endArray();
+  j.key("k");
+  j.integer(truth.step);
   if (sim.plan()) {
+    j.key("plan");
+    plan(j, *sim.plan());
+  }
+  j.key("scans");
+  j.beginArray();
+  for (const sensing::Scan& s : sim.scans()) scan(j, s);
+  j.endArray();
+  j.key("t");
+  j.number(truth.time);
+  j.key("targets");
+  j.beginArray();
+  for (const world::TargetState& target : truth.targets) {
+    j.beginObject();
+    j.key("p");
+    vec(j, target.position);
+    j.key("v");
+    vec(j, target.velocity);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("uavs");
+  j.beginArray();
+  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
+    const world::UavState& uav = truth.uavs[i];
+    j.beginObject();
+    j.key("cmd");
+    vec(j, sim.world().commandedVelocity(static_cast<int>(i)));
+    j.key("p");
+    vec(j, uav.position);
+    j.key("v");
+    vec(j, uav.velocity);
+    j.key("yaw");
+    j.number(uav.yaw);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+std::string recordLine(const Simulation& sim) {
+  RecordLineWriter writer(sim.spec().labels);
+  std::string line;
+  writer.write(sim, line);
+  return line;
+}
+
+Recorder::Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec)
+    : record_(dir / "record.jsonl"),
+      timings_(dir / "timings.jsonl"),
+      lines_(std::make_unique<RecordLineWriter>(spec.labels)) {}
+
+Recorder::~Recorder() = default;
+
+void Recorder::onStep(const Simulation& sim) {
+  line_.clear();  // keeps its capacity: no allocation per step once the longest line was seen
+  lines_->write(sim, line_);
+  line_ += '\n';
+  record_.write(line_);
+  if (sim.plan()) {
+    using Json = nlohmann::json;
     Json seconds = Json::array();
     for (const auto& report : sim.plan()->reports) seconds.push_back(report.seconds);
     timings_.write(

@@ -4,26 +4,33 @@
 // and on planning epochs the team's plans and intention messages. Same seed, same bytes: wall
 // times, which differ from run to run, go to timings.jsonl instead.
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "core/output_file.h"
-#include "scenarios/simulation.h"
+#include "scenarios/step_observer.h"
 
 namespace canopy::scenarios {
 
-class Recorder {
+class RecordLineWriter;
+
+class Recorder final : public StepObserver {
  public:
   /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
   /// appears under either name until commit(), and a recorder destroyed without it leaves
-  /// nothing. Throws WriteError when it cannot write.
-  explicit Recorder(const std::filesystem::path& dir);
-  void write(const Simulation& sim);
+  /// nothing. Throws WriteError when it cannot write. Each line is streamed into one reused
+  /// buffer (no JSON document per step); the bytes are those of nlohmann's dump().
+  Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec);
+  ~Recorder();
+  void onStep(const Simulation& sim) override;
   /// Publishes both files, once, after the last step.
   void commit();
 
  private:
   AtomicFile record_;
   AtomicFile timings_;
+  std::unique_ptr<RecordLineWriter> lines_;
+  std::string line_;
 };
 
 /// One step as a JSON line (without the newline).

@@ -45,14 +45,11 @@ RunResult simulate(const ScenarioSpec& spec, const RunOptions& options) {
                       manifestJson(spec, options.command_line) + "\n");
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
-  Recorder recorder(options.out_dir);
+  Recorder recorder(options.out_dir, spec);
   SummaryBuilder summary(spec);
-  while (!sim.done()) {
-    sim.tick();
-    recorder.write(sim);
-    summary.add(sim);
-    if (options.on_step) options.on_step(sim);
-  }
+  std::vector<StepObserver*> observers = {&recorder, &summary};
+  observers.insert(observers.end(), options.observers.begin(), options.observers.end());
+  runToEnd(sim, observers);
   recorder.commit();
   RunResult result;
   result.steps = summary.steps();

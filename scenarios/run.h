@@ -1,10 +1,11 @@
 #pragma once
 // `canopy run`: a scenario to manifest.json, record.jsonl and summary.json in one directory.
 #include <filesystem>
-#include <functional>
 #include <string>
 
-#include "scenarios/simulation.h"
+#include <vector>
+
+#include "scenarios/step_observer.h"
 #include "scenarios/spec.h"
 
 namespace canopy::scenarios {
@@ -12,7 +13,7 @@ namespace canopy::scenarios {
 struct RunOptions {
   std::filesystem::path out_dir;                   // created if missing
   std::string command_line;                        // recorded in the manifest
-  std::function<void(const Simulation&)> on_step;  // e.g. the renderer; may be empty
+  std::vector<StepObserver*> observers;  // after the record and summary, e.g. the frames
 };
 
 struct RunResult {
@@ -24,7 +25,7 @@ struct RunResult {
 /// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
 /// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
 /// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
-/// from on_step) removes whatever of these it wrote, so out_dir never holds a partial record or
+/// from an observer) removes whatever of these it wrote, so out_dir never holds a partial record or
 /// a summary of a run that did not finish.
 RunResult runScenario(const ScenarioSpec& spec, const RunOptions& options);
 

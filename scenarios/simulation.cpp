@@ -1,6 +1,9 @@
 #include "scenarios/simulation.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace canopy::scenarios {
 
@@ -19,25 +22,26 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   return config;
 }
 
-Simulation::Simulation(const ScenarioSpec& spec)
-    : spec_(spec),
-      world_(spec.worldDef()),
-      team_(teamConfig(spec)),
-      target_labels_(spec.targetLabels()) {
-  const std::size_t n = spec.uavs.size();
-  for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec.seed, "sensing", i);
+Simulation::Simulation(ScenarioSpec spec)
+    : spec_(std::move(spec)),
+      world_(spec_.worldDef()),
+      team_(teamConfig(spec_)),
+      target_labels_(spec_.targetLabels()) {
+  const std::size_t n = spec_.uavs.size();
+  for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec_.seed, "sensing", i);
   scans_.resize(n);
   footprints_.resize(n);
   positions_.resize(n);
   yaws_.resize(n);
-  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec.planner.plan_period / spec.dt)));
-  if (spec.tracking.preseed) {
+  commands_.assign(n, Vec2::Zero());
+  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec_.planner.plan_period / spec_.dt)));
+  if (spec_.tracking.preseed) {
     // Paper: every OOI starts with a track of the same P₀ at every agent, centred on the truth.
-    for (std::size_t t = 0; t < spec.targets.size(); ++t) {
-      const world::Path& path = spec.targets[t].path;
+    for (std::size_t t = 0; t < spec_.targets.size(); ++t) {
+      const world::Path& path = spec_.targets[t].path;
       Vec4 state;
       state << path.positionAt(0.0), path.velocityAt(0.0);
-      team_.preseed(static_cast<int>(t), spec.targets[t].label, state);
+      team_.preseed(static_cast<int>(t), spec_.targets[t].label, state);
     }
   }
 }
@@ -47,9 +51,8 @@ void Simulation::commandScriptedUavs() {
   const double t_next = world_.time() + spec_.dt;
   for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
     const auto& path = spec_.uavs[i].path;
-    const Vec2 command =
+    commands_[i] =
         path ? Vec2((path->positionAt(t_next) - positions_[i]) / spec_.dt) : Vec2::Zero();
-    world_.commandUav(static_cast<int>(i), command);
   }
 }
 
@@ -57,9 +60,17 @@ void Simulation::commandFromPlan() {
   // Receding horizon: plan every plan_period from t = 0, apply the first action, hold it.
   if (truth_.step % steps_per_plan_ != 0) return;
   plan_ = team_.plan(truth_.step / steps_per_plan_, positions_, yaws_);
-  for (std::size_t i = 0; i < plan_->plans.size(); ++i) {
-    world_.commandUav(static_cast<int>(i), plan_->plans[i].command());
-  }
+  for (std::size_t i = 0; i < plan_->plans.size(); ++i) commands_[i] = plan_->plans[i].command();
+}
+
+void Simulation::commandNext(int uav, const Vec2& velocity) {
+  if (next_step_ == 0 || done())
+    throw std::logic_error("Simulation::commandNext: only between ticks, after the first");
+  if (uav < 0 || uav >= static_cast<int>(spec_.uavs.size()))
+    throw std::out_of_range("Simulation::commandNext: no UAV " + std::to_string(uav));
+  if (!velocity.allFinite())
+    throw std::invalid_argument("Simulation::commandNext: velocity not finite");
+  world_.commandUav(uav, velocity);
 }
 
 void Simulation::tick() {
@@ -76,11 +87,14 @@ void Simulation::tick() {
   }
   team_.track(dt, scans_, footprints_, positions_);
   plan_.reset();
-  if (spec_.planner.algorithm == agents::PlannerAlgorithm::none) {
-    commandScriptedUavs();
-  } else {
+  if (team_.plans()) {
     commandFromPlan();
+  } else {
+    commandScriptedUavs();
   }
+  // Every UAV is commanded every step, so an external command (commandNext) lasts one step.
+  for (std::size_t i = 0; i < commands_.size(); ++i)
+    world_.commandUav(static_cast<int>(i), commands_[i]);
   beliefs_ = team_.beliefs();
   ++next_step_;
 }

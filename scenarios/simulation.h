@@ -21,11 +21,24 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec);
 
 class Simulation {
  public:
-  explicit Simulation(const ScenarioSpec& spec);
+  /// Keeps its own copy of the spec: a simulation built from a temporary is safe.
+  explicit Simulation(ScenarioSpec spec);
 
   /// Runs step k = nextStep(): for k = 0 senses the initial state, otherwise applies the
   /// commands set at step k − 1 and advances the world by dt first.
   void tick();
+  /// External command (a custom controller, a Python binding): UAV `uav` flies `velocity` (m/s)
+  /// during the next step, the one the next tick() runs, instead of its planner's or scripted
+  /// command; like those it is clamped to the UAV's v_max (World::commandUav). It holds for that
+  /// one step: the tick after it commands the UAV from its planner (the command held since the
+  /// last planning epoch) or its path again, so a controller calls it before every tick it wants
+  /// to steer. Planning epochs are untouched: the planner still plans on its schedule from the
+  /// true positions, and its plan and intentions are recorded and published as if flown. What was
+  /// flown is the next step's truth (uavs[i].velocity); world().commandedVelocity(uav) reports
+  /// the clamped command until then. Call between ticks, after the first and before done();
+  /// throws std::logic_error otherwise, std::out_of_range for an unknown UAV and
+  /// std::invalid_argument for a non-finite velocity.
+  void commandNext(int uav, const Vec2& velocity);
   /// True once steps 0..K have all run.
   bool done() const { return next_step_ > spec_.steps(); }
   /// The step the next tick() runs.
@@ -47,7 +60,7 @@ class Simulation {
   void commandScriptedUavs();
   void commandFromPlan();
 
-  const ScenarioSpec& spec_;
+  const ScenarioSpec spec_;
   world::World world_;
   agents::Team team_;
   std::vector<sensing::LabelId> target_labels_;
@@ -59,6 +72,7 @@ class Simulation {
   std::vector<Vec2> positions_;
   std::vector<double> yaws_;
   std::vector<agents::AgentBelief> beliefs_;
+  std::vector<Vec2> commands_;  // m/s, per UAV: its planner's or path's command, before clamping
   std::optional<agents::planning::TeamPlan> plan_;
   int steps_per_plan_ = 1;
   int next_step_ = 0;

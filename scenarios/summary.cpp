@@ -6,11 +6,17 @@
 namespace canopy::scenarios {
 
 SummaryBuilder::SummaryBuilder(const ScenarioSpec& spec)
-    : spec_(spec),
+    : names_{spec.name, spec.seed, spec.dt, spec.trees.size(), {}, {}, {}},
       targets_(spec.targets.size()),
       uavs_(spec.uavs.size()),
       ospa_(spec.uavs.size()),
-      plan_seconds_(spec.uavs.size()) {}
+      plan_seconds_(spec.uavs.size()) {
+  for (const TargetSpec& target : spec.targets) {
+    names_.targets.push_back(target.name);
+    names_.target_labels.push_back(spec.labels[target.label]);
+  }
+  for (const UavSpec& uav : spec.uavs) names_.uavs.push_back(uav.name);
+}
 
 namespace {
 double mean(const std::vector<double>& x) {
@@ -26,7 +32,7 @@ double median(std::vector<double> x) {
 }
 }  // namespace
 
-void SummaryBuilder::add(const Simulation& sim) {
+void SummaryBuilder::onStep(const Simulation& sim) {
   const world::WorldSnapshot& truth = sim.truth();
   if (!last_uav_position_.empty()) {
     for (std::size_t i = 0; i < uavs_.size(); ++i) {
@@ -65,7 +71,14 @@ void SummaryBuilder::add(const Simulation& sim) {
     for (const auto& report : sim.plan()->reports)
       plan_seconds_[report.agent].push_back(report.seconds);
   }
-  team_ = &sim.team();
+  const agents::Team& team = sim.team();
+  agents_at_end_.resize(team.agents().size());
+  for (std::size_t i = 0; i < agents_at_end_.size(); ++i) {
+    const auto& tracker = team.agents()[i].tracker();
+    agents_at_end_[i] = {tracker.targets().size(), team.agents()[i].map().trees().size(),
+                         tracker.diagnostics()};
+  }
+  fusion_at_end_ = team.fusion().diagnostics();
   ++steps_;
 }
 
@@ -73,18 +86,18 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   using Json = nlohmann::json;
   const double steps = std::max(1, steps_);
   Json summary;
-  summary["scenario"] = spec_.name;
-  summary["seed"] = spec_.seed;
+  summary["scenario"] = names_.scenario;
+  summary["seed"] = names_.seed;
   summary["steps"] = steps_;
-  summary["dt"] = spec_.dt;
-  summary["trees"] = spec_.trees.size();
+  summary["dt"] = names_.dt;
+  summary["trees"] = names_.trees;
   Json targets = Json::array();
   double visible_sum = 0.0;
   for (std::size_t t = 0; t < targets_.size(); ++t) {
     const TargetTally& tally = targets_[t];
     visible_sum += tally.steps_visible / steps;
-    targets.push_back({{"name", spec_.targets[t].name},
-                       {"label", spec_.labels[spec_.targets[t].label]},
+    targets.push_back({{"name", names_.targets[t]},
+                       {"label", names_.target_labels[t]},
                        {"visible_fraction", tally.steps_visible / steps},
                        {"in_footprint_fraction", tally.steps_in_footprint / steps},
                        {"mean_coverage", static_cast<double>(tally.coverage) / steps}});
@@ -94,27 +107,27 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   double ospa_sum = 0.0;
   Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
-    Json uav = {{"name", spec_.uavs[i].name},
+    Json uav = {{"name", names_.uavs[i]},
                 {"distance_m", uavs_[i].distance},
                 {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
                 {"observations", uavs_[i].observations},
                 {"ospa_mean_m", mean(ospa_[i])},
                 {"ospa_m", ospa_[i]}};
-    if (team_) {
-      const auto& tracker = team_->agents()[i].tracker();
-      uav["tracks_at_end"] = tracker.targets().size();
-      uav["trees_in_map_at_end"] = team_->agents()[i].map().trees().size();
+    if (i < agents_at_end_.size()) {
+      const AgentAtEnd& end = agents_at_end_[i];
+      uav["tracks_at_end"] = end.tracks;
+      uav["trees_in_map_at_end"] = end.trees_in_map;
       uav["tracking_diagnostics"] = {
-          {"births", tracker.diagnostics().births},
-          {"deletions", tracker.diagnostics().deletions},
-          {"approximated_clusters", tracker.diagnostics().approximated_clusters},
-          {"non_positive_covariances", tracker.diagnostics().non_positive_covariances}};
+          {"births", end.tracking.births},
+          {"deletions", end.tracking.deletions},
+          {"approximated_clusters", end.tracking.approximated_clusters},
+          {"non_positive_covariances", end.tracking.non_positive_covariances}};
     }
     uavs.push_back(std::move(uav));
     ospa_sum += mean(ospa_[i]);
     if (!plan_seconds_[i].empty()) {
       plan_timing.push_back(
-          {{"name", spec_.uavs[i].name},
+          {{"name", names_.uavs[i]},
            {"epochs", plan_seconds_[i].size()},
            {"mean_s", mean(plan_seconds_[i])},
            {"median_s", median(plan_seconds_[i])},
@@ -128,8 +141,8 @@ std::string SummaryBuilder::json(double wall_seconds) const {
       {"ospa_mean_m", uavs_.empty() ? 0.0 : ospa_sum / static_cast<double>(uavs_.size())},
       {"ospa_cutoff_m", 50.0},
       {"ospa_order", 2}};
-  if (team_) {
-    const auto& d = team_->fusion().diagnostics();
+  if (steps_ > 0) {
+    const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
     summary["fusion_diagnostics"] = {{"messages", d.messages},
                                      {"lost_messages", d.lost_messages},
                                      {"adoptions", d.adoptions},

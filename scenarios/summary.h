@@ -1,17 +1,22 @@
 #pragma once
 // summary.json: what a run amounted to, accumulated step by step.
+#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "agents/fusion/fusion_diagnostics.h"
+#include "agents/tracking/track.h"
 #include "scenarios/ospa.h"
-#include "scenarios/simulation.h"
+#include "scenarios/step_observer.h"
 
 namespace canopy::scenarios {
 
-class SummaryBuilder {
+/// Keeps values only: the names it reports, copied from the spec, and the team's counts as of the
+/// last step added; it holds no reference to the spec or into the simulation.
+class SummaryBuilder final : public StepObserver {
  public:
   explicit SummaryBuilder(const ScenarioSpec& spec);
-  void add(const Simulation& sim);
+  void onStep(const Simulation& sim) override;
   /// The summary as pretty JSON; wall times go under "timing" (the only non-deterministic
   /// fields).
   std::string json(double wall_seconds) const;
@@ -34,7 +39,18 @@ class SummaryBuilder {
   const std::vector<std::vector<double>>& ospa() const { return ospa_; }
 
  private:
-  const ScenarioSpec& spec_;
+  struct Names {
+    std::string scenario;
+    std::uint64_t seed = 0;
+    double dt = 0.0;  // s
+    std::size_t trees = 0;
+    std::vector<std::string> targets, target_labels, uavs;
+  };
+  struct AgentAtEnd {  // one agent's counts at the last step added
+    std::size_t tracks = 0, trees_in_map = 0;
+    agents::tracking::TrackingDiagnostics tracking;
+  };
+  Names names_;
   std::vector<TargetTally> targets_;
   std::vector<UavTally> uavs_;
   std::vector<Vec2> last_uav_position_;
@@ -44,7 +60,8 @@ class SummaryBuilder {
   std::vector<std::vector<double>> ospa_;          // [agent][k], m
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
-  const agents::Team* team_ = nullptr;             // for the diagnostics at the end
+  std::vector<AgentAtEnd> agents_at_end_;  // empty until a step was added
+  agents::fusion::FusionDiagnostics fusion_at_end_;
   int steps_ = 0;
 };
 

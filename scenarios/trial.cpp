@@ -25,7 +25,7 @@ TrialCollector::TrialCollector(const ScenarioSpec& spec) {
   masks_ = result_.targets <= kMaxMaskTargets;
 }
 
-void TrialCollector::add(const Simulation& sim) {
+void TrialCollector::onStep(const Simulation& sim) {
   const int k = sim.truth().step;
   std::vector<TargetBits> visible(result_.uavs, 0), in_footprint(result_.uavs, 0);
   for (const sensing::Scan& scan : sim.scans()) {
@@ -72,10 +72,8 @@ TrialResult runTrial(const ScenarioSpec& spec, const std::string& config_id) {
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec);
   TrialCollector collector(spec);
-  while (!sim.done()) {
-    sim.tick();
-    collector.add(sim);
-  }
+  StepObserver* const observers[] = {&collector};
+  runToEnd(sim, observers);
   TrialResult result = collector.take();
   result.config_id = config_id;
   result.wall_seconds =

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "scenarios/ospa.h"
-#include "scenarios/simulation.h"
+#include "scenarios/step_observer.h"
 #include "scenarios/spec.h"
 
 namespace canopy::scenarios {
@@ -34,10 +34,10 @@ struct TrialResult {
 };
 
 /// Accumulates a TrialResult step by step from a running Simulation.
-class TrialCollector {
+class TrialCollector final : public StepObserver {
  public:
   explicit TrialCollector(const ScenarioSpec& spec);
-  void add(const Simulation& sim);
+  void onStep(const Simulation& sim) override;
   TrialResult take() { return std::move(result_); }
 
  private:

@@ -113,9 +113,14 @@ TEST(RunFrames, ARunWithFramesUsesOneGlContextAndARunWithoutNone) {
   FrameWriter writer(model, frames);
   scenarios::RunOptions framed;
   framed.out_dir = dir / "framed";
-  framed.on_step = [&writer](const scenarios::Simulation& sim) {
-    writer.onStep(sim.truth(), sim.beliefs());
-  };
+  struct Frames final : scenarios::StepObserver {
+    FrameWriter& writer;
+    explicit Frames(FrameWriter& w) : writer(w) {}
+    void onStep(const scenarios::Simulation& sim) override {
+      writer.onStep(sim.truth(), sim.beliefs());
+    }
+  } frames_observer(writer);
+  framed.observers = {&frames_observer};
   scenarios::runScenario(spec, framed);
   EXPECT_EQ(glContextsCreated(), before + 1);
   EXPECT_EQ(writer.framesWritten(), 5);  // steps 0, 5, 10, 15, 20 of 0..20

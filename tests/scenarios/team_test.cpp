@@ -112,10 +112,8 @@ TEST(Team, FusedTracksConvergeOnTheTruth) {
   const ScenarioSpec spec = load(kWatched);
   Simulation sim(spec);
   SummaryBuilder summary(spec);
-  while (!sim.done()) {
-    sim.tick();
-    summary.add(sim);
-  }
+  StepObserver* const observers[] = {&summary};
+  runToEnd(sim, observers);
   for (const auto& ospa : summary.ospa()) {
     // Before the first tracks are confirmed OSPA is the cut-off; it then falls to the filtered
     // position error. At about 10 m range the measurement σ is at most √(0.1·π·0.3·10) ≈ 1 m, so

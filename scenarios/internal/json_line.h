@@ -1,0 +1,47 @@
+#pragma once
+// A JSON text written straight into a string, value by value, without a document object: the
+// record's per-step line (recorder.cpp). Its bytes are those nlohmann::json::dump() gives for the
+// same values (compact, no spaces): doubles through nlohmann's own shortest round-trip formatter
+// (nlohmann::detail::to_chars, what dump() calls), non-finite doubles as null, integers in
+// decimal. Keys are the caller's literals and must be written in dump()'s order (sorted by
+// byte); strings from user files go through dump() itself (JsonLine::escaped).
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace canopy::scenarios::internal {
+
+class JsonLine {
+ public:
+  /// Appends to `out` (which it does not clear).
+  explicit JsonLine(std::string& out) : out_(out) {}
+
+  void beginObject() { open('{'); }
+  void endObject() { close('}'); }
+  void beginArray() { open('['); }
+  void endArray() { close(']'); }
+  /// An object's key: a plain literal that needs no escaping. The next value belongs to it.
+  void key(std::string_view name);
+
+  void number(double value);
+  void integer(long long value);
+  void boolean(bool value);
+  /// A string value already escaped and quoted (see escaped()).
+  void escapedString(std::string_view quoted);
+
+  /// `text` as dump() writes a JSON string: quoted and escaped; throws nlohmann's type_error 316
+  /// on invalid UTF-8, as dump() does.
+  static std::string escaped(const std::string& text);
+
+ private:
+  void separate();
+  void open(char bracket);
+  void close(char bracket);
+
+  std::string& out_;
+  std::uint64_t has_member_ = 0;  // bit d: the open container at depth d holds a value already
+  int depth_ = 0;
+  bool after_key_ = false;
+};
+
+}  // namespace canopy::scenarios::internal
