@@ -16,19 +16,6 @@ Footprint Footprint::place(const FootprintDef& def, const Vec2& centre, double y
   return f;
 }
 
-bool Footprint::contains(const Vec2& p) const {
-  const Vec2 d = p - centre;
-  if (shape == FootprintShape::disc) {
-    const double r = radius + kFootprintSlack;
-    return d.squaredNorm() <= r * r;
-  }
-  // Into the footprint's frame: rotate d by −ψ.
-  const double along = cos_yaw * d.x() + sin_yaw * d.y();
-  const double across = -sin_yaw * d.x() + cos_yaw * d.y();
-  return std::abs(along) <= half.x() + kFootprintSlack &&
-         std::abs(across) <= half.y() + kFootprintSlack;
-}
-
 Aabb Footprint::bounds() const {
   Vec2 extent;
   if (shape == FootprintShape::disc) {

@@ -1,5 +1,7 @@
 #pragma once
 // Camera footprints φ_i: the ground area a downward camera sees (algorithms.md §3).
+#include <cmath>
+
 #include "core/types.h"
 
 namespace canopy::sensing {
@@ -35,5 +37,19 @@ struct Footprint {
 
 /// Tolerance of the closed-set test (m).
 inline constexpr double kFootprintSlack = 1e-9;
+
+// Inline: the planner's cost asks it for every target at every sample of every candidate plan.
+inline bool Footprint::contains(const Vec2& p) const {
+  const Vec2 d = p - centre;
+  if (shape == FootprintShape::disc) {
+    const double r = radius + kFootprintSlack;
+    return d.squaredNorm() <= r * r;
+  }
+  // Into the footprint's frame: rotate d by −ψ.
+  const double along = cos_yaw * d.x() + sin_yaw * d.y();
+  const double across = -sin_yaw * d.x() + cos_yaw * d.y();
+  return std::abs(along) <= half.x() + kFootprintSlack &&
+         std::abs(across) <= half.y() + kFootprintSlack;
+}
 
 }  // namespace canopy::sensing
