@@ -76,32 +76,37 @@ std::vector<WastedCoverageCase> wastedCases(const std::vector<ExperimentResult>&
   return cases;
 }
 
-std::optional<CatchUpFinding> catchUp(const std::vector<ExperimentResult>& results) {
+// Occlusion Sharing's coverage of `target` while it is hidden (its first occluded interval under
+// the a-priori map), per map: a-priori, dynamic, none; nothing when a piece is missing.
+struct CoverageByMap {
+  Estimate a_priori, dynamic, none;
+};
+
+std::optional<CoverageByMap> sharingCoverageWhileHidden(const std::vector<ExperimentResult>& results,
+                                                        const std::string& target_name) {
   const ExperimentResult* os = findExperiment(results, "occlusion_sharing");
   if (!os) return std::nullopt;
-  const int III = targetIndex(os->analysis, "III");
+  const int target = targetIndex(os->analysis, target_name);
   const ConfigStatistics* apr = findConfig(*os, "planner.occlusion_map", "a_priori");
   const ConfigStatistics* dyn = findConfig(*os, "planner.occlusion_map", "dynamic");
   const ConfigStatistics* none = findConfig(*os, "planner.occlusion_map", "none");
-  const OcclusionStatistics* hidden = apr && III >= 0 ? episode(*apr, III) : nullptr;
+  const OcclusionStatistics* hidden = apr && target >= 0 ? episode(*apr, target) : nullptr;
   if (!apr || !dyn || !none || !hidden) return std::nullopt;
-  return CatchUpFinding{apr->coverageOver(III, hidden->hidden),
-                        dyn->coverageOver(III, hidden->hidden),
-                        none->coverageOver(III, hidden->hidden)};
+  return CoverageByMap{apr->coverageOver(target, hidden->hidden),
+                       dyn->coverageOver(target, hidden->hidden),
+                       none->coverageOver(target, hidden->hidden)};
+}
+
+std::optional<CatchUpFinding> catchUp(const std::vector<ExperimentResult>& results) {
+  const auto c = sharingCoverageWhileHidden(results, "III");
+  if (!c) return std::nullopt;
+  return CatchUpFinding{c->a_priori, c->dynamic, c->none};
 }
 
 std::optional<FirstOcclusionRanking> firstRanking(const std::vector<ExperimentResult>& results) {
-  const ExperimentResult* os = findExperiment(results, "occlusion_sharing");
-  if (!os) return std::nullopt;
-  const int I = targetIndex(os->analysis, "I");
-  const ConfigStatistics* apr = findConfig(*os, "planner.occlusion_map", "a_priori");
-  const ConfigStatistics* dyn = findConfig(*os, "planner.occlusion_map", "dynamic");
-  const ConfigStatistics* none = findConfig(*os, "planner.occlusion_map", "none");
-  const OcclusionStatistics* hidden = apr && I >= 0 ? episode(*apr, I) : nullptr;
-  if (!apr || !dyn || !none || !hidden) return std::nullopt;
-  return FirstOcclusionRanking{apr->coverageOver(I, hidden->hidden),
-                               dyn->coverageOver(I, hidden->hidden),
-                               none->coverageOver(I, hidden->hidden)};
+  const auto c = sharingCoverageWhileHidden(results, "I");
+  if (!c) return std::nullopt;
+  return FirstOcclusionRanking{c->a_priori, c->dynamic, c->none};
 }
 
 std::vector<ReactionRow> reactionRows(const std::vector<ExperimentResult>& results) {
