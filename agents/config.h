@@ -85,7 +85,11 @@ struct PsoConfig {
 struct PlannerConfig {
   PlannerAlgorithm algorithm = PlannerAlgorithm::none;  // none: UAVs follow scripted paths
   int horizon = 5;                                      // H planning steps
-  double plan_period = 1.0;  // s, Δ between planning steps and between epochs
+  double plan_period = 1.0;  // s, Δ: the length of each planned action
+  // s, between planning epochs; the loader defaults it to plan_period (the paper's setting). A
+  // shorter period re-plans inside an action: the actions stay Δ long, intentions and warm starts
+  // are shifted by the time elapsed (docs/design-notes.md).
+  double replan_period = 1.0;
   OcclusionMapMode occlusion_map = OcclusionMapMode::dynamic;
   double discount = 1.0;    // γ
   bool full_trace = false;  // cost on tr(P) instead of tr(P_pos)

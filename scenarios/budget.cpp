@@ -55,7 +55,7 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   work.fusion_units = steps * spec.fusion.rounds * uavs * uavs * std::max(1.0, targets);
   const agents::PlannerConfig& p = spec.planner;
   if (p.algorithm != agents::PlannerAlgorithm::none) {
-    const double epochs = spec.duration / p.plan_period + 1.0;
+    const double epochs = spec.duration / p.replan_period + 1.0;
     const double particles = static_cast<double>(p.pso.particles_per_step) * p.horizon;
     const bool blocks = p.algorithm != agents::PlannerAlgorithm::sma &&
                         p.joint_search == agents::JointSearch::block_coordinate;

@@ -34,7 +34,7 @@ Simulation::Simulation(ScenarioSpec spec)
   positions_.resize(n);
   yaws_.resize(n);
   commands_.assign(n, Vec2::Zero());
-  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec_.planner.plan_period / spec_.dt)));
+  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec_.planner.replan_period / spec_.dt)));
   if (spec_.tracking.preseed) {
     // Paper: every OOI starts with a track of the same P₀ at every agent, centred on the truth.
     for (std::size_t t = 0; t < spec_.targets.size(); ++t) {
@@ -57,7 +57,7 @@ void Simulation::commandScriptedUavs() {
 }
 
 void Simulation::commandFromPlan() {
-  // Receding horizon: plan every plan_period from t = 0, apply the first action, hold it.
+  // Receding horizon: plan every replan_period from t = 0, apply the first action, hold it.
   if (truth_.step % steps_per_plan_ != 0) return;
   plan_ = team_.plan(truth_.step / steps_per_plan_, positions_, yaws_);
   for (std::size_t i = 0; i < plan_->plans.size(); ++i) commands_[i] = plan_->plans[i].command();

@@ -10,10 +10,20 @@ Vec2 Plan::action(int m) const {
   return velocities[std::min<std::size_t>(std::max(m, 0), velocities.size() - 1)];
 }
 
-Plan shiftedPlan(const Plan& plan, int steps, int horizon) {
+Plan shiftedPlan(const Plan& plan, double actions, int horizon) {
+  const double whole = std::floor(actions);
+  const int k = static_cast<int>(whole);
+  const double f = actions - whole;  // the part of action k already flown, in [0, 1)
   Plan shifted;
   shifted.velocities.reserve(horizon);
-  for (int m = 0; m < horizon; ++m) shifted.velocities.push_back(plan.action(m + steps));
+  for (int m = 0; m < horizon; ++m) {
+    if (f == 0.0) {
+      shifted.velocities.push_back(plan.action(m + k));
+    } else {
+      // mean velocity over [t + (m + k + f)·Δ, t + (m + k + 1 + f)·Δ]
+      shifted.velocities.push_back((1.0 - f) * plan.action(m + k) + f * plan.action(m + k + 1));
+    }
+  }
   return shifted;
 }
 

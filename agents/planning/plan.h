@@ -19,10 +19,13 @@ struct Plan {
   Vec2 action(int m) const;
 };
 
-/// The intention a plan leaves `steps` epochs later (paper eq. 7): the plan shifted by `steps`,
-/// padded to `horizon` actions by repeating its last action; an empty plan gives hovering. The
-/// result's cost is 0 (it was not optimised).
-Plan shiftedPlan(const Plan& plan, int steps, int horizon);
+/// The intention a plan leaves `actions` actions later (paper eq. 7): the plan shifted by that
+/// many actions, padded to `horizon` actions by repeating its last action; an empty plan gives
+/// hovering. The result's cost is 0 (it was not optimised). A whole shift k moves action m + k to
+/// m. A fractional shift k + f (re-planning inside an action) gives each new action the mean
+/// velocity over its interval, (1 − f)·a_{m+k} + f·a_{m+k+1}, so that the new plan reaches the
+/// old plan's ground points at the new plan instants exactly.
+Plan shiftedPlan(const Plan& plan, double actions, int horizon);
 
 /// A plan of `horizon` zero velocities.
 Plan hoverPlan(int horizon);

@@ -24,6 +24,11 @@ double secondsSince(Clock::time_point start) {
 TeamPlanner::TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed)
     : config_(config), settings_(CostSettings::from(config, sigma_a)), seed_(seed) {}
 
+double TeamPlanner::actionsSince(int earlier_epoch, int epoch) const {
+  // Epochs are replan_period apart, actions plan_period long.
+  return (epoch - earlier_epoch) * (config_.replan_period / config_.plan_period);
+}
+
 TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
                            std::span<const AgentView> views) {
   const int n = static_cast<int>(uavs.size());
@@ -79,7 +84,7 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
   std::vector<int> joint_epoch(n, -1);
   for (int i = 0; i < n; ++i) {
     const IntentionMessage& last = published_[i];
-    joint[i] = last.epoch < 0 ? hoverPlan(H) : shiftedPlan(last.plan, out.epoch - last.epoch, H);
+    joint[i] = last.epoch < 0 ? hoverPlan(H) : shiftedPlan(last.plan, actionsSince(last.epoch, out.epoch), H);
     joint_epoch[i] = last.epoch;
   }
   for (const int i : order_) {
@@ -144,7 +149,7 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
   std::vector<Plan> warm;
   if (last_joint_epoch_[planner] >= 0) {
     for (const Plan& previous : last_joint_[planner]) {
-      warm.push_back(shiftedPlan(previous, out.epoch - last_joint_epoch_[planner], H));
+      warm.push_back(shiftedPlan(previous, actionsSince(last_joint_epoch_[planner], out.epoch), H));
     }
   }
   const PlanningProblem problem{view.tracks, uavs, view.map, settings_};

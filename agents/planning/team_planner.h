@@ -62,11 +62,11 @@ class TeamPlanner {
   /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index).
   TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed);
 
-  /// One planning epoch (epochs increase by one per plan_period). uavs and views: one per UAV,
+  /// One planning epoch (epochs increase by one per replan_period; actions last plan_period). uavs and views: one per UAV,
   /// by index, the same team size at every call. With algorithm `none` every UAV hovers.
   /// SMA-NBO: agents plan in `order`; agent i optimises its own H actions against the new plans
   /// of the agents before it and the intentions of those after it (their latest plan shifted by
-  /// the epochs elapsed, a missing step repeating the last action; hover without a plan), then
+  /// the time elapsed, a missing step repeating the last action; hover without a plan), then
   /// publishes {i, i, epoch, plan}. Dec-POMDP: each agent optimises all N·H actions on its own
   /// view and applies its own; no messages. Centralised: the first agent in `order` optimises the
   /// joint plan on its view and publishes each UAV's part ({leader, i, epoch, plan_i}).
@@ -78,6 +78,8 @@ class TeamPlanner {
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
                       std::span<const AgentView> views);
   void planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs, const AgentView& view);
+  /// Actions (of plan_period) elapsed from one epoch to a later one.
+  double actionsSince(int earlier_epoch, int epoch) const;
   PlanSearch searchByBlocks(const PlanningProblem& problem, std::span<const Plan> warm,
                             RandomStream& rng);
 

@@ -109,6 +109,15 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
     text << "expected a whole multiple of clock.dt (" << spec.dt << " s), got " << p.plan_period;
     reader.required("plan_period").fail(text.str());
   }
+  p.replan_period = reader.number("replan_period", p.plan_period, Bound::positive);
+  const double replans = p.replan_period / spec.dt;
+  if (std::abs(replans - std::round(replans)) > 1e-6 * replans ||
+      p.replan_period > p.plan_period * (1.0 + 1e-9)) {
+    std::ostringstream text;
+    text << "expected a whole multiple of clock.dt (" << spec.dt
+         << " s) no longer than plan_period (" << p.plan_period << " s), got " << p.replan_period;
+    reader.required("replan_period").fail(text.str());
+  }
   p.occlusion_map = reader.enumeration("occlusion_map", agents::kOcclusionMapModeNames, p.occlusion_map);
   p.discount = reader.number("discount", p.discount, Bound::unit_interval);
   p.full_trace = reader.choice("cost_trace", {"position", "full"}, p.full_trace ? 1 : 0) == 1;

@@ -203,6 +203,14 @@ const std::vector<Case>& cases() {
       {"PlanPeriodNotAMultipleOfDt",
        base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"plan_period": 0.3})"),
        {"planner.plan_period: expected a whole multiple of clock.dt (0.2 s)"}},
+      {"ReplanPeriodNotAMultipleOfDt",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"replan_period": 0.5})"),
+       {"planner.replan_period: expected a whole multiple of clock.dt (0.2 s) no longer than "
+        "plan_period (1 s), got 0.5"}},
+      {"ReplanPeriodLongerThanTheAction",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"replan_period": 2})"),
+       {"planner.replan_period: expected a whole multiple of clock.dt (0.2 s) no longer than "
+        "plan_period (1 s), got 2"}},
       {"GateProbabilityOne",
        base("[{\"start\": [10, 10]}]", "[]", R"(, "tracking": {"gate_probability": 1.0})"),
        {"tracking.gate_probability: expected a probability in (0, 1)"}},

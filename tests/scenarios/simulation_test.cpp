@@ -105,6 +105,21 @@ TEST(Simulation, ExternalCommandLeavesOtherUavsAndPlanningEpochsAlone) {
   EXPECT_NE(free.truth().uavs[0].velocity, v);
 }
 
+TEST(Simulation, ReplanPeriodDefaultsToThePlanPeriodAndSetsTheEpochs) {
+  EXPECT_EQ(shortRun("trajectory_handover").planner.replan_period, 1.0);
+  LoadOptions load;
+  load.overrides = {"clock.duration=1.0", "planner.replan_period=0.2"};
+  Simulation sim(loadScenario("trajectory_handover", load));
+  EXPECT_EQ(sim.stepsPerPlan(), 1);
+  int epoch = 0;
+  while (!sim.done()) {
+    sim.tick();
+    ASSERT_TRUE(sim.plan().has_value()) << "step " << sim.truth().step;
+    EXPECT_EQ(sim.plan()->epoch, epoch++);  // one epoch per 0.2 s step
+  }
+  EXPECT_EQ(epoch, 6);
+}
+
 TEST(Simulation, ExternalCommandRefusedOutsideTheRun) {
   Simulation sim(shortRun("demo", 0.4));
   EXPECT_THROW(sim.commandNext(0, Vec2::Zero()), std::logic_error);  // before the first tick

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -70,6 +71,49 @@ TEST(Plan, IntentionShiftsRepeatsTheLastActionAndHoversWhenEmpty) {
   EXPECT_EQ(shiftedPlan(Plan{}, 1, 2).velocities, hoverPlan(2).velocities);
   EXPECT_EQ(p.command(), Vec2(1, 0));
   EXPECT_EQ(Plan{}.command(), Vec2(0, 0));
+}
+
+// Re-planning 0.2 s into a 1 s action: each new action is the mean velocity of the old plan over
+// its new 1 s interval, 0.8·a_m + 0.2·a_{m+1} (by hand), so the shifted plan reaches the old
+// plan's ground points at the new plan instants t + 0.2 + m exactly.
+TEST(Plan, FractionalShiftFollowsTheOldPathThroughTheNewInstants) {
+  Plan p;
+  p.velocities = {Vec2(1, 0), Vec2(0, 2), Vec2(-3, 1)};
+  const Plan s = shiftedPlan(p, 0.2, 3);
+  ASSERT_EQ(s.velocities.size(), 3u);
+  EXPECT_NEAR((s.velocities[0] - Vec2(0.8, 0.4)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((s.velocities[1] - Vec2(-0.6, 1.8)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((s.velocities[2] - Vec2(-3.0, 1.0)).norm(), 0.0, 1e-15);  // the last repeats
+  // The old path: p(τ) = ∫₀^τ a, piecewise linear; the new plan from p(0.2) at instants 0.2 + m.
+  const auto old_path = [&](double tau) {
+    Vec2 x = Vec2::Zero();
+    for (int m = 0; tau > 0.0; ++m, tau -= 1.0) x += p.action(m) * std::min(tau, 1.0);
+    return x;
+  };
+  Vec2 x = old_path(0.2);
+  for (int m = 0; m < 3; ++m) {
+    x += s.velocities[m];
+    EXPECT_NEAR((x - old_path(1.2 + m)).norm(), 0.0, 1e-12) << "instant " << m;
+  }
+  // 1.2 actions: one whole action dropped, then the same rule.
+  const Plan s12 = shiftedPlan(p, 1.2, 2);
+  EXPECT_NEAR((s12.velocities[0] - Vec2(-0.6, 1.8)).norm(), 0.0, 1e-15);
+  // A whole shift is the old rule exactly.
+  EXPECT_EQ(shiftedPlan(p, 2.0, 2).velocities[0], Vec2(-3, 1));
+}
+
+// Epochs every 0.2 s with 1 s actions: the last agent's intention one epoch later is its plan
+// shifted by 0.2 of an action, not by a whole action.
+TEST(TeamPlanner, ReplanningInsideAnActionShiftsIntentionsByTheTimeElapsed) {
+  PlannerConfig c = config(PlannerAlgorithm::sma);
+  c.replan_period = 0.2;
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 7);
+  const TeamPlan e0 = planner.plan(0, team.uavs, team.views());
+  team.apply(e0, c.replan_period);
+  const TeamPlan e1 = planner.plan(1, team.uavs, team.views());
+  EXPECT_EQ(e1.reports[0].joint[2].velocities, shiftedPlan(messageFrom(e0, 2).plan, 0.2, 3).velocities);
+  EXPECT_EQ(e1.reports[0].joint_epoch[2], 0);
 }
 
 // The middle agent of the order sees the first agent's new plan of this epoch and the last
