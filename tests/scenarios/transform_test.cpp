@@ -10,9 +10,9 @@ namespace canopy::scenarios {
 namespace {
 
 TEST(Placement, MirrorMapsEveryPositionVelocityAndHeading) {
-  const ScenarioSpec spec = loadScenario("joint_effect");
+  const ScenarioSpec spec = loadScenario("joint_effect_v2");
   const ScenarioSpec m = placed(spec, Placement::mirrorX());
-  // Hand-derived from joint_effect.json: I from (−20, 4) at (2.5, 0) m/s; the tree at (−11, 4).
+  // Hand-derived from joint_effect_v2.json: I from (−20, 4) at (2.5, 0) m/s; the tree at (−11, 4).
   EXPECT_EQ(m.targets[0].path.start(), Vec2(20, 4));
   EXPECT_EQ(m.targets[0].path.velocity(), Vec2(-2.5, 0));
   EXPECT_EQ(m.trees[0].centre, Vec2(11, 4));

@@ -2,6 +2,7 @@
 """The calibration's selection rule (docs/calibration.md), applied to an analysed search sweep.
 
     python3 select_layout.py SWEEP_DIR ra|je|th|os
+    python3 select_layout.py SWEEP_DIR je2 REPLAN_PERIOD
 
 For every layout (a point of the two layout axes) the loss is the largest deviation, in
 percentage points, of our numbers from the paper's; a layout is scored by the worst loss over
@@ -26,7 +27,7 @@ PAPER = {
 
 
 KEYS = ("gap", "distance", "algorithm", "horizon", "spacing", "ii_speed", "speed", "occlusion_map",
-        "side")
+        "side", "length", "replan_period")
 
 
 def parse(config):
@@ -95,6 +96,67 @@ def je_loss(n):
     return max(abs(n[mode] - target) for mode, target in PAPER["je"].items()) * 100.0 / 2.2
 
 
+def je2_numbers(sweep_dir, replan):
+    """je_numbers for the second search (docs/calibration.md), at one decision period: per
+    layout (footprint length along the walk, speed) and map, the onset and the mean coverage of I
+    and II while I is hidden."""
+    curves = defaultdict(lambda: defaultdict(list))
+    for row in csv.DictReader(open(f"{sweep_dir}/analysis/coverage.csv")):
+        curves[row["config"]][row["target"]].append((float(row["t_s"]), float(row["mean_coverage"])))
+    numbers = defaultdict(dict)
+    for config, by_target in curves.items():
+        p = parse(config)
+        if float(p["replan_period"]) != float(replan):
+            continue
+        layout, mode = (p["length"], p["speed"]), p["occlusion_map"]
+        onset = [t for t, c in by_target["I"] if c < 0.9]
+        numbers[layout][mode] = onset[0] if onset else by_target["I"][-1][0]
+        for name in ("I", "II"):
+            hidden = [c for t, c in by_target[name] if 2.2 < t < 5.0]
+            numbers[layout][f"cover_{name}_{mode}"] = sum(hidden) / len(hidden)
+    return numbers
+
+
+JE2_SPACING = 8.0  # m, tracks apart: a 6 m wide footprint cannot hold both, 2 m spare
+
+
+def je2_feasible(layout):
+    """Every prose property with 2 m spare: the tree's centre (3.6·speed ahead of I's start)
+    outside the initial footprints (half their length ahead), II outside UAV1's initial footprint
+    and no footprint holding both tracks (spacing ≥ 6 m across + 2 m)."""
+    length, speed = float(layout[0]), float(layout[1])
+    return 3.6 * speed >= length / 2 + 2.0 and JE2_SPACING >= 6.0 + 2.0
+
+
+def je2_loss(n):
+    """Infeasible (inf) unless the paper's qualitative claim holds: both maps cut the coverage of
+    hidden I and raise that of II by at least 0.3 footprints against no map, and with no map the
+    UAVs keep trying (coverage of hidden I at least 0.8). Else the larger onset error (s)."""
+    if n["cover_I_none"] < 0.8:
+        return float("inf")
+    for mode in ("a_priori", "dynamic"):
+        if n[f"cover_I_{mode}"] > n["cover_I_none"] - 0.3 or n[f"cover_II_{mode}"] < n["cover_II_none"] + 0.3:
+            return float("inf")
+    return max(abs(n[mode] - target) for mode, target in PAPER["je"].items())
+
+
+def je2_choose(numbers):
+    """Lowest worst loss over the layout and its neighbours along the speed axis (same footprint);
+    ties go to the layout listed first."""
+    loss = {k: je2_loss(v) for k, v in numbers.items() if je2_feasible(k)}
+    best = None
+    for length in sorted({k[0] for k in loss}, key=float):
+        speeds = sorted({k[1] for k in loss if k[0] == length}, key=float)
+        for j, speed in enumerate(speeds):
+            around = [(length, speeds[b]) for b in (j - 1, j, j + 1) if 0 <= b < len(speeds)]
+            score = max(loss[k] for k in around)
+            shown = " ".join(f"{key}={value:.2f}" for key, value in sorted(numbers[(length, speed)].items()))
+            print(f"{length:>4} {speed:>5}  loss {loss[(length, speed)]:5.2f} s  worst nearby {score:5.2f} s  {shown}")
+            if best is None or score < best[0]:
+                best = (score, length, speed)
+    print(f"chosen: length {best[1]} m × speed {best[2]} m/s (worst onset error nearby {best[0]:.2f} s)")
+
+
 def os_numbers(sweep_dir):
     """Per layout and map: the mean coverage of I while it is hidden (the first occlusion) and of
     III while it is hidden (the second), over the steps at which each is under the crown."""
@@ -149,6 +211,9 @@ def os_choose(numbers):
 
 def main():
     sweep_dir, scenario = sys.argv[1], sys.argv[2]
+    if scenario == "je2":
+        je2_choose(je2_numbers(sweep_dir, sys.argv[3]))
+        return
     numbers = {"ra": ra_numbers, "je": je_numbers, "th": th_numbers, "os": os_numbers}[scenario](sweep_dir)
     paper = PAPER.get(scenario, {})
     if scenario == "os":
