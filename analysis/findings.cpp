@@ -1,6 +1,7 @@
 #include "analysis/findings.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace canopy::analysis {
 namespace {
@@ -61,15 +62,18 @@ std::vector<WastedCoverageCase> wastedCases(const std::vector<ExperimentResult>&
   std::vector<WastedCoverageCase> cases;
   for (const char* scenario : {"joint_effect", "occlusion_sharing"}) {
     const ExperimentResult* r = findExperiment(results, scenario);
-    const ConfigStatistics* none = r ? findConfig(*r, "planner.occlusion_map", "none") : nullptr;
-    if (!none) continue;
-    for (const OcclusionStatistics& o : none->occlusions) {
-      for (const char* map : {"a_priori", "dynamic"}) {
-        const ConfigStatistics* s = findConfig(*r, "planner.occlusion_map", map);
-        if (!s) continue;
-        cases.push_back({scenario, targetName(r->analysis, o.target), map,
-                         s->coverageOver(o.target, o.hidden),
-                         none->coverageOver(o.target, o.hidden)});
+    if (!r) continue;
+    for (const DecisionPeriod& period : decisionPeriods()) {
+      const ConfigStatistics* none = findOcclusionConfig(*r, "none", period.seconds);
+      if (!none) continue;
+      for (const OcclusionStatistics& o : none->occlusions) {
+        for (const char* map : {"a_priori", "dynamic"}) {
+          const ConfigStatistics* s = findOcclusionConfig(*r, map, period.seconds);
+          if (!s) continue;
+          cases.push_back({scenario, targetName(r->analysis, o.target), map, period.label,
+                           s->coverageOver(o.target, o.hidden),
+                           none->coverageOver(o.target, o.hidden)});
+        }
       }
     }
   }
@@ -83,13 +87,14 @@ struct CoverageByMap {
 };
 
 std::optional<CoverageByMap> sharingCoverageWhileHidden(const std::vector<ExperimentResult>& results,
-                                                        const std::string& target_name) {
+                                                        const std::string& target_name,
+                                                        double decision_period_s) {
   const ExperimentResult* os = findExperiment(results, "occlusion_sharing");
   if (!os) return std::nullopt;
   const int target = targetIndex(os->analysis, target_name);
-  const ConfigStatistics* apr = findConfig(*os, "planner.occlusion_map", "a_priori");
-  const ConfigStatistics* dyn = findConfig(*os, "planner.occlusion_map", "dynamic");
-  const ConfigStatistics* none = findConfig(*os, "planner.occlusion_map", "none");
+  const ConfigStatistics* apr = findOcclusionConfig(*os, "a_priori", decision_period_s);
+  const ConfigStatistics* dyn = findOcclusionConfig(*os, "dynamic", decision_period_s);
+  const ConfigStatistics* none = findOcclusionConfig(*os, "none", decision_period_s);
   const OcclusionStatistics* hidden = apr && target >= 0 ? episode(*apr, target) : nullptr;
   if (!apr || !dyn || !none || !hidden) return std::nullopt;
   return CoverageByMap{apr->coverageOver(target, hidden->hidden),
@@ -97,46 +102,67 @@ std::optional<CoverageByMap> sharingCoverageWhileHidden(const std::vector<Experi
                        none->coverageOver(target, hidden->hidden)};
 }
 
-std::optional<CatchUpFinding> catchUp(const std::vector<ExperimentResult>& results) {
-  const auto c = sharingCoverageWhileHidden(results, "III");
-  if (!c) return std::nullopt;
-  return CatchUpFinding{c->a_priori, c->dynamic, c->none};
+std::vector<CatchUpFinding> catchUp(const std::vector<ExperimentResult>& results) {
+  std::vector<CatchUpFinding> findings;
+  for (const DecisionPeriod& period : decisionPeriods()) {
+    if (const auto c = sharingCoverageWhileHidden(results, "III", period.seconds))
+      findings.push_back({period.label, c->a_priori, c->dynamic, c->none});
+  }
+  return findings;
 }
 
-std::optional<FirstOcclusionRanking> firstRanking(const std::vector<ExperimentResult>& results) {
-  const auto c = sharingCoverageWhileHidden(results, "I");
-  if (!c) return std::nullopt;
-  return FirstOcclusionRanking{c->a_priori, c->dynamic, c->none};
+std::vector<FirstOcclusionRanking> firstRanking(const std::vector<ExperimentResult>& results) {
+  std::vector<FirstOcclusionRanking> findings;
+  for (const DecisionPeriod& period : decisionPeriods()) {
+    if (const auto c = sharingCoverageWhileHidden(results, "I", period.seconds))
+      findings.push_back({period.label, c->a_priori, c->dynamic, c->none});
+  }
+  return findings;
 }
+
+// The bootstrap's stream: one seed for the report, so the same trials give the same intervals.
+constexpr std::uint64_t kBootstrapSeed = 1;
 
 std::vector<ReactionRow> reactionRows(const std::vector<ExperimentResult>& results) {
   std::vector<ReactionRow> rows;
   const ExperimentResult* je = findExperiment(results, "joint_effect");
   const int I = je ? targetIndex(je->analysis, "I") : -1;
   if (I < 0) return rows;
-  for (const char* map : {"a_priori", "dynamic", "none"}) {
-    const ConfigStatistics* s = findConfig(*je, "planner.occlusion_map", map);
-    if (!s) continue;
-    ReactionRow row{map, std::nullopt, std::nullopt};
-    if (const int k = firstBelow(s->coverage[I], 0.9); k >= 0) row.onset_s = k * s->dt;
-    if (const int k = firstBelow(s->coverage[I], 0.5); k >= 0) row.half_s = k * s->dt;
-    rows.push_back(row);
+  for (const DecisionPeriod& period : decisionPeriods()) {
+    for (const char* map : {"a_priori", "dynamic", "none"}) {
+      const ConfigStatistics* s = findOcclusionConfig(*je, map, period.seconds);
+      if (!s) continue;
+      const OcclusionStatistics* hidden = episode(*s, I);
+      rows.push_back({map, period.label, firstCrossing(*s, I, 0.9, kBootstrapSeed),
+                      firstCrossing(*s, I, 0.5, kBootstrapSeed),
+                      hidden ? s->coverageOver(I, hidden->hidden) : Estimate{}});
+    }
   }
   return rows;
 }
 
+const ReactionRow* reactionOf(const std::vector<ReactionRow>& rows, const std::string& map,
+                              const std::string& decisions) {
+  for (const ReactionRow& row : rows) {
+    if (row.map == map && row.decisions == decisions) return &row;
+  }
+  return nullptr;
+}
+
 FailureSymptoms symptoms(const std::vector<ExperimentResult>& results,
                          const std::vector<ReactionRow>& reaction,
-                         const std::optional<FirstOcclusionRanking>& ranking) {
+                         const std::vector<FirstOcclusionRanking>& ranking) {
   FailureSymptoms f;
   if (const ExperimentResult* ra = findExperiment(results, "resource_allocation")) {
     const ConfigStatistics* s = findConfig(*ra, "planner", "dec_pomdp", "planner.horizon", "5");
     f.single_swarm_never = s && s->stateFraction("M*", 4) == 0.0;
   }
-  for (const ReactionRow& row : reaction) {
-    if (row.map == "a_priori") f.reaction_late = !row.onset_s || *row.onset_s >= 2.2;
+  const std::string every_second = decisionPeriods().front().label;
+  f.reaction_late = reactionOf(reaction, "a_priori", every_second) &&
+                    !reactsBeforeHiding(reaction, every_second);
+  for (const FirstOcclusionRanking& r : ranking) {
+    if (r.decisions == every_second) f.first_occlusion_unranked = !r.holds();
   }
-  f.first_occlusion_unranked = ranking && !ranking->holds();
   return f;
 }
 
@@ -165,14 +191,27 @@ const ConfigStatistics* findConfig(const ExperimentResult& r, const std::string&
   return nullptr;
 }
 
-std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows) {
-  std::optional<double> a_priori, dynamic;
-  for (const ReactionRow& row : rows) {
-    if (row.map == "a_priori") a_priori = row.half_s;
-    if (row.map == "dynamic") dynamic = row.half_s;
+const ConfigStatistics* findOcclusionConfig(const ExperimentResult& r, const std::string& map,
+                                            double decision_period_s) {
+  for (const ConfigStatistics& s : r.analysis.configs) {
+    const std::string period = axisText(s, "planner.replan_period");
+    const double seconds = period.empty() ? 1.0 : std::strtod(period.c_str(), nullptr);
+    if (axisText(s, "planner.occlusion_map") == map && seconds == decision_period_s) return &s;
   }
-  if (!a_priori || !dynamic) return std::nullopt;
-  return *dynamic > *a_priori;
+  return nullptr;
+}
+
+std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows,
+                                       const std::string& decisions) {
+  const ReactionRow* a_priori = reactionOf(rows, "a_priori", decisions);
+  const ReactionRow* dynamic = reactionOf(rows, "dynamic", decisions);
+  if (!a_priori || !dynamic || !a_priori->half.time_s || !dynamic->half.time_s) return std::nullopt;
+  return *dynamic->half.time_s > *a_priori->half.time_s;
+}
+
+bool reactsBeforeHiding(const std::vector<ReactionRow>& rows, const std::string& decisions) {
+  const ReactionRow* a_priori = reactionOf(rows, "a_priori", decisions);
+  return a_priori && a_priori->onset.time_s && *a_priori->onset.time_s < kJointEffectHiding;
 }
 
 Findings computeFindings(const std::vector<ExperimentResult>& results) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
@@ -54,10 +55,17 @@ std::optional<HeatmapCell> cellOf(const ConfigStatistics& s, const HeatmapMetric
   }
   if (s.occlusions.empty()) return std::nullopt;
   const OcclusionStatistics& o = s.occlusions.front();  // ordered by target, then first step
-  cell.value = s.coverageOver(o.target, o.hidden);
+  Interval steps = o.hidden;
+  if (metric.before_hiding_s > 0.0) {
+    // the last ⌈before_hiding_s / dt⌉ steps before the first hidden one, from step 0 on
+    const int window = static_cast<int>(std::ceil(metric.before_hiding_s / s.dt - 1e-9));
+    steps = Interval{std::max(0, o.hidden.first - window), o.hidden.first - 1};
+    if (steps.last < steps.first) return std::nullopt;  // hidden from the first step
+  }
+  cell.value = s.coverageOver(o.target, steps);
   char detail[96];
   std::snprintf(detail, sizeof detail, "%s %.1f-%.1f s", spec.targets[o.target].name.c_str(),
-                o.hidden.first * s.dt, o.hidden.last * s.dt);
+                steps.first * s.dt, steps.last * s.dt);
   cell.detail = detail;
   return cell;
 }
@@ -93,9 +101,10 @@ std::string displayOverride(const std::string& override_text) {
 }
 
 std::optional<HeatmapMetric> heatmapMetric(const SweepAnalysis& analysis,
-                                           const std::string& state) {
+                                           const HeatmapRequest& request) {
   if (analysis.configs.empty()) return std::nullopt;
   const std::vector<std::string>& states = analysis.configs.front().states;
+  const std::string& state = request.state;
   if (!state.empty()) {
     if (std::find(states.begin(), states.end(), state) == states.end()) {
       std::string known;
@@ -104,18 +113,27 @@ std::optional<HeatmapMetric> heatmapMetric(const SweepAnalysis& analysis,
           analysis.dir.string(), "--state",
           "expected one of the ownership states " + known + ", got \"" + state + "\"");
     }
-    return HeatmapMetric{state, "fraction of trials in " + state + " at L", 1.0};
-  }
-  for (const auto& named : analysis.specs.front().analysis.states) {
-    if (named.name == "M*") return HeatmapMetric{"M*", "fraction of trials in M* at L", 1.0};
+    return HeatmapMetric{state, 0.0, "fraction of trials in " + state + " at L", 1.0};
   }
   const bool occlusions =
       std::any_of(analysis.configs.begin(), analysis.configs.end(),
                   [](const ConfigStatistics& s) { return !s.occlusions.empty(); });
-  if (!occlusions) return std::nullopt;
   std::size_t uavs = 1;  // coverage counts footprints: at most the number of UAVs
   for (const auto& spec : analysis.specs) uavs = std::max(uavs, spec.uavs.size());
-  return HeatmapMetric{"", "mean footprints on the occluded target while hidden",
+  if (request.before_hiding_s > 0.0) {
+    if (!occlusions)
+      throw scenarios::ScenarioError(analysis.dir.string(), "--before-hiding",
+                                     "expected a sweep whose targets are hidden at some step");
+    return HeatmapMetric{"", request.before_hiding_s,
+                         "mean footprints on the occluded target in the " +
+                             formatted(request.before_hiding_s) + " s before it is hidden",
+                         static_cast<double>(uavs)};
+  }
+  for (const auto& named : analysis.specs.front().analysis.states) {
+    if (named.name == "M*") return HeatmapMetric{"M*", 0.0, "fraction of trials in M* at L", 1.0};
+  }
+  if (!occlusions) return std::nullopt;
+  return HeatmapMetric{"", 0.0, "mean footprints on the occluded target while hidden",
                        static_cast<double>(uavs)};
 }
 
@@ -191,8 +209,9 @@ std::string heatmapCsv(const Heatmap& map) {
 }
 
 std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
-                                   const std::filesystem::path& out_dir, const std::string& state) {
-  const std::optional<HeatmapMetric> metric = heatmapMetric(analysis, state);
+                                   const std::filesystem::path& out_dir,
+                                   const HeatmapRequest& request) {
+  const std::optional<HeatmapMetric> metric = heatmapMetric(analysis, request);
   if (!metric) return {};
   std::vector<Heatmap> maps = sensitivityMaps(analysis, *metric);
   for (const Heatmap& map : maps) {
@@ -204,8 +223,8 @@ std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
 }
 
 std::string heatmapMarkdown(const SweepAnalysis& analysis, const std::string& figures_dir,
-                            const std::string& heading, const std::string& state) {
-  const std::optional<HeatmapMetric> metric = heatmapMetric(analysis, state);
+                            const std::string& heading, const HeatmapRequest& request) {
+  const std::optional<HeatmapMetric> metric = heatmapMetric(analysis, request);
   if (!metric) return "";
   const std::vector<Heatmap> maps = sensitivityMaps(analysis, *metric);
   if (maps.empty()) return "";

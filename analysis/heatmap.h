@@ -16,10 +16,12 @@ namespace canopy::analysis {
 
 /// What every cell of a map shows.
 struct HeatmapMetric {
-  std::string state;  // a state name: the fraction of trials in it at L; empty: hidden coverage
+  std::string state;  // a state name: the fraction of trials in it at L; empty: a coverage
+  double before_hiding_s = 0.0;  // > 0: coverage in the window this long before it hides
   std::string label;  // e.g. "fraction of trials in M* at L"
   double max = 1.0;   // the colour scale spans [0, max]
 };
+
 
 struct HeatmapCell {
   int trials = 0;
@@ -36,12 +38,16 @@ struct Heatmap {
   std::string stem;  // file name without extension, e.g. "heatmap_start.0_vs_horizon"
 };
 
-/// The metric of a sweep's maps: `state` when given (it must be one of the configurations'
-/// ownership states, else ScenarioError naming `--state`), else the named state "M*" when the
-/// scenario has one, else the hidden coverage of each configuration's first occluded interval
-/// when some configuration has one; std::nullopt when none applies.
+/// The metric of a sweep's maps: request.state when given (it must be one of the
+/// configurations' ownership states, else ScenarioError naming `--state`); else, with
+/// request.before_hiding_s > 0, the mean footprints on the target of each configuration's first
+/// occluded interval over the steps in the last before_hiding_s seconds before it is hidden (the
+/// reaction ahead of an occlusion; ScenarioError naming `--before-hiding` when no configuration
+/// has an occlusion); else the named state "M*" when the scenario has one, else the coverage of
+/// each configuration's first occluded interval while hidden when some configuration has one;
+/// std::nullopt when none applies.
 std::optional<HeatmapMetric> heatmapMetric(const SweepAnalysis& analysis,
-                                           const std::string& state = "");
+                                           const HeatmapRequest& request = {});
 
 /// x and y are the sweep's first two numeric axes (every value a JSON number); one map per
 /// combination of the other axes' values, in sweep order. No maps with fewer than two.
@@ -68,12 +74,12 @@ std::string displayOverride(const std::string& override_text);
 /// Writes <stem>.{csv,svg,png} per map into out_dir; returns the maps written.
 std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
                                    const std::filesystem::path& out_dir,
-                                   const std::string& state = "");
+                                   const HeatmapRequest& request = {});
 
 /// Markdown embedding a sweep's maps for report.md: a heading, a line on what the cells show
 /// and one image per map (figures_dir: where writeHeatmaps wrote them, relative to the report).
 /// Empty when the sweep yields no map.
 std::string heatmapMarkdown(const SweepAnalysis& analysis, const std::string& figures_dir,
-                            const std::string& heading, const std::string& state = "");
+                            const std::string& heading, const HeatmapRequest& request = {});
 
 }  // namespace canopy::analysis

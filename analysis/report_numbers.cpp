@@ -41,4 +41,29 @@ std::string paperVerdict(double paper, const Estimate& ours) {
          (std::fabs(delta_pts) <= 100.0 * kTolerance ? " (within ±15)" : " (beyond ±15)");
 }
 
+namespace {
+std::string secondsText(double t) {
+  if (!std::isfinite(t)) return "never";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", t);
+  return text;
+}
+}  // namespace
+
+std::string timeWithInterval(const CrossingTime& t) {
+  if (!t.time_s) return "never";
+  std::string text = secondsText(*t.time_s) + " s";
+  if (!std::isfinite(t.ci.low)) return text + " [no interval: 1 trial]";
+  return text + " [" + secondsText(t.ci.low) + ", " + secondsText(t.ci.high) + "]";
+}
+
+std::string timeVerdict(double paper_s, const CrossingTime& ours) {
+  if (!ours.time_s) return "no (never crosses)";
+  const double delta = std::round(10.0 * (paper_s - *ours.time_s)) / 10.0;  // as printed
+  char text[48];
+  std::snprintf(text, sizeof text, "Δ %s%.1f s", delta > 0 ? "+" : delta < 0 ? "−" : "±",
+                std::fabs(delta));
+  return std::string(ours.contains(paper_s) ? "yes; " : "no; ") + text;
+}
+
 }  // namespace canopy::analysis

@@ -147,7 +147,7 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 namespace canopy::analysis {
 
 void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
-                  const std::string& heatmap_state) {
+                  const HeatmapRequest& maps) {
   makeOutputDirectories(out_dir, out_dir);
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
@@ -164,7 +164,7 @@ void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
         coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"),
         out_dir / "coverage");
   }
-  writeHeatmaps(analysis, out_dir, heatmap_state);
+  writeHeatmaps(analysis, out_dir, maps);
 }
 
 }  // namespace canopy::analysis

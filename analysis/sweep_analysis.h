@@ -44,11 +44,18 @@ void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out
 
 namespace canopy::analysis {
 
+/// What a user asks the sensitivity maps to show (`analyze --state NAME`, `--before-hiding S`);
+/// empty: the default of heatmapMetric (heatmap.h).
+struct HeatmapRequest {
+  std::string state;
+  double before_hiding_s = 0.0;  // s
+};
+
 /// Writes sankey_<config>.{svg,png} per configuration, coverage.{svg,png} (one line per
 /// configuration with its 95 % band, one panel per trajectory) and, for a sweep with two numeric
-/// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; heatmap_state picks the state,
-/// empty: M* or the hidden coverage) into out_dir.
+/// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; `maps` picks what their cells
+/// show, by default M* or the hidden coverage) into out_dir.
 void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir,
-                  const std::string& heatmap_state = "");
+                  const HeatmapRequest& maps = {});
 
 }  // namespace canopy::analysis

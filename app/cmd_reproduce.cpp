@@ -43,7 +43,7 @@ int reproduceCommand(Args& args) {
       ran += runSweepWithProgress(experiment.sweep, dir, jobs);
       analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
       analysis::writeTables(analysed, dir / "analysis");
-      analysis::writeFigures(analysed, dir / "analysis");
+      analysis::writeFigures(analysed, dir / "analysis", experiment.maps);
       done.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
     }
     return done;

@@ -95,7 +95,8 @@ int sweepCommand(Args& args) {
 }
 
 int analyzeCommand(Args& args) {
-  std::string dir, out, state;
+  std::string dir, out;
+  analysis::HeatmapRequest maps;
   scenarios::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -103,7 +104,11 @@ int analyzeCommand(Args& args) {
       out = args.outputDirValue(arg);
     } else if (takeLoadOption(args, arg, load)) {
     } else if (arg == "--state") {
-      state = args.value(arg);
+      maps.state = args.value(arg);
+    } else if (arg == "--before-hiding") {
+      maps.before_hiding_s = args.doubleValue(arg);
+      if (!(maps.before_hiding_s > 0.0) || maps.before_hiding_s > 1e6)
+        usageError(arg, "expected a window in seconds, in (0, 1e6]");
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy analyze`");
     } else if (dir.empty()) {
@@ -114,14 +119,14 @@ int analyzeCommand(Args& args) {
   }
   if (dir.empty()) usageError("analyze", "expected a sweep directory");
   const analysis::SweepAnalysis result = analysis::analyseSweep(dir, load);
-  analysis::heatmapMetric(result, state);  // a bad --state fails before anything is written
+  analysis::heatmapMetric(result, maps);  // a bad --state fails before anything is written
   if (out.empty()) {
     out = dir + "/analysis";
     checkOutputDir(out, "--out (default, DIR/analysis)");
     checkOutputDirectories(out, dir);  // not a link planted in the sweep's directory
   }
   analysis::writeTables(result, out);
-  analysis::writeFigures(result, out, state);
+  analysis::writeFigures(result, out, maps);
   for (const analysis::ConfigStatistics& config : result.configs) {
     std::printf("%-40s %3d trials  at L:", printable(config.id, 200).c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {

@@ -23,7 +23,7 @@ usage:
   canopy validate SCENARIO [--set key=value]...
   canopy list
   canopy sweep SWEEP.json --out DIR [--jobs N]
-  canopy analyze DIR [--out DIR] [--state NAME]
+  canopy analyze DIR [--out DIR] [--state NAME | --before-hiding SECONDS]
   canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
   canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R[,R_MAX] --seed S [--min-gap G]
 

@@ -171,11 +171,47 @@ TEST(HeatmapMetric, OcclusionScenariosWithoutMStarMapTheHiddenCoverage) {
   EXPECT_EQ(cell.detail, "I 0.2-0.4 s");
 }
 
+// The coverage just before the first hidden step: hidden from step 3, a 0.4 s window at dt
+// 0.2 s is steps 1..2 (by hand: trial means (2 + 1)/2 = 1.5 and (1 + 0)/2 = 0.5 → 1.0).
+TEST(HeatmapMetric, BeforeHidingAveragesTheWindowBeforeTheFirstHiddenStep) {
+  SweepAnalysis a;
+  a.name = "je";
+  a.axes = {{"a", {"1"}, {}}, {"b", {"2"}, {}}};
+  ConfigStatistics s = config({"a=1", "b=2"}, 0);
+  s.trials = 2;
+  s.dt = 0.2;
+  s.occlusions = {OcclusionStatistics{}};
+  s.occlusions[0].target = 0;
+  s.occlusions[0].hidden = {3, 4};
+  s.trial_coverage = {{{9, 2, 1, 9, 9}, {0, 0, 0, 0, 0}}, {{9, 1, 0, 9, 9}, {0, 0, 0, 0, 0}}};
+  a.configs = {s};
+  a.specs = {spec(true)};  // a named M* does not take precedence over the request
+  const std::optional<HeatmapMetric> metric = heatmapMetric(a, {"", 0.4});
+  ASSERT_TRUE(metric);
+  EXPECT_EQ(metric->before_hiding_s, 0.4);
+  EXPECT_EQ(metric->label, "mean footprints on the occluded target in the 0.4 s before it is hidden");
+  const std::vector<Heatmap> maps = sensitivityMaps(a, *metric);
+  const HeatmapCell& cell = *maps[0].cells[0][0];
+  EXPECT_DOUBLE_EQ(cell.value.value, 1.0);
+  EXPECT_EQ(cell.detail, "I 0.2-0.4 s");
+  // A window longer than the time before hiding starts at step 0: (9 + 2 + 1)/3 and (9 + 1)/3.
+  const std::vector<Heatmap> wide = sensitivityMaps(a, *heatmapMetric(a, {"", 5.0}));
+  EXPECT_DOUBLE_EQ(wide[0].cells[0][0]->value.value, (12.0 / 3 + 10.0 / 3) / 2);
+  // Without an occlusion the request names its option.
+  a.configs[0].occlusions.clear();
+  try {
+    heatmapMetric(a, {"", 0.6});
+    FAIL() << "expected a ScenarioError";
+  } catch (const scenarios::ScenarioError& e) {
+    EXPECT_EQ(e.field(), "--before-hiding");
+  }
+}
+
 TEST(HeatmapMetric, AnUnknownStateNamesTheOptionAndTheStatesThereAre) {
   const SweepAnalysis a = threeAxisSweep();
-  EXPECT_EQ(heatmapMetric(a, "M0")->label, "fraction of trials in M0 at L");
+  EXPECT_EQ(heatmapMetric(a, {"M0"})->label, "fraction of trials in M0 at L");
   try {
-    heatmapMetric(a, "M9");
+    heatmapMetric(a, {"M9"});
     FAIL() << "expected a ScenarioError";
   } catch (const scenarios::ScenarioError& e) {
     EXPECT_EQ(e.field(), "--state");

@@ -210,5 +210,29 @@ TEST(PaperScenarioCosts, CalibratedJointEffectPaysForJoiningButOnlyFromThePlanIn
   }
 }
 
+TEST(PaperScenarioCosts, CalibratedJointEffectDecidedInsideAnActionLeavesIAtOnce) {
+  // With decisions at every 0.2 s step (planner.replan_period), a plan made at t0 = 1.4 s looks
+  // at 2.4 s, 3.4 s, 4.4 s — I hidden at each — and 5.4 s: joining II in the very first action
+  // beats following I by more than the swarm's tolerance, so UAV1 leaves 0.8 s before I hides;
+  // at t0 = 1.0 s the first sample (2.0 s) still sees I and leaving at once costs more than
+  // staying (the test above). A departure decided before I hides needs a decision between 1.2 s
+  // and 2.2 s; with decisions every 1 s the plan from 1.0 s can only drift toward II while
+  // keeping I in view at 2.0 s (docs/calibration.md, "Joint Effect: the second search").
+  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
+  const double ftol = spec.planner.pso.ftol;
+  for (const CostVariant& variant : kVariants) {
+    for (const double variance : {1.0, 0.05}) {
+      const Costs now = jointEffectCosts(spec, 1.4, variance, variant, 1);
+      const Costs at_one = jointEffectCosts(spec, 1.0, variance, variant, 1);
+      std::printf("JE calibrated %s, P = %.2f I: t0 = 1.4 s stay %.4f, join at once %.4f; "
+                  "t0 = 1.0 s stay %.4f, join at once %.4f\n",
+                  describe(variant).c_str(), variance, now.alone, now.cooperative, at_one.alone,
+                  at_one.cooperative);
+      EXPECT_LT(now.cooperative, now.alone - ftol * (1.0 + now.alone)) << describe(variant);
+      EXPECT_GT(at_one.cooperative, at_one.alone) << describe(variant);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace canopy::agents::planning

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace canopy::analysis {
 namespace {
 
@@ -28,6 +30,18 @@ TEST(ReportNumbers, PaperVerdictSaysInsideAndHowFar) {
   EXPECT_EQ(paperVerdict(1.0, proportion(40, 40)), "yes; Δ ±0.0 pts");
   // 0/40 against 12.5 %: outside [0, 8.8], 12.5 pts off.
   EXPECT_EQ(paperVerdict(0.125, proportion(0, 40)), "no; Δ +12.5 pts (within ±15)");
+}
+
+TEST(ReportNumbers, CrossingTimesWithTheirIntervalAndTheVerdictInSeconds) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const CrossingTime onset{1.8, {1.6, 2.0}};
+  EXPECT_EQ(timeWithInterval(onset), "1.8 s [1.6, 2.0]");
+  EXPECT_EQ(timeVerdict(1.6, onset), "yes; Δ −0.2 s");
+  EXPECT_EQ(timeVerdict(2.2, onset), "no; Δ +0.4 s");
+  EXPECT_EQ(timeWithInterval({3.0, {2.6, inf}}), "3.0 s [2.6, never]");
+  EXPECT_EQ(timeWithInterval({std::nullopt, {inf, inf}}), "never");
+  EXPECT_EQ(timeVerdict(1.6, {std::nullopt, {inf, inf}}), "no (never crosses)");
+  EXPECT_EQ(timeWithInterval({0.4, {-inf, inf}}), "0.4 s [no interval: 1 trial]");
 }
 
 }  // namespace
