@@ -6,6 +6,7 @@
 
 #include "analysis/report.h"
 #include "app/commands.h"
+#include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "core/text_file.h"
@@ -17,6 +18,7 @@ int reproduceCommand(Args& args) {
   int trials = 40;
   int jobs = std::max(1u, std::thread::hardware_concurrency());
   std::uint64_t seed = 1;
+  bool mpi = false;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
@@ -27,11 +29,14 @@ int reproduceCommand(Args& args) {
       jobs = args.intValue(arg, 1, 1024);
     } else if (arg == "--seed") {
       seed = args.unsignedValue(arg);
+    } else if (arg == "--mpi") {
+      mpi = true;
     } else {
       usageError(arg, "unknown option for `canopy reproduce`");
     }
   }
   if (out.empty()) usageError("reproduce", "expected --out DIR");
+  const bool analyses = !mpi || (mpiAvailable() && mpiWorld().rank == 0);
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::ExperimentResult> results;
   int ran = 0;
@@ -40,7 +45,9 @@ int reproduceCommand(Args& args) {
     for (const analysis::Experiment& experiment : experiments) {
       const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
       checkOutputDirectories(dir / "analysis", out);  // no links planted in DIR
-      ran += runSweepWithProgress(experiment.sweep, dir, jobs);
+      ran += mpi ? runSweepOverMpi(experiment.sweep, dir, jobs)
+                 : runSweepWithProgress(experiment.sweep, dir, jobs);
+      if (!analyses) continue;  // under MPI only rank 0 analyses and reports
       analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
       analysis::writeTables(analysed, dir / "analysis");
       analysis::writeFigures(analysed, dir / "analysis", experiment.maps);
@@ -52,6 +59,7 @@ int reproduceCommand(Args& args) {
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
   const std::vector<analysis::ExperimentResult> studies =
       runAll(analysis::sensitivityStudies(std::max(1, trials / 2), seed));
+  if (!analyses) return kExitOk;
   analysis::ReportContext context;
   context.trials = trials;
   context.seed = seed;

@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <thread>
@@ -9,6 +10,7 @@
 #include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
+#include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "scenarios/sweep.h"
@@ -54,19 +56,68 @@ int defaultJobs() {
 }  // namespace
 
 int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
-                         int jobs) {
+                         int jobs, const scenarios::Shard& shard) {
   // runSweep makes DIR/trials/CONFIG/ as it goes and follows what is there: links planted in DIR
   // would lead the trial files out of it. Refused before anything is written.
   for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
     checkOutputDirectories(out / "trials" / config.id, out);
-  ProgressBar bar(sweep.name);
+  ProgressBar bar(shard.whole() ? sweep.name
+                                : sweep.name + " shard " + std::to_string(shard.index) + "/" +
+                                      std::to_string(shard.count));
   return scenarios::runSweep(
-      sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }});
+      sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }, shard});
 }
 
+int runSweepOverMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
+                    int jobs) {
+  if (!mpiAvailable())
+    usageError("--mpi", "this canopy was built without MPI: install the Debian packages "
+                        "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
+  for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
+    checkOutputDirectories(out / "trials" / config.id, out);
+  return runSweepMpi(sweep, out, jobs);
+}
+
+namespace {
+
+// "I/N" with 0 <= I < N.
+scenarios::Shard shardValue(Args& args, const std::string& name) {
+  const std::string text = args.value(name);
+  scenarios::Shard shard;
+  const std::size_t slash = text.find('/');
+  char* end = nullptr;
+  const long index = slash == std::string::npos ? -1 : std::strtol(text.c_str(), &end, 10);
+  const bool index_ok = slash != std::string::npos && end == text.c_str() + slash && slash > 0;
+  const long count = index_ok ? std::strtol(text.c_str() + slash + 1, &end, 10) : 0;
+  if (!index_ok || *end != '\0' || slash + 1 == text.size() || count < 1 || count > 1000000 ||
+      index < 0 || index >= count) {
+    usageError(name, "expected I/N with 0 <= I < N <= 1000000, got '" + printable(text, 100) + "'");
+  }
+  shard.index = static_cast<int>(index);
+  shard.count = static_cast<int>(count);
+  return shard;
+}
+
+int statusCommand(const std::string& dir) {
+  const scenarios::SweepStatus status = scenarios::sweepStatus(dir);
+  int done = 0;
+  for (const auto& [id, finished] : status.finished) {
+    std::printf("%-50s %d/%d\n", printable(id, 200).c_str(), finished, status.trials_per_config);
+    done += finished;
+  }
+  const int total = status.trials_per_config * static_cast<int>(status.finished.size());
+  std::printf("%s: %d/%d trials done%s\n", printable(status.name, 200).c_str(), done, total,
+              done == total ? "" : "; run `canopy sweep FILE --out DIR` to finish");
+  return kExitOk;
+}
+
+}  // namespace
+
 int sweepCommand(Args& args) {
-  std::string file, out;
+  std::string file, out, status;
   int jobs = defaultJobs();
+  scenarios::Shard shard;
+  bool mpi = false;
   scenarios::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -74,6 +125,12 @@ int sweepCommand(Args& args) {
       out = args.outputDirValue(arg);
     } else if (arg == "--jobs") {
       jobs = args.intValue(arg, 1, 1024);
+    } else if (arg == "--shard") {
+      shard = shardValue(args, arg);
+    } else if (arg == "--mpi") {
+      mpi = true;
+    } else if (arg == "--status") {
+      status = args.value(arg);
     } else if (takeLoadOption(args, arg, load)) {
     } else if (!arg.empty() && arg[0] == '-') {
       usageError(arg, "unknown option for `canopy sweep`");
@@ -83,14 +140,32 @@ int sweepCommand(Args& args) {
       usageError(arg, "expected one sweep file, got a second one");
     }
   }
+  if (!status.empty()) {
+    if (!file.empty() || !out.empty() || mpi || !shard.whole())
+      usageError("--status", "expected only --status DIR");
+    return statusCommand(status);
+  }
   if (file.empty() || out.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
+  if (mpi && !shard.whole()) usageError("--mpi", "expected either --mpi or --shard, not both");
   const scenarios::SweepSpec sweep = scenarios::loadSweep(file, load);
   const auto start = std::chrono::steady_clock::now();
-  const int ran = runSweepWithProgress(sweep, out, jobs);
+  const int ran =
+      mpi ? runSweepOverMpi(sweep, out, jobs) : runSweepWithProgress(sweep, out, jobs, shard);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n",
-              printable(sweep.name, 200).c_str(), ran, seconds, jobs, printable(out).c_str());
+  if (mpi) {
+    std::printf("%s: rank %d of %d ran %d trials in %.1f s with %d jobs → %s/trials/\n",
+                printable(sweep.name, 200).c_str(), mpiWorld().rank, mpiWorld().size, ran, seconds,
+                jobs, printable(out).c_str());
+  } else if (!shard.whole()) {
+    std::printf("%s: shard %d/%d ran %d trials in %.1f s with %d jobs → %s/trials/ (run without "
+                "--shard to finish)\n",
+                printable(sweep.name, 200).c_str(), shard.index, shard.count, ran, seconds, jobs,
+                printable(out).c_str());
+  } else {
+    std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n",
+                printable(sweep.name, 200).c_str(), ran, seconds, jobs, printable(out).c_str());
+  }
   return kExitOk;
 }
 

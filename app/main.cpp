@@ -22,9 +22,10 @@ usage:
   canopy coverage RUN_DIR [--size WxH]
   canopy validate SCENARIO [--set key=value]...
   canopy list
-  canopy sweep SWEEP.json --out DIR [--jobs N]
+  canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
+  canopy sweep --status DIR
   canopy analyze DIR [--out DIR] [--state NAME | --before-hiding SECONDS]
-  canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
+  canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S] [--mpi]
   canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R[,R_MAX] --seed S [--min-gap G]
 
 SCENARIO is a path or the name of a built-in scenario (see `canopy list`); run without one
@@ -42,6 +43,12 @@ the scenario's folder tree and the scenario library; --allow-path DIR allows ano
 (default 800 px along the longer side); --video also assembles DIR/frames.mp4 when ffmpeg is
 on PATH. `canopy coverage` prints, per step of a finished run, the rendered coverage of the AOI
 as CSV: step, t, covered_px, multi_px, aoi_px, covered_fraction, then 0/1 per target.
+`canopy sweep --shard I/N` runs only shard I (0 <= I < N) of the trials, numbered
+configuration-major and dealt round-robin; shards may run at once on several machines over one
+folder, in any order, and may be killed and rerun. `--status DIR` counts the finished trials
+per configuration; a run without --shard runs whatever is missing and writes summary.json, the
+same bytes as a single run. Under `mpirun -n K`, `--mpi` deals the trials out dynamically over
+the K ranks (each with --jobs threads); see scripts/slurm/README.md for clusters.
 `canopy analyze` of a sweep with two numeric axes also draws sensitivity maps: the fraction of
 trials in state NAME at L (default M*, or the hidden coverage for occlusion scenarios).
 )";

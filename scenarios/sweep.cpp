@@ -1,14 +1,11 @@
 #include "scenarios/sweep.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cctype>
 #include <cstdio>
 #include <map>
 #include <set>
-#include <mutex>
-#include <thread>
 
 #include "core/random.h"
 #include "core/text_file.h"
@@ -238,6 +235,10 @@ std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
   return configs;
 }
 
+std::string scenarioFingerprint(const ScenarioSpec& spec) {
+  return hexHash(spec.effective_config, 16);
+}
+
 std::uint64_t trialSeed(std::uint64_t sweep_seed, int index) {
   return RandomStream(sweep_seed, "trial-seed", static_cast<std::uint64_t>(index)).nextU64();
 }
@@ -246,112 +247,6 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
   char name[32];
   std::snprintf(name, sizeof name, "trial_%04d.json", index);
   return out_dir / "trials" / config_id / name;
-}
-
-int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
-  const std::vector<SweepConfig> configs = configurations(sweep);
-  std::vector<ScenarioSpec> specs;  // load every configuration first: bad overrides fail fast
-  double trees = 0.0;               // held in memory for the whole sweep
-  for (const SweepConfig& config : configs) {
-    LoadOptions load = sweep.load;
-    load.overrides = config.overrides;
-    specs.push_back(loadScenario(sweep.scenario, load));
-    trees += static_cast<double>(specs.back().trees.size());
-  }
-  if (const double limit = workLimits(sweep.load.budget_scale).trees; trees > limit) {
-    throw ScenarioError(sweep.name, "axes",
-                        budgetMessage(trees, limit, "trees over all configurations together"));
-  }
-
-  // A directory with no finished trial holds nothing to protect: a corrected sweep replaces it.
-  std::error_code error;
-  const bool has_trials = fs::exists(options.out_dir / "trials", error) &&
-                          !fs::is_empty(options.out_dir / "trials", error);
-  const fs::path manifest = options.out_dir / "sweep.json";
-  if (has_trials && fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
-    throw ScenarioError(manifest.string(), "",
-                        "this directory holds a different sweep; choose another --out");
-  }
-  // The same sweep text over a changed scenario file (or changed defaults) would resume on
-  // trials of another scenario: each configuration's effective scenario is fingerprinted.
-  Json fingerprints = Json::object();
-  for (std::size_t c = 0; c < configs.size(); ++c)
-    fingerprints[configs[c].id] = hexHash(specs[c].effective_config, 16);
-  const fs::path scenarios_file = options.out_dir / "scenarios.json";
-  const std::string fingerprint_text = fingerprints.dump(2) + "\n";
-  if (has_trials && fs::exists(scenarios_file) && readTextFile(scenarios_file) != fingerprint_text) {
-    throw ScenarioError(scenarios_file.string(), "",
-                        "the scenario behind this sweep has changed since its trials ran (a "
-                        "configuration's effective scenario differs); choose another --out or "
-                        "remove the directory");
-  }
-  fs::create_directories(options.out_dir);
-  writeFileAtomically(manifest, sweep.effective_json + "\n");
-  writeFileAtomically(scenarios_file, fingerprint_text);
-
-  struct Job {
-    int config, trial;
-  };
-  std::vector<Job> todo;
-  SweepProgress progress;
-  progress.total = static_cast<int>(configs.size()) * sweep.trials;
-  for (int c = 0; c < static_cast<int>(configs.size()); ++c) {
-    // A run killed mid-write leaves its temporary behind (never trusted): clear them.
-    std::error_code list_error;
-    const fs::path config_dir = trialPath(options.out_dir, configs[c].id, 0).parent_path();
-    for (auto it = fs::directory_iterator(config_dir, list_error);
-         !list_error && it != fs::directory_iterator(); it.increment(list_error)) {
-      const std::string name = it->path().filename().string();
-      if (name.rfind("trial_", 0) == 0 && name.size() > 4 && name.ends_with(".tmp")) {
-        std::error_code ignored;
-        fs::remove(it->path(), ignored);
-      }
-    }
-    for (int t = 0; t < sweep.trials; ++t) {
-      // Only a regular file counts as finished: a link or FIFO planted there is run again
-      // (and replaced, since the trial's file is renamed over it).
-      std::error_code status_error;
-      if (fs::symlink_status(trialPath(options.out_dir, configs[c].id, t), status_error).type() ==
-          fs::file_type::regular) {
-        ++progress.resumed;
-      } else {
-        todo.push_back({c, t});
-      }
-    }
-  }
-  progress.done = progress.resumed;
-  if (options.on_progress) options.on_progress(progress);
-
-  std::atomic<std::size_t> next{0};
-  std::mutex progress_mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (std::size_t j = next++; j < todo.size(); j = next++) {
-      try {
-        ScenarioSpec spec = specs[todo[j].config];
-        spec.seed = trialSeed(sweep.seed, todo[j].trial);
-        const TrialResult trial = runTrial(spec, configs[todo[j].config].id);
-        writeFileAtomically(trialPath(options.out_dir, trial.config_id, todo[j].trial),
-                            trialToJson(trial) + "\n");
-      } catch (...) {
-        const std::lock_guard lock(progress_mutex);
-        if (!failure) failure = std::current_exception();
-        next = todo.size();  // stop handing out work
-        return;
-      }
-      const std::lock_guard lock(progress_mutex);
-      ++progress.done;
-      if (options.on_progress) options.on_progress(progress);
-    }
-  };
-  std::vector<std::jthread> pool;
-  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
-  for (int w = 0; w < jobs; ++w) pool.emplace_back(worker);
-  pool.clear();  // joins
-  if (failure) std::rethrow_exception(failure);
-  writeFileAtomically(options.out_dir / "summary.json",
-                      summariseSweep(loadSweepResults(options.out_dir)));
-  return static_cast<int>(todo.size());
 }
 
 SweepResults loadSweepResults(const fs::path& out_dir, const LoadOptions& load) {

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scenarios/loader.h"
@@ -69,18 +71,71 @@ struct SweepProgress {
   int resumed = 0;  // found on disk at start
 };
 
+/// A fixed partition of a sweep's trials over several runs (`canopy sweep --shard I/N`, a Slurm
+/// job array): the trials are numbered configuration-major, trial t of configuration c being
+/// c·trials + t, and shard I of N (0 ≤ I < N) owns the numbers equal to I modulo N. Interleaved,
+/// so that every configuration's trials, the expensive ones too, spread evenly over the shards.
+struct Shard {
+  int index = 0;
+  int count = 1;
+  bool owns(int trial_number) const { return trial_number % count == index; }
+  bool whole() const { return count == 1; }
+};
+
 struct SweepOptions {
   std::filesystem::path out_dir;
   int jobs = 1;
   std::function<void(const SweepProgress&)> on_progress;  // called from worker threads, serialised
+  Shard shard;  // the trials this run owns (default: all)
 };
 
-/// Runs every missing trial, then writes DIR/summary.json (summariseSweep); returns the number of
-/// trials it ran. Every configuration is loaded (and so validated) before anything is written.
-/// DIR/sweep.json holds the sweep and DIR/scenarios.json a fingerprint (FNV-1a of the effective
-/// scenario) per configuration; resuming into a directory where either differs throws, unless
-/// the directory holds no finished trial yet (then the new sweep replaces the old).
+/// The fingerprint of a configuration's effective scenario that DIR/scenarios.json keeps: 16 hex
+/// digits of the FNV-1a of its effective configuration.
+std::string scenarioFingerprint(const ScenarioSpec& spec);
+
+/// A sweep checked against its directory and ready to run.
+struct PreparedSweep {
+  std::vector<SweepConfig> configs;
+  std::vector<ScenarioSpec> specs;  // per configuration, validated
+  std::vector<int> todo;            // trial numbers not finished yet, in increasing order
+  int total = 0;                    // configurations × trials
+};
+
+/// Loads (and so validates) every configuration, then checks the directory: resuming into one
+/// whose DIR/sweep.json or DIR/scenarios.json (an FNV-1a fingerprint of each configuration's
+/// effective scenario) differs throws, unless it holds no finished trial yet (then the new sweep
+/// replaces the old) and `strict` is off — shards run strict, so that shards of two different
+/// sweeps never mix in one directory. With `write`, writes both files (atomically, identical
+/// bytes from every run of the same sweep) and clears temporaries a killed run left. Lists the
+/// trials with no regular file yet.
+PreparedSweep prepareSweep(const SweepSpec& sweep, const std::filesystem::path& out_dir,
+                           bool strict = false, bool write = true);
+
+/// Hands out the next entry of a todo list to run, thread-safe; nullopt when none is left.
+using NextTrial = std::function<std::optional<std::size_t>()>;
+
+/// Runs todo entries of a prepared sweep on `jobs` threads, each pulling from `next` until it
+/// returns nullopt, writing each trial atomically; returns the number run. The first failure
+/// stops the handing out and is rethrown. progress.total is `expected` (finished + to run here).
+int runTrials(const SweepSpec& sweep, const PreparedSweep& prepared,
+              const std::filesystem::path& out_dir, int jobs, const NextTrial& next,
+              SweepProgress progress,
+              const std::function<void(const SweepProgress&)>& on_progress = {});
+
+/// Writes DIR/summary.json from every finished trial (summariseSweep).
+void finishSweep(const std::filesystem::path& out_dir);
+
+/// Runs every missing trial the shard owns; when the shard is the whole sweep, then writes
+/// DIR/summary.json. Returns the number of trials it ran.
 int runSweep(const SweepSpec& sweep, const SweepOptions& options);
+
+/// How far a sweep directory is: per configuration (sweep order) its finished trials.
+struct SweepStatus {
+  std::string name;
+  int trials_per_config = 0;
+  std::vector<std::pair<std::string, int>> finished;  // configuration id, finished trials
+};
+SweepStatus sweepStatus(const std::filesystem::path& out_dir);
 
 /// Where trial `index` of configuration `config_id` lives under a sweep directory.
 std::filesystem::path trialPath(const std::filesystem::path& out_dir, const std::string& config_id,

@@ -40,6 +40,29 @@ fs::path freshDir(const std::string& name) {
   return dir;
 }
 
+// Trial t of configuration c is number c·T + t; shard I of N owns the numbers ≡ I (mod N). By
+// hand, 4 configurations × 3 trials over 3 shards: shard 0 owns 0, 3, 6, 9 (trial 0 of each
+// configuration), shard 2 owns 2, 5, 8, 11: every number exactly once, 4 trials per shard.
+TEST(Shard, EveryTrialBelongsToExactlyOneShardRoundRobin) {
+  constexpr int kConfigs = 4, kTrials = 3, kShards = 3;
+  std::vector<int> owners(kConfigs * kTrials, 0);
+  for (int i = 0; i < kShards; ++i) {
+    const Shard shard{i, kShards};
+    int owned = 0;
+    for (int n = 0; n < kConfigs * kTrials; ++n) {
+      if (shard.owns(n)) {
+        ++owners[n];
+        ++owned;
+      }
+    }
+    EXPECT_EQ(owned, 4) << "shard " << i;
+  }
+  for (int n = 0; n < kConfigs * kTrials; ++n) EXPECT_EQ(owners[n], 1) << n;
+  EXPECT_TRUE((Shard{0, 3}.owns(9)));   // configuration 3, trial 0
+  EXPECT_TRUE((Shard{2, 3}.owns(11)));  // configuration 3, trial 2
+  EXPECT_TRUE(Shard{}.whole());
+}
+
 TEST(Sweep, ConfigurationsAreTheCartesianProductInAxisOrder) {
   const SweepSpec sweep = loadSweepText(kSweep, "small.json");
   const std::vector<SweepConfig> configs = configurations(sweep);
