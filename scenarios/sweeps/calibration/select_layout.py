@@ -57,22 +57,23 @@ def th_numbers(sweep_dir):
     return numbers
 
 
-def je_numbers(sweep_dir):
-    """Per layout and map: the onset of the reaction (first time the mean coverage of I is below
-    0.9, i.e. a tenth of the trials have left it), and the mean coverage of I and of II while I
-    is hidden (2.2–5.0 s)."""
+def je_numbers(sweep_dir, layout_axes=("spacing", "speed"), keep=lambda point: True):
+    """Per layout (its values on layout_axes) and map, over the configurations `keep` accepts:
+    the onset of the reaction (first time the mean coverage of I is below 0.9, i.e. a tenth of
+    the trials have left it), and the mean coverage of I and of II while I is hidden (2.2–5.0 s)."""
     curves = defaultdict(lambda: defaultdict(list))
     for row in csv.DictReader(open(f"{sweep_dir}/analysis/coverage.csv")):
         curves[row["config"]][row["target"]].append((float(row["t_s"]), float(row["mean_coverage"])))
     numbers = defaultdict(dict)
     for config, by_target in curves.items():
         p = parse(config)
-        layout, mode = (p["spacing"], p["speed"]), p["occlusion_map"]
-        curve_I, curve_II = by_target["I"], by_target["II"]
-        onset = [t for t, c in curve_I if c < 0.9]
-        numbers[layout][mode] = onset[0] if onset else curve_I[-1][0]
-        for name, curve in (("I", curve_I), ("II", curve_II)):
-            hidden = [c for t, c in curve if 2.2 < t < 5.0]
+        if not keep(p):
+            continue
+        layout, mode = tuple(p[axis] for axis in layout_axes), p["occlusion_map"]
+        onset = [t for t, c in by_target["I"] if c < 0.9]
+        numbers[layout][mode] = onset[0] if onset else by_target["I"][-1][0]
+        for name in ("I", "II"):
+            hidden = [c for t, c in by_target[name] if 2.2 < t < 5.0]
             numbers[layout][f"cover_{name}_{mode}"] = sum(hidden) / len(hidden)
     return numbers
 
@@ -97,24 +98,10 @@ def je_loss(n):
 
 
 def je2_numbers(sweep_dir, replan):
-    """je_numbers for the second search (docs/calibration.md), at one decision period: per
-    layout (footprint length along the walk, speed) and map, the onset and the mean coverage of I
-    and II while I is hidden."""
-    curves = defaultdict(lambda: defaultdict(list))
-    for row in csv.DictReader(open(f"{sweep_dir}/analysis/coverage.csv")):
-        curves[row["config"]][row["target"]].append((float(row["t_s"]), float(row["mean_coverage"])))
-    numbers = defaultdict(dict)
-    for config, by_target in curves.items():
-        p = parse(config)
-        if float(p["replan_period"]) != float(replan):
-            continue
-        layout, mode = (p["length"], p["speed"]), p["occlusion_map"]
-        onset = [t for t, c in by_target["I"] if c < 0.9]
-        numbers[layout][mode] = onset[0] if onset else by_target["I"][-1][0]
-        for name in ("I", "II"):
-            hidden = [c for t, c in by_target[name] if 2.2 < t < 5.0]
-            numbers[layout][f"cover_{name}_{mode}"] = sum(hidden) / len(hidden)
-    return numbers
+    """je_numbers for the second search (docs/calibration.md) at one decision period: layouts
+    are (footprint length along the walk, speed)."""
+    return je_numbers(sweep_dir, ("length", "speed"),
+                      lambda p: float(p["replan_period"]) == float(replan))
 
 
 JE2_SPACING = 8.0  # m, tracks apart: a 6 m wide footprint cannot hold both, 2 m spare
@@ -154,7 +141,10 @@ def je2_choose(numbers):
             print(f"{length:>4} {speed:>5}  loss {loss[(length, speed)]:5.2f} s  worst nearby {score:5.2f} s  {shown}")
             if best is None or score < best[0]:
                 best = (score, length, speed)
-    print(f"chosen: length {best[1]} m × speed {best[2]} m/s (worst onset error nearby {best[0]:.2f} s)")
+    if best[0] == float("inf"):
+        print("chosen: none (no layout passes the rule)")
+    else:
+        print(f"chosen: length {best[1]} m × speed {best[2]} m/s (worst onset error nearby {best[0]:.2f} s)")
 
 
 def os_numbers(sweep_dir):
