@@ -14,20 +14,21 @@ Team::Team(const TeamConfig& config)
 }
 
 void Team::preseed(int target, sensing::LabelId label, const Vec4& state) {
-  for (Agent& agent : agents_) agent.tracker().preseed(target, label, state);
+  for (Agent& agent : agents_) agent.preseed(target, label, state);
 }
 
 void Team::track(double dt, const std::vector<sensing::Scan>& scans,
                  const std::vector<sensing::Footprint>& footprints,
                  const std::vector<Vec2>& positions) {
-  fusion_views_.clear();
+  fusion_inputs_.clear();
   for (std::size_t i = 0; i < agents_.size(); ++i) {
     agents_[i].trackLocally(dt, scans[i], footprints[i]);
-    tracking::Tracker& tracker = agents_[i].tracker();
-    fusion_views_.push_back({&tracker.targets(), &tracker.trees(), positions[i]});
+    const tracking::Tracker& tracker = agents_[i].tracker();
+    fusion_inputs_.push_back({tracker.targets(), tracker.trees(), positions[i]});
   }
-  fusion_.fuse(fusion_views_);
-  for (Agent& agent : agents_) agent.finishStep();
+  fusion_.fuse(fusion_inputs_, fused_);
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    agents_[i].adoptFused(std::move(fused_.targets[i]), std::move(fused_.trees[i]));
 }
 
 std::optional<planning::TeamPlan> Team::plan(int epoch, const std::vector<Vec2>& positions,

@@ -55,7 +55,8 @@ class Team {
   fusion::TeamFusion fusion_;
   planning::TeamPlanner planner_;
   OcclusionMap a_priori_;
-  std::vector<fusion::AgentTracks> fusion_views_;  // rebuilt every step (pointers into agents_)
+  std::vector<fusion::AgentTracks> fusion_inputs_;  // rebuilt every step, read-only views
+  fusion::FusedTracks fused_;  // each step's fusion result, adopted by the agents (buffers reused)
   std::vector<planning::UavState> uav_states_;
   std::vector<planning::AgentView> planning_views_;
   std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan

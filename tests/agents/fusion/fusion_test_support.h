@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "agents/fusion/team_fusion.h"
@@ -138,12 +139,16 @@ struct Team {
         trees(static_cast<std::size_t>(agents)),
         positions(static_cast<std::size_t>(agents), Vec2::Zero()) {}
 
+  /// One fusion step; the test's lists then become the fused ones.
   void fuse(TeamFusion& fusion) {
-    std::vector<AgentTracks> view;
+    std::vector<AgentTracks> inputs;
     for (std::size_t i = 0; i < targets.size(); ++i) {
-      view.push_back({&targets[i], &trees[i], positions[i]});
+      inputs.push_back({targets[i], trees[i], positions[i]});
     }
-    fusion.fuse(view);
+    FusedTracks fused;
+    fusion.fuse(inputs, fused);
+    targets = std::move(fused.targets);
+    trees = std::move(fused.trees);
   }
 
   std::vector<std::vector<tracking::TargetTrack>> targets;
