@@ -29,14 +29,13 @@ void Agent::adoptFused(std::vector<tracking::TargetTrack>&& targets,
   }
 }
 
-AgentBelief Agent::belief() const {
-  AgentBelief belief;
+void Agent::writeBelief(AgentBelief& out) const {
+  out.tracks.clear();
   for (const tracking::TargetTrack& track : tracker_.targets()) {
     if (track.status != tracking::TrackStatus::confirmed) continue;
-    belief.tracks.push_back({track.key, track.label, track.posterior, true});
+    out.tracks.push_back({track.key, track.label, track.posterior, true});
   }
-  belief.trees = map_trees_;
-  return belief;
+  out.trees = map_trees_;
 }
 
 }  // namespace canopy::agents

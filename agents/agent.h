@@ -32,8 +32,9 @@ class Agent {
   /// Confirmed target tracks' posteriors: what the planner plans on.
   const std::vector<TargetGaussian>& planningTracks() const { return planning_tracks_; }
   const OcclusionMap& map() const { return map_; }
-  /// Confirmed target tracks and the map's trees, as plain values.
-  AgentBelief belief() const;
+  /// Confirmed target tracks and the map's trees, as plain values, into `out` (its storage
+  /// reused; planned_path is left to the team, which plans).
+  void writeBelief(AgentBelief& out) const;
 
   const tracking::Tracker& tracker() const { return tracker_; }
 
