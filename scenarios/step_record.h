@@ -42,21 +42,21 @@ struct TargetRecord {
 
 /// One agent's bookkeeping after the step's fusion.
 struct AgentCounts {
-  std::size_t tracks = 0;        // target tracks held, tentative ones included
-  std::size_t trees_in_map = 0;  // discs of its occlusion map Ŵ_i
+  std::size_t tracks = 0;                          // target tracks held, tentative ones included
+  std::size_t trees_in_map = 0;                    // discs of its occlusion map Ŵ_i
   agents::tracking::TrackingDiagnostics tracking;  // totals since the start
 };
 
 struct StepRecord {
-  int step = 0;       // k
-  double time = 0.0;  // s, t = k·dt
+  int step = 0;                       // k
+  double time = 0.0;                  // s, t = k·dt
   std::vector<UavRecord> uavs;        // by UAV index
   std::vector<TargetRecord> targets;  // by target index
   /// Per agent (agent i flies UAV i): fused tracks, occlusion map and planned path, after this
   /// step's fusion.
   std::vector<agents::AgentBelief> beliefs;
-  std::vector<AgentCounts> counts;           // per agent
-  agents::fusion::FusionDiagnostics fusion;  // the team's, totals since the start
+  std::vector<AgentCounts> counts;                 // per agent
+  agents::fusion::FusionDiagnostics fusion;        // the team's, totals since the start
   std::optional<agents::planning::TeamPlan> plan;  // made at this step, on planning epochs
 };
 

@@ -25,8 +25,8 @@ double mahalanobis2(const Vec2& pa, const Mat2& Sa, const Vec2& pb, const Mat2& 
 }  // namespace
 
 template <int N>
-void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph& graph,
-                                    double gate, KeyMint& mint, Clusters& clusters,
+void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph& graph, double gate,
+                                    KeyMint& mint, Clusters& clusters,
                                     FusionDiagnostics& diagnostics) {
   agents_ = graph.agents();
   mask_words_ = (agents_ + 63) / 64;

@@ -71,8 +71,8 @@ class TrackAssociation {
 
   /// lists[i]: agent i's tracks (the fusion's own copy, being fused). Rewrites keys, appends
   /// adopted copies, and fills `clusters`.
-  void associate(std::span<TrackList> lists, const CommGraph& graph, double gate,
-                 KeyMint& mint, Clusters& clusters, FusionDiagnostics& diagnostics);
+  void associate(std::span<TrackList> lists, const CommGraph& graph, double gate, KeyMint& mint,
+                 Clusters& clusters, FusionDiagnostics& diagnostics);
 
  private:
   struct Node {
@@ -106,8 +106,7 @@ class TrackAssociation {
   void cluster(FusionDiagnostics& diagnostics);
   void chooseKeys(const CommGraph& graph, KeyMint& mint, FusionDiagnostics& diagnostics);
   void planAdoptions(const CommGraph& graph);
-  void writeOut(std::span<TrackList> lists, Clusters& clusters,
-                FusionDiagnostics& diagnostics);
+  void writeOut(std::span<TrackList> lists, Clusters& clusters, FusionDiagnostics& diagnostics);
   int find(int node);
   bool unite(int a, int b);
 

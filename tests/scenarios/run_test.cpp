@@ -49,12 +49,12 @@ TEST(Run, ScriptedUavsFollowTheirSweeps) {
   const ScenarioSpec spec = loadScenario("demo");
   Simulation sim(spec);
   while (!sim.done()) {
-    sim.tick();
-    const double t = sim.lastStep().time;
+    const StepRecord& step = sim.tick();
+    const double t = step.time;
     for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
       // The sweeps never ask for more than v_max, so the UAVs are on their paths at every step.
       const Vec2 expected = spec.uavs[i].path->positionAt(t);
-      EXPECT_NEAR((sim.lastStep().uavs[i].position - expected).norm(), 0.0, 1e-3)
+      EXPECT_NEAR((step.uavs[i].position - expected).norm(), 0.0, 1e-3)
           << "uav " << i << " t " << t;
     }
   }

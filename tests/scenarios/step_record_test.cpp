@@ -128,15 +128,14 @@ TEST(StepRecord, HoldsWhatTheWorldAndTheTeamHoldAfterTheTick) {
       const std::vector<Vec2>& actions = record.plan->plans[i].velocities;
       ASSERT_EQ(path.size(), actions.size());
       for (std::size_t m = 0; m < actions.size(); ++m) {
-        const Vec2 a = actions[m].norm() > v_max ? Vec2(actions[m] * (v_max / actions[m].norm()))
-                                                 : actions[m];
+        const Vec2 a =
+            actions[m].norm() > v_max ? Vec2(actions[m] * (v_max / actions[m].norm())) : actions[m];
         p += a * spec.planner.plan_period;
         EXPECT_NEAR((path[m] - p).norm(), 0.0, 1e-12);
       }
       // The first action is what the UAV was commanded, within v_max.
       const Vec2 first = actions.front();
-      const Vec2 clamped =
-          first.norm() > v_max ? Vec2(first * (v_max / first.norm())) : first;
+      const Vec2 clamped = first.norm() > v_max ? Vec2(first * (v_max / first.norm())) : first;
       EXPECT_NEAR((record.uavs[i].command - clamped).norm(), 0.0, 1e-12);
     }
   }

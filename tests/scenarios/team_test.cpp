@@ -36,8 +36,7 @@ TEST(Team, SweptTreesEnterEveryMapThroughFusionWithAccurateDiscs) {
   Simulation sim(spec);
   long hoverer_observations = 0;
   while (!sim.done()) {
-    sim.tick();
-    hoverer_observations += static_cast<long>(sim.lastStep().uavs[1].scan.observations.size());
+    hoverer_observations += static_cast<long>(sim.tick().uavs[1].scan.observations.size());
   }
   EXPECT_EQ(hoverer_observations, 0);  // every disc in the hoverer's map came through fusion
   ASSERT_EQ(spec.trees.size(), 7u);
@@ -74,16 +73,16 @@ TEST(Team, TrackSurvivesAThreeSecondOcclusionAndIsReassociated) {
   int hidden_steps = 0;
   std::set<agents::TrackKey> target_keys;  // every target track the tracker ever held
   while (!sim.done()) {
-    sim.tick();
+    const StepRecord& step = sim.tick();
     for (const auto& track : sim.team().agents()[0].tracker().targets())
       target_keys.insert(track.key);
-    const double t = sim.lastStep().time;
-    const auto& tracks = sim.lastStep().beliefs[0].tracks;
+    const double t = step.time;
+    const auto& tracks = step.beliefs[0].tracks;
     if (t >= 2.0 && t < 4.5) {  // confirmed before the crown (hidden from 4.5 s to 7.5 s)
       ASSERT_EQ(tracks.size(), 1u) << t;
       key_before = tracks[0].key;
     }
-    if (sim.lastStep().uavs[0].scan.visible.empty() && t > 4.5) ++hidden_steps;
+    if (step.uavs[0].scan.visible.empty() && t > 4.5) ++hidden_steps;
     if (t > 4.5 && t < 7.5) {
       ASSERT_EQ(tracks.size(), 1u) << "lost under the crown at " << t;
     }
@@ -152,8 +151,8 @@ TEST_P(PlannedChase, MovesTheUavToCoverTheTarget) {
   Simulation sim(spec);
   int covered_last_5s = 0;
   while (!sim.done()) {
-    sim.tick();
-    if (sim.lastStep().time > 10.0 && !sim.lastStep().uavs[0].scan.visible.empty()) ++covered_last_5s;
+    const StepRecord& step = sim.tick();
+    if (step.time > 10.0 && !step.uavs[0].scan.visible.empty()) ++covered_last_5s;
   }
   EXPECT_EQ(covered_last_5s, 25);  // 30 m at ≤ 5 m/s: on the target within 10 s, then kept
 }
@@ -168,10 +167,10 @@ TEST(Team, PlanningIsDeterministicForASeed) {
   const ScenarioSpec b = loadScenario("trajectory_handover", options);
   Simulation sa(a), sb(b);
   while (!sa.done()) {
-    sa.tick();
-    sb.tick();
+    const StepRecord& ra = sa.tick();
+    const StepRecord& rb = sb.tick();
     for (std::size_t i = 0; i < a.uavs.size(); ++i) {
-      ASSERT_EQ(sa.lastStep().uavs[i].position, sb.lastStep().uavs[i].position);
+      ASSERT_EQ(ra.uavs[i].position, rb.uavs[i].position);
     }
   }
 }

@@ -51,9 +51,9 @@ void appendList(std::string& out, const std::vector<tracking::Track<N>>& tracks)
 }
 
 void appendDiagnostics(std::string& out, const FusionDiagnostics& d) {
-  for (const long count : {d.steps, d.messages, d.lost_messages, d.remembered_matches,
-                           d.new_matches, d.refused_matches, d.adoptions, d.rekeys,
-                           d.numerical_failures}) {
+  for (const long count :
+       {d.steps, d.messages, d.lost_messages, d.remembered_matches, d.new_matches,
+        d.refused_matches, d.adoptions, d.rekeys, d.numerical_failures}) {
     appendBytes(out, count);
   }
 }
