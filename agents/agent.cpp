@@ -1,5 +1,7 @@
 #include "agents/agent.h"
 
+#include <utility>
+
 namespace canopy::agents {
 
 Agent::Agent(int index, const TrackingConfig& config) : tracker_(index, config) {}
@@ -10,7 +12,9 @@ void Agent::trackLocally(double dt, const sensing::Scan& scan,
   tracker_.update(scan, footprint, map_);
 }
 
-void Agent::finishStep() {
+void Agent::adoptFused(std::vector<tracking::TargetTrack>&& targets,
+                       std::vector<tracking::TreeTrack>&& trees) {
+  tracker_.adopt(std::move(targets), std::move(trees));
   tracker_.deleteStale();
   map_trees_.clear();
   for (const tracking::TreeTrack& tree : tracker_.trees()) {
@@ -25,14 +29,13 @@ void Agent::finishStep() {
   }
 }
 
-AgentBelief Agent::belief() const {
-  AgentBelief belief;
+void Agent::writeBelief(AgentBelief& out) const {
+  out.tracks.clear();
   for (const tracking::TargetTrack& track : tracker_.targets()) {
     if (track.status != tracking::TrackStatus::confirmed) continue;
-    belief.tracks.push_back({track.key, track.label, track.posterior, true});
+    out.tracks.push_back({track.key, track.label, track.posterior, true});
   }
-  belief.trees = map_trees_;
-  return belief;
+  out.trees = map_trees_;
 }
 
 }  // namespace canopy::agents

@@ -16,19 +16,26 @@ class Agent {
  public:
   Agent(int index, const TrackingConfig& config);
 
+  /// A confirmed track on a target the scenario pre-seeds (Tracker::preseed).
+  void preseed(int target, sensing::LabelId label, const Vec4& state) {
+    tracker_.preseed(target, label, state);
+  }
   /// Predicts every track over dt (s) and runs the local JPDAF on this step's scan. The map
   /// used to judge expected misses is the one from the end of the previous step.
   void trackLocally(double dt, const sensing::Scan& scan, const sensing::Footprint& footprint);
-  /// After the team's fusion: deletes stale tracks and rebuilds Ŵ_i from the confirmed trees.
-  void finishStep();
+  /// After the team's fusion: takes its fused lists as its own (Tracker::adopt: swapped in, the
+  /// arguments are left with the replaced lists' storage), deletes stale tracks and rebuilds Ŵ_i
+  /// from the confirmed trees.
+  void adoptFused(std::vector<tracking::TargetTrack>&& targets,
+                  std::vector<tracking::TreeTrack>&& trees);
 
   /// Confirmed target tracks' posteriors: what the planner plans on.
   const std::vector<TargetGaussian>& planningTracks() const { return planning_tracks_; }
   const OcclusionMap& map() const { return map_; }
-  /// Confirmed target tracks and the map's trees, as plain values.
-  AgentBelief belief() const;
+  /// Confirmed target tracks and the map's trees, as plain values, into `out` (its storage
+  /// reused; planned_path is left to the team, which plans).
+  void writeBelief(AgentBelief& out) const;
 
-  tracking::Tracker& tracker() { return tracker_; }
   const tracking::Tracker& tracker() const { return tracker_; }
 
  private:

@@ -1,5 +1,7 @@
 #include "agents/team.h"
 
+#include <utility>
+
 namespace canopy::agents {
 
 Team::Team(const TeamConfig& config)
@@ -14,29 +16,31 @@ Team::Team(const TeamConfig& config)
 }
 
 void Team::preseed(int target, sensing::LabelId label, const Vec4& state) {
-  for (Agent& agent : agents_) agent.tracker().preseed(target, label, state);
+  for (Agent& agent : agents_) agent.preseed(target, label, state);
 }
 
-void Team::track(double dt, const std::vector<sensing::Scan>& scans,
-                 const std::vector<sensing::Footprint>& footprints,
-                 const std::vector<Vec2>& positions) {
-  fusion_views_.clear();
+void Team::trackLocally(int agent, double dt, const Vec2& position, double yaw,
+                        const sensing::Scan& scan, const sensing::Footprint& footprint) {
+  uav_states_[agent].position = position;
+  uav_states_[agent].yaw = yaw;
+  agents_[agent].trackLocally(dt, scan, footprint);
+}
+
+void Team::fuse() {
+  fusion_inputs_.clear();
   for (std::size_t i = 0; i < agents_.size(); ++i) {
-    agents_[i].trackLocally(dt, scans[i], footprints[i]);
-    tracking::Tracker& tracker = agents_[i].tracker();
-    fusion_views_.push_back({&tracker.targets(), &tracker.trees(), positions[i]});
+    const tracking::Tracker& tracker = agents_[i].tracker();
+    fusion_inputs_.push_back({tracker.targets(), tracker.trees(), uav_states_[i].position});
   }
-  fusion_.fuse(fusion_views_);
-  for (Agent& agent : agents_) agent.finishStep();
+  fusion_.fuse(fusion_inputs_, fused_);
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    agents_[i].adoptFused(std::move(fused_.targets[i]), std::move(fused_.trees[i]));
 }
 
-std::optional<planning::TeamPlan> Team::plan(int epoch, const std::vector<Vec2>& positions,
-                                             const std::vector<double>& yaws) {
+std::optional<planning::TeamPlan> Team::plan(int epoch) {
   if (!plans()) return std::nullopt;
   planning_views_.clear();
   for (std::size_t i = 0; i < agents_.size(); ++i) {
-    uav_states_[i].position = positions[i];
-    uav_states_[i].yaw = yaws[i];
     const OcclusionMap* map = nullptr;  // "none": nothing occludes
     if (config_.planner.occlusion_map == OcclusionMapMode::a_priori) map = &a_priori_;
     if (config_.planner.occlusion_map == OcclusionMapMode::dynamic) map = &agents_[i].map();
@@ -50,13 +54,12 @@ std::optional<planning::TeamPlan> Team::plan(int epoch, const std::vector<Vec2>&
   return plan;
 }
 
-std::vector<AgentBelief> Team::beliefs() const {
-  std::vector<AgentBelief> beliefs;
+void Team::writeBeliefs(std::vector<AgentBelief>& out) const {
+  out.resize(agents_.size());
   for (std::size_t i = 0; i < agents_.size(); ++i) {
-    beliefs.push_back(agents_[i].belief());
-    beliefs.back().planned_path = planned_paths_[i];
+    agents_[i].writeBelief(out[i]);
+    out[i].planned_path = planned_paths_[i];
   }
-  return beliefs;
 }
 
 }  // namespace canopy::agents

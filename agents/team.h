@@ -31,21 +31,28 @@ class Team {
   /// Every agent starts with a confirmed track {−1, t} on target t (mean `state`: m, m/s).
   void preseed(int target, sensing::LabelId label, const Vec4& state);
 
-  /// Local tracking of every agent on its scan (dt: s since the last step, 0 at the start), the
-  /// team's fusion, then deletion and map rebuilding. positions: each UAV's ground point (m).
-  void track(double dt, const std::vector<sensing::Scan>& scans,
-             const std::vector<sensing::Footprint>& footprints, const std::vector<Vec2>& positions);
+  /// Agent `agent`'s part of a step, for every agent before fuse(): it takes its UAV's pose now
+  /// (its own navigation, taken as exact: position m, yaw rad) and runs its local JPDAF on its
+  /// scan (dt: s since the last step, 0 at the start).
+  void trackLocally(int agent, double dt, const Vec2& position, double yaw,
+                    const sensing::Scan& scan, const sensing::Footprint& footprint);
+  /// The team's fusion at the positions given to trackLocally; each agent then adopts its fused
+  /// lists, deletes stale tracks and rebuilds its map.
+  void fuse();
 
   /// Whether the team plans at all (planner.algorithm ≠ none): the one place this is decided;
   /// without a planner the UAVs follow their scripted paths.
   bool plans() const { return config_.planner.algorithm != PlannerAlgorithm::none; }
 
-  /// One planning epoch; uavs: each UAV's position and yaw now (the rest from the config).
-  /// Returns the team plan (plans[i].command() is UAV i's command), or nothing without a planner.
-  std::optional<planning::TeamPlan> plan(int epoch, const std::vector<Vec2>& positions,
-                                         const std::vector<double>& yaws);
+  /// One planning epoch from the poses given to trackLocally (the rest of each UAV from the
+  /// config). Returns the team plan (plans[i].command() is UAV i's command), or nothing without a
+  /// planner.
+  std::optional<planning::TeamPlan> plan(int epoch);
 
-  std::vector<AgentBelief> beliefs() const;
+  /// Each agent's belief (its planned path from its latest plan), into `out` (resized to the
+  /// team; its storage reused).
+  void writeBeliefs(std::vector<AgentBelief>& out) const;
+
   const std::vector<Agent>& agents() const { return agents_; }
   const fusion::TeamFusion& fusion() const { return fusion_; }
 
@@ -55,8 +62,9 @@ class Team {
   fusion::TeamFusion fusion_;
   planning::TeamPlanner planner_;
   OcclusionMap a_priori_;
-  std::vector<fusion::AgentTracks> fusion_views_;  // rebuilt every step (pointers into agents_)
-  std::vector<planning::UavState> uav_states_;
+  std::vector<fusion::AgentTracks> fusion_inputs_;  // rebuilt every step, read-only views
+  fusion::FusedTracks fused_;  // each step's fusion result, adopted by the agents (buffers reused)
+  std::vector<planning::UavState> uav_states_;  // poses from trackLocally, the rest from config
   std::vector<planning::AgentView> planning_views_;
   std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan
 };

@@ -32,12 +32,14 @@ render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
 class FrameObserver final : public scenarios::StepObserver {
  public:
   explicit FrameObserver(render::FrameWriter& writer) : writer_(writer) {}
-  void onStep(const scenarios::Simulation& sim) override {
-    writer_.onStep(sim.truth(), sim.beliefs());
+  void onStep(const scenarios::StepRecord& record) override {
+    scenarios::truthSnapshot(record, truth_);
+    writer_.onStep(truth_, record.beliefs);
   }
 
  private:
   render::FrameWriter& writer_;
+  world::WorldSnapshot truth_;  // the record's truth as the renderer takes it (storage reused)
 };
 
 }  // namespace

@@ -15,14 +15,14 @@ namespace {
 constexpr int kAgents = 16;
 constexpr int kTargets = 64;
 
-/// A team whose lists are restored before every timed step, so each iteration fuses the same
-/// input. Targets sit on an 8 × 8 grid 25 m apart; each agent's estimate is off by a little
+/// A team's lists, the same input to every timed step (fusion reads them and writes its result
+/// into `fused`). Targets sit on an 8 × 8 grid 25 m apart; each agent's estimate is off by a little
 /// noise, with its own covariance.
 struct BenchTeam {
   BenchTeam(int trees, bool shared_keys, double spacing) {
     RandomStream rng(42, "bench.fusion");
-    initial_targets.resize(kAgents);
-    initial_trees.resize(kAgents);
+    targets.resize(kAgents);
+    tree_lists.resize(kAgents);
     for (int a = 0; a < kAgents; ++a) {
       positions.push_back(spacing * Vec2(a % 4, a / 4));
       for (int t = 0; t < kTargets; ++t) {
@@ -38,7 +38,7 @@ struct BenchTeam {
         track.posterior.P = B * B.transpose();
         track.posterior.P.diagonal() += Vec4(1.0, 1.2, 0.5, 0.6);
         track.prior = {track.posterior.x, 2.0 * track.posterior.P};
-        initial_targets[a].push_back(track);
+        targets[a].push_back(track);
       }
       for (int t = 0; t < trees; ++t) {
         tracking::TreeTrack tree;
@@ -49,38 +49,25 @@ struct BenchTeam {
         tree.posterior.x.head<2>() += 0.3 * Vec2(rng.normal(), rng.normal());
         tree.posterior.P = Eigen::Vector3d(0.5, 0.5, 0.05).asDiagonal();
         tree.prior = tree.posterior;
-        initial_trees[a].push_back(tree);
+        tree_lists[a].push_back(tree);
       }
     }
-    targets = initial_targets;
-    tree_lists = initial_trees;
-    for (int a = 0; a < kAgents; ++a) view.push_back({&targets[a], &tree_lists[a], positions[a]});
-  }
-
-  void restore() {
-    for (int a = 0; a < kAgents; ++a) {
-      targets[a] = initial_targets[a];  // copy-assignment keeps the capacity
-      tree_lists[a] = initial_trees[a];
-    }
+    for (int a = 0; a < kAgents; ++a) inputs.push_back({targets[a], tree_lists[a], positions[a]});
   }
 
   std::vector<Vec2> positions;
-  std::vector<std::vector<tracking::TargetTrack>> initial_targets, targets;
-  std::vector<std::vector<tracking::TreeTrack>> initial_trees, tree_lists;
-  std::vector<AgentTracks> view;
+  std::vector<std::vector<tracking::TargetTrack>> targets;
+  std::vector<std::vector<tracking::TreeTrack>> tree_lists;
+  std::vector<AgentTracks> inputs;
+  FusedTracks fused;  // reused from step to step, as Team does
 };
 
-/// One timed fuse() per iteration on freshly restored lists; the untimed first step warms the
-/// buffers up, as in a running simulation.
+/// One timed fuse() per iteration, the copy of the inputs into the fused lists included; the
+/// untimed first step warms the buffers up, as in a running simulation.
 void runFusion(benchmark::State& state, const FusionConfig& config, BenchTeam& team) {
   TeamFusion fusion(config, kAgents, 1);
-  fusion.fuse(team.view);
-  for (auto _ : state) {
-    state.PauseTiming();
-    team.restore();
-    state.ResumeTiming();
-    fusion.fuse(team.view);
-  }
+  fusion.fuse(team.inputs, team.fused);
+  for (auto _ : state) fusion.fuse(team.inputs, team.fused);
   state.counters["agents"] = kAgents;
   state.counters["targets"] = kTargets;
 }

@@ -63,8 +63,8 @@ class RecordLineWriter {
   explicit RecordLineWriter(const std::vector<std::string>& labels)
       : names_(labels), labels_(labels.size()) {}
 
-  /// Appends step's line (without the newline) to `out`.
-  void write(const Simulation& sim, std::string& out);
+  /// Appends the step's line (without the newline) to `out`.
+  void write(const StepRecord& record, std::string& out);
 
  private:
   const std::string& label(sensing::LabelId id) {
@@ -191,29 +191,28 @@ void plan(JsonLine& j, const agents::planning::TeamPlan& plan) {
 
 }  // namespace
 
-void RecordLineWriter::write(const Simulation& sim, std::string& out) {
-  const world::WorldSnapshot& truth = sim.truth();
+void RecordLineWriter::write(const StepRecord& record, std::string& out) {
   JsonLine j(out);
   j.beginObject();
   j.key("agents");
   j.beginArray();
-  for (const agents::AgentBelief& b : sim.beliefs()) belief(j, b);
+  for (const agents::AgentBelief& b : record.beliefs) belief(j, b);
   j.endArray();
   j.key("k");
-  j.integer(truth.step);
-  if (sim.plan()) {
+  j.integer(record.step);
+  if (record.plan) {
     j.key("plan");
-    plan(j, *sim.plan());
+    plan(j, *record.plan);
   }
   j.key("scans");
   j.beginArray();
-  for (const sensing::Scan& s : sim.scans()) scan(j, s);
+  for (const UavRecord& uav : record.uavs) scan(j, uav.scan);
   j.endArray();
   j.key("t");
-  j.number(truth.time);
+  j.number(record.time);
   j.key("targets");
   j.beginArray();
-  for (const world::TargetState& target : truth.targets) {
+  for (const TargetRecord& target : record.targets) {
     j.beginObject();
     j.key("p");
     vec(j, target.position);
@@ -224,11 +223,10 @@ void RecordLineWriter::write(const Simulation& sim, std::string& out) {
   j.endArray();
   j.key("uavs");
   j.beginArray();
-  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
-    const world::UavState& uav = truth.uavs[i];
+  for (const UavRecord& uav : record.uavs) {
     j.beginObject();
     j.key("cmd");
-    vec(j, sim.world().commandedVelocity(static_cast<int>(i)));
+    vec(j, uav.command);
     j.key("p");
     vec(j, uav.position);
     j.key("v");
@@ -241,10 +239,10 @@ void RecordLineWriter::write(const Simulation& sim, std::string& out) {
   j.endObject();
 }
 
-std::string recordLine(const Simulation& sim) {
-  RecordLineWriter writer(sim.spec().labels);
+std::string recordLine(const std::vector<std::string>& labels, const StepRecord& record) {
+  RecordLineWriter writer(labels);
   std::string line;
-  writer.write(sim, line);
+  writer.write(record, line);
   return line;
 }
 
@@ -255,18 +253,17 @@ Recorder::Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec)
 
 Recorder::~Recorder() = default;
 
-void Recorder::onStep(const Simulation& sim) {
+void Recorder::onStep(const StepRecord& record) {
   line_.clear();  // keeps its capacity: no allocation per step once the longest line was seen
-  lines_->write(sim, line_);
+  lines_->write(record, line_);
   line_ += '\n';
   record_.write(line_);
-  if (sim.plan()) {
+  if (record.plan) {
     using Json = nlohmann::json;
     Json seconds = Json::array();
-    for (const auto& report : sim.plan()->reports) seconds.push_back(report.seconds);
+    for (const auto& report : record.plan->reports) seconds.push_back(report.seconds);
     timings_.write(
-        Json{{"k", sim.truth().step}, {"epoch", sim.plan()->epoch}, {"plan_seconds", seconds}}
-            .dump() +
+        Json{{"k", record.step}, {"epoch", record.plan->epoch}, {"plan_seconds", seconds}}.dump() +
         '\n');
   }
 }

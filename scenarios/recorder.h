@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/output_file.h"
+#include "scenarios/spec.h"
 #include "scenarios/step_observer.h"
 
 namespace canopy::scenarios {
@@ -19,10 +21,11 @@ class Recorder final : public StepObserver {
   /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
   /// appears under either name until commit(), and a recorder destroyed without it leaves
   /// nothing. Throws WriteError when it cannot write. Each line is streamed into one reused
-  /// buffer (no JSON document per step); the bytes are those of nlohmann's dump().
+  /// buffer (no JSON document per step); the bytes are those of nlohmann's dump(). Keeps a copy
+  /// of the spec's labels.
   Recorder(const std::filesystem::path& dir, const ScenarioSpec& spec);
   ~Recorder();
-  void onStep(const Simulation& sim) override;
+  void onStep(const StepRecord& record) override;
   /// Publishes both files, once, after the last step.
   void commit();
 
@@ -33,7 +36,7 @@ class Recorder final : public StepObserver {
   std::string line_;
 };
 
-/// One step as a JSON line (without the newline).
-std::string recordLine(const Simulation& sim);
+/// One step as a JSON line (without the newline); labels: the scenario's, by LabelId.
+std::string recordLine(const std::vector<std::string>& labels, const StepRecord& record);
 
 }  // namespace canopy::scenarios

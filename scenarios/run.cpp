@@ -9,6 +9,7 @@
 #include "core/random.h"
 #include "core/text_file.h"
 #include "scenarios/recorder.h"
+#include "scenarios/simulation.h"
 #include "scenarios/summary.h"
 
 namespace canopy::scenarios {

@@ -29,11 +29,9 @@ Simulation::Simulation(ScenarioSpec spec)
       target_labels_(spec_.targetLabels()) {
   const std::size_t n = spec_.uavs.size();
   for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec_.seed, "sensing", i);
-  scans_.resize(n);
-  footprints_.resize(n);
-  positions_.resize(n);
-  yaws_.resize(n);
   commands_.assign(n, Vec2::Zero());
+  record_.uavs.resize(n);
+  record_.targets.resize(spec_.targets.size());
   steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec_.planner.replan_period / spec_.dt)));
   if (spec_.tracking.preseed) {
     // Paper: every OOI starts with a track of the same P₀ at every agent, centred on the truth.
@@ -46,21 +44,68 @@ Simulation::Simulation(ScenarioSpec spec)
   }
 }
 
+void Simulation::readTruth() {
+  record_.step = truth_.step;
+  record_.time = truth_.time;
+  for (std::size_t i = 0; i < record_.uavs.size(); ++i) {
+    UavRecord& uav = record_.uavs[i];
+    uav.position = truth_.uavs[i].position;
+    uav.yaw = truth_.uavs[i].yaw;
+    uav.velocity = truth_.uavs[i].velocity;
+  }
+  for (std::size_t t = 0; t < record_.targets.size(); ++t) {
+    TargetRecord& target = record_.targets[t];
+    target.position = truth_.targets[t].position;
+    target.velocity = truth_.targets[t].velocity;
+    target.occluded = world_.insideOccluder(target.position);
+  }
+}
+
+void Simulation::sense() {
+  for (std::size_t i = 0; i < record_.uavs.size(); ++i) {
+    const int uav = static_cast<int>(i);
+    const sensing::SensorDef& sensor = spec_.uavs[i].sensor;
+    record_.uavs[i].footprint = sensing::footprintOf(truth_, uav, sensor);
+    sensing::sense(world_, truth_, uav, sensor, spec_.sensing, target_labels_, sensing_rng_[i],
+                   scratch_, record_.uavs[i].scan);
+  }
+}
+
 void Simulation::commandScriptedUavs() {
   // Scripted sweeps: aim at the path's position one step ahead (clamped to v_max by the world).
   const double t_next = world_.time() + spec_.dt;
   for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
     const auto& path = spec_.uavs[i].path;
-    commands_[i] =
-        path ? Vec2((path->positionAt(t_next) - positions_[i]) / spec_.dt) : Vec2::Zero();
+    commands_[i] = path ? Vec2((path->positionAt(t_next) - record_.uavs[i].position) / spec_.dt)
+                        : Vec2::Zero();
   }
 }
 
 void Simulation::commandFromPlan() {
   // Receding horizon: plan every replan_period from t = 0, apply the first action, hold it.
-  if (truth_.step % steps_per_plan_ != 0) return;
-  plan_ = team_.plan(truth_.step / steps_per_plan_, positions_, yaws_);
-  for (std::size_t i = 0; i < plan_->plans.size(); ++i) commands_[i] = plan_->plans[i].command();
+  if (record_.step % steps_per_plan_ != 0) return;
+  record_.plan = team_.plan(record_.step / steps_per_plan_);
+  for (std::size_t i = 0; i < record_.plan->plans.size(); ++i)
+    commands_[i] = record_.plan->plans[i].command();
+}
+
+void Simulation::commandUavs() {
+  // Every UAV is commanded every step, so an external command (commandNext) lasts one step.
+  for (std::size_t i = 0; i < commands_.size(); ++i) {
+    world_.commandUav(static_cast<int>(i), commands_[i]);
+    record_.uavs[i].command = world_.commandedVelocity(static_cast<int>(i));
+  }
+}
+
+void Simulation::readTeam() {
+  team_.writeBeliefs(record_.beliefs);
+  const std::vector<agents::Agent>& agents = team_.agents();
+  record_.counts.resize(agents.size());
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    record_.counts[i] = {agents[i].tracker().targets().size(), agents[i].map().trees().size(),
+                         agents[i].tracker().diagnostics()};
+  }
+  record_.fusion = team_.fusion().diagnostics();
 }
 
 void Simulation::commandNext(int uav, const Vec2& velocity) {
@@ -73,30 +118,27 @@ void Simulation::commandNext(int uav, const Vec2& velocity) {
   world_.commandUav(uav, velocity);
 }
 
-void Simulation::tick() {
+const StepRecord& Simulation::tick() {
   const double dt = next_step_ > 0 ? spec_.dt : 0.0;
   if (next_step_ > 0) world_.step(spec_.dt);  // applies the commands set at the previous step
   truth_ = world_.snapshot();
-  for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
-    const int uav = static_cast<int>(i);
-    positions_[i] = truth_.uavs[i].position;
-    yaws_[i] = truth_.uavs[i].yaw;
-    footprints_[i] = sensing::footprintOf(truth_, uav, spec_.uavs[i].sensor);
-    sensing::sense(world_, truth_, uav, spec_.uavs[i].sensor, spec_.sensing, target_labels_,
-                   sensing_rng_[i], scratch_, scans_[i]);
+  readTruth();
+  sense();
+  for (std::size_t i = 0; i < record_.uavs.size(); ++i) {
+    const UavRecord& uav = record_.uavs[i];
+    team_.trackLocally(static_cast<int>(i), dt, uav.position, uav.yaw, uav.scan, uav.footprint);
   }
-  team_.track(dt, scans_, footprints_, positions_);
-  plan_.reset();
+  team_.fuse();
+  record_.plan.reset();
   if (team_.plans()) {
     commandFromPlan();
   } else {
     commandScriptedUavs();
   }
-  // Every UAV is commanded every step, so an external command (commandNext) lasts one step.
-  for (std::size_t i = 0; i < commands_.size(); ++i)
-    world_.commandUav(static_cast<int>(i), commands_[i]);
-  beliefs_ = team_.beliefs();
+  commandUavs();
+  readTeam();
   ++next_step_;
+  return record_;
 }
 
 }  // namespace canopy::scenarios

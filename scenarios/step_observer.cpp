@@ -1,11 +1,13 @@
 #include "scenarios/step_observer.h"
 
+#include "scenarios/simulation.h"
+
 namespace canopy::scenarios {
 
 void runToEnd(Simulation& sim, std::span<StepObserver* const> observers) {
   while (!sim.done()) {
-    sim.tick();
-    for (StepObserver* observer : observers) observer->onStep(sim);
+    const StepRecord& record = sim.tick();
+    for (StepObserver* observer : observers) observer->onStep(record);
   }
 }
 

@@ -32,19 +32,19 @@ double median(std::vector<double> x) {
 }
 }  // namespace
 
-void SummaryBuilder::onStep(const Simulation& sim) {
-  const world::WorldSnapshot& truth = sim.truth();
+void SummaryBuilder::onStep(const StepRecord& record) {
   if (!last_uav_position_.empty()) {
     for (std::size_t i = 0; i < uavs_.size(); ++i) {
-      uavs_[i].distance += (truth.uavs[i].position - last_uav_position_[i]).norm();
+      uavs_[i].distance += (record.uavs[i].position - last_uav_position_[i]).norm();
     }
   }
   last_uav_position_.clear();
-  for (const world::UavState& uav : truth.uavs) last_uav_position_.push_back(uav.position);
+  for (const UavRecord& uav : record.uavs) last_uav_position_.push_back(uav.position);
 
   visible_by_.assign(targets_.size(), 0);
   in_footprint_of_.assign(targets_.size(), 0);
-  for (const sensing::Scan& scan : sim.scans()) {
+  for (const UavRecord& uav : record.uavs) {
+    const sensing::Scan& scan = uav.scan;
     UavTally& tally = uavs_[scan.uav];
     tally.visible += static_cast<long>(scan.visible.size());
     tally.observations += static_cast<long>(scan.observations.size());
@@ -58,27 +58,20 @@ void SummaryBuilder::onStep(const Simulation& sim) {
   }
 
   truth_positions_.clear();
-  for (const world::TargetState& target : truth.targets)
-    truth_positions_.push_back(target.position);
-  for (std::size_t i = 0; i < sim.beliefs().size(); ++i) {
+  for (const TargetRecord& target : record.targets) truth_positions_.push_back(target.position);
+  for (std::size_t i = 0; i < record.beliefs.size(); ++i) {
     estimates_.clear();
-    for (const agents::TrackEstimate& track : sim.beliefs()[i].tracks) {
+    for (const agents::TrackEstimate& track : record.beliefs[i].tracks) {
       estimates_.push_back(track.belief.x.head<2>());
     }
     ospa_[i].push_back(ospa_metric_(truth_positions_, estimates_));
   }
-  if (sim.plan()) {
-    for (const auto& report : sim.plan()->reports)
+  if (record.plan) {
+    for (const auto& report : record.plan->reports)
       plan_seconds_[report.agent].push_back(report.seconds);
   }
-  const agents::Team& team = sim.team();
-  agents_at_end_.resize(team.agents().size());
-  for (std::size_t i = 0; i < agents_at_end_.size(); ++i) {
-    const auto& tracker = team.agents()[i].tracker();
-    agents_at_end_[i] = {tracker.targets().size(), team.agents()[i].map().trees().size(),
-                         tracker.diagnostics()};
-  }
-  fusion_at_end_ = team.fusion().diagnostics();
+  counts_at_end_ = record.counts;
+  fusion_at_end_ = record.fusion;
   ++steps_;
 }
 
@@ -113,8 +106,8 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                 {"observations", uavs_[i].observations},
                 {"ospa_mean_m", mean(ospa_[i])},
                 {"ospa_m", ospa_[i]}};
-    if (i < agents_at_end_.size()) {
-      const AgentAtEnd& end = agents_at_end_[i];
+    if (i < counts_at_end_.size()) {
+      const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;
       uav["trees_in_map_at_end"] = end.trees_in_map;
       uav["tracking_diagnostics"] = {

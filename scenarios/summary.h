@@ -5,18 +5,18 @@
 #include <vector>
 
 #include "agents/fusion/fusion_diagnostics.h"
-#include "agents/tracking/track.h"
 #include "scenarios/ospa.h"
+#include "scenarios/spec.h"
 #include "scenarios/step_observer.h"
 
 namespace canopy::scenarios {
 
 /// Keeps values only: the names it reports, copied from the spec, and the team's counts as of the
-/// last step added; it holds no reference to the spec or into the simulation.
+/// last step added; it holds no reference to the spec, a record or the simulation.
 class SummaryBuilder final : public StepObserver {
  public:
   explicit SummaryBuilder(const ScenarioSpec& spec);
-  void onStep(const Simulation& sim) override;
+  void onStep(const StepRecord& record) override;
   /// The summary as pretty JSON; wall times go under "timing" (the only non-deterministic
   /// fields).
   std::string json(double wall_seconds) const;
@@ -46,10 +46,6 @@ class SummaryBuilder final : public StepObserver {
     std::size_t trees = 0;
     std::vector<std::string> targets, target_labels, uavs;
   };
-  struct AgentAtEnd {  // one agent's counts at the last step added
-    std::size_t tracks = 0, trees_in_map = 0;
-    agents::tracking::TrackingDiagnostics tracking;
-  };
   Names names_;
   std::vector<TargetTally> targets_;
   std::vector<UavTally> uavs_;
@@ -60,7 +56,7 @@ class SummaryBuilder final : public StepObserver {
   std::vector<std::vector<double>> ospa_;          // [agent][k], m
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
-  std::vector<AgentAtEnd> agents_at_end_;  // empty until a step was added
+  std::vector<AgentCounts> counts_at_end_;  // the last step's; empty until a step was added
   agents::fusion::FusionDiagnostics fusion_at_end_;
   int steps_ = 0;
 };

@@ -7,6 +7,7 @@
 #include "core/printable.h"
 #include "scenarios/error.h"
 #include "scenarios/internal/json_reader.h"
+#include "scenarios/simulation.h"
 
 namespace canopy::scenarios {
 namespace {
@@ -25,10 +26,11 @@ TrialCollector::TrialCollector(const ScenarioSpec& spec) {
   masks_ = result_.targets <= kMaxMaskTargets;
 }
 
-void TrialCollector::onStep(const Simulation& sim) {
-  const int k = sim.truth().step;
+void TrialCollector::onStep(const StepRecord& record) {
+  const int k = record.step;
   std::vector<TargetBits> visible(result_.uavs, 0), in_footprint(result_.uavs, 0);
-  for (const sensing::Scan& scan : sim.scans()) {
+  for (const UavRecord& uav : record.uavs) {
+    const sensing::Scan& scan = uav.scan;
     if (masks_) {
       for (const int t : scan.visible) visible[scan.uav] |= TargetBits{1} << t;
       for (const int t : scan.in_footprint) in_footprint[scan.uav] |= TargetBits{1} << t;
@@ -42,14 +44,13 @@ void TrialCollector::onStep(const Simulation& sim) {
   TargetBits occluded = 0;
   if (masks_) {
     for (int t = 0; t < result_.targets; ++t) {
-      if (sim.world().insideOccluder(sim.truth().targets[t].position))
-        occluded |= TargetBits{1} << t;
+      if (record.targets[t].occluded) occluded |= TargetBits{1} << t;
     }
   }
   truth_.clear();
-  for (const world::TargetState& target : sim.truth().targets) truth_.push_back(target.position);
+  for (const TargetRecord& target : record.targets) truth_.push_back(target.position);
   double ospa = 0.0, trace = 0.0;
-  for (const agents::AgentBelief& belief : sim.beliefs()) {
+  for (const agents::AgentBelief& belief : record.beliefs) {
     estimates_.clear();
     for (const agents::TrackEstimate& track : belief.tracks) {
       estimates_.push_back(track.belief.x.head<2>());
@@ -57,11 +58,11 @@ void TrialCollector::onStep(const Simulation& sim) {
     }
     ospa += ospa_(truth_, estimates_);
   }
-  const double agents = std::max<double>(1.0, static_cast<double>(sim.beliefs().size()));
+  const double agents = std::max<double>(1.0, static_cast<double>(record.beliefs.size()));
   result_.ospa.push_back(ospa / agents);
   result_.trace.push_back(trace / agents);
-  if (sim.plan()) {
-    for (const auto& report : sim.plan()->reports) result_.plan_seconds.push_back(report.seconds);
+  if (record.plan) {
+    for (const auto& report : record.plan->reports) result_.plan_seconds.push_back(report.seconds);
   }
   result_.visible.push_back(std::move(visible));
   result_.in_footprint.push_back(std::move(in_footprint));

@@ -33,11 +33,11 @@ struct TrialResult {
   int steps() const { return static_cast<int>(occluded.size()); }
 };
 
-/// Accumulates a TrialResult step by step from a running Simulation.
+/// Accumulates a TrialResult step by step from a run's records.
 class TrialCollector final : public StepObserver {
  public:
   explicit TrialCollector(const ScenarioSpec& spec);
-  void onStep(const Simulation& sim) override;
+  void onStep(const StepRecord& record) override;
   TrialResult take() { return std::move(result_); }
 
  private:

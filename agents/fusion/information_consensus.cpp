@@ -36,7 +36,7 @@ bool fromInformation(const Eigen::Matrix<double, N, N>& omega, const Eigen::Matr
 }  // namespace
 
 template <int N>
-void InformationConsensus<N>::run(std::span<TrackList* const> lists, const Clusters& clusters,
+void InformationConsensus<N>::run(std::span<TrackList> lists, const Clusters& clusters,
                                   const CommGraph& graph, const FusionConfig& config,
                                   FusionDiagnostics& diagnostics) {
   slot_of_.assign(static_cast<std::size_t>(graph.agents()), -1);
@@ -126,13 +126,13 @@ void InformationConsensus<N>::mix(std::span<const ClusterMember> members, const 
 }
 
 template <int N>
-void InformationConsensus<N>::runCi(std::span<TrackList* const> lists,
+void InformationConsensus<N>::runCi(std::span<TrackList> lists,
                                     std::span<const ClusterMember> members, const CommGraph& graph,
                                     int rounds, FusionDiagnostics& diagnostics) {
   const int count = static_cast<int>(members.size());
   info_.resize(members.size());
   for (int k = 0; k < count; ++k) {
-    const Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    const Gaussian<N>& posterior = lists[members[k].agent][members[k].track].posterior;
     if (!toInformation<N>(posterior, info_[k].template leftCols<N>(), info_[k].col(N))) {
       exclude(members, k);
       ++diagnostics.numerical_failures;
@@ -143,7 +143,7 @@ void InformationConsensus<N>::runCi(std::span<TrackList* const> lists,
   mix(members, graph, rounds, info_, info_next_);
   for (int k = 0; k < count; ++k) {
     if (!usable_[k]) continue;
-    Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    Gaussian<N>& posterior = lists[members[k].agent][members[k].track].posterior;
     const Mat omega = info_[k].template leftCols<N>();
     const Vec q = info_[k].col(N);
     if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
@@ -151,14 +151,14 @@ void InformationConsensus<N>::runCi(std::span<TrackList* const> lists,
 }
 
 template <int N>
-void InformationConsensus<N>::runHcmci(std::span<TrackList* const> lists,
+void InformationConsensus<N>::runHcmci(std::span<TrackList> lists,
                                        std::span<const ClusterMember> members,
                                        const CommGraph& graph, int rounds,
                                        FusionDiagnostics& diagnostics) {
   const int count = static_cast<int>(members.size());
   hybrid_.resize(members.size());
   for (int k = 0; k < count; ++k) {
-    const tracking::Track<N>& track = (*lists[members[k].agent])[members[k].track];
+    const tracking::Track<N>& track = lists[members[k].agent][members[k].track];
     Hybrid& y = hybrid_[k];
     Mat omega_post;
     Vec q_post;
@@ -188,13 +188,13 @@ void InformationConsensus<N>::runHcmci(std::span<TrackList* const> lists,
     // Ω = Ω⁻ + ω δΩ, q = q⁻ + ω δq (Battistelli, Chisci, Mugnai, Farina & Graziano 2015).
     const Mat omega = y.template leftCols<N>() + omega_scale * y.template block<N, N>(0, N + 1);
     const Vec q = y.col(N) + omega_scale * y.col(2 * N + 1);
-    Gaussian<N>& posterior = (*lists[members[k].agent])[members[k].track].posterior;
+    Gaussian<N>& posterior = lists[members[k].agent][members[k].track].posterior;
     if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
   }
 }
 
 template <int N>
-void InformationConsensus<N>::runObserverAverage(std::span<TrackList* const> lists,
+void InformationConsensus<N>::runObserverAverage(std::span<TrackList> lists,
                                                  std::span<const ClusterMember> members,
                                                  const CommGraph& graph,
                                                  FusionDiagnostics& diagnostics) {
@@ -202,7 +202,7 @@ void InformationConsensus<N>::runObserverAverage(std::span<TrackList* const> lis
   info_.resize(members.size());
   observed_.assign(members.size(), 0);
   for (int k = 0; k < count; ++k) {
-    const tracking::Track<N>& track = (*lists[members[k].agent])[members[k].track];
+    const tracking::Track<N>& track = lists[members[k].agent][members[k].track];
     observed_[k] = track.detected && !members[k].adopted ? 1 : 0;
     if (!toInformation<N>(track.posterior, info_[k].template leftCols<N>(), info_[k].col(N))) {
       exclude(members, k);
@@ -232,7 +232,7 @@ void InformationConsensus<N>::runObserverAverage(std::span<TrackList* const> lis
     sum /= static_cast<double>(observers);
     const Mat omega = sum.template leftCols<N>();
     const Vec q = sum.col(N);
-    Gaussian<N>& posterior = (*lists[i])[members[k].track].posterior;
+    Gaussian<N>& posterior = lists[i][members[k].track].posterior;
     if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
   }
 }

@@ -44,7 +44,7 @@ class InformationConsensus {
 
   /// Overwrites the posterior of every member of every cluster with two or more members. Uses
   /// the losses drawn on `graph` (round r of consensus is exchange r).
-  void run(std::span<TrackList* const> lists, const Clusters& clusters, const CommGraph& graph,
+  void run(std::span<TrackList> lists, const Clusters& clusters, const CommGraph& graph,
            const FusionConfig& config, FusionDiagnostics& diagnostics);
 
  private:
@@ -53,11 +53,11 @@ class InformationConsensus {
   using Info = Eigen::Matrix<double, N, N + 1>;        // [Ω | q]
   using Hybrid = Eigen::Matrix<double, N, 2 * N + 2>;  // [Ω⁻ | q⁻ | δΩ | δq]
 
-  void runCi(std::span<TrackList* const> lists, std::span<const ClusterMember> members,
+  void runCi(std::span<TrackList> lists, std::span<const ClusterMember> members,
              const CommGraph& graph, int rounds, FusionDiagnostics& diagnostics);
-  void runHcmci(std::span<TrackList* const> lists, std::span<const ClusterMember> members,
+  void runHcmci(std::span<TrackList> lists, std::span<const ClusterMember> members,
                 const CommGraph& graph, int rounds, FusionDiagnostics& diagnostics);
-  void runObserverAverage(std::span<TrackList* const> lists, std::span<const ClusterMember> members,
+  void runObserverAverage(std::span<TrackList> lists, std::span<const ClusterMember> members,
                           const CommGraph& graph, FusionDiagnostics& diagnostics);
   /// The links between usable members of the cluster, and each member's own weight before losses.
   void linkHolders(std::span<const ClusterMember> members, const CommGraph& graph);

@@ -13,20 +13,20 @@ TeamFusion::TeamFusion(const FusionConfig& config, int agents, std::uint64_t see
     loss_streams_.emplace_back(seed, "fusion.loss", static_cast<std::uint64_t>(i));
   }
   positions_.resize(static_cast<std::size_t>(agents_));
-  target_lists_.resize(static_cast<std::size_t>(agents_));
-  tree_lists_.resize(static_cast<std::size_t>(agents_));
 }
 
-void TeamFusion::fuse(std::span<const AgentTracks> agents) {
+void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
   if (static_cast<int>(agents.size()) != agents_) {
     std::fprintf(stderr, "TeamFusion::fuse: %zu agents given, team has %d\n", agents.size(),
                  agents_);
     std::abort();
   }
+  fused.targets.resize(static_cast<std::size_t>(agents_));
+  fused.trees.resize(static_cast<std::size_t>(agents_));
   for (int i = 0; i < agents_; ++i) {
     positions_[i] = agents[i].position;
-    target_lists_[i] = agents[i].targets;
-    tree_lists_[i] = agents[i].trees;
+    fused.targets[i].assign(agents[i].targets.begin(), agents[i].targets.end());
+    fused.trees[i].assign(agents[i].trees.begin(), agents[i].trees.end());
   }
   graph_.build(positions_, config_.comm_range);
   const int exchanges = config_.method == FusionMethod::observer_average ? 1 : config_.rounds;
@@ -35,12 +35,12 @@ void TeamFusion::fuse(std::span<const AgentTracks> agents) {
   diagnostics_.messages += graph_.messages();
   diagnostics_.lost_messages += graph_.lostMessages();
 
-  target_association_.associate(target_lists_, graph_, config_.association_gate, mint_,
+  target_association_.associate(fused.targets, graph_, config_.association_gate, mint_,
                                 target_clusters_, diagnostics_);
-  target_consensus_.run(target_lists_, target_clusters_, graph_, config_, diagnostics_);
-  tree_association_.associate(tree_lists_, graph_, config_.association_gate, mint_, tree_clusters_,
+  target_consensus_.run(fused.targets, target_clusters_, graph_, config_, diagnostics_);
+  tree_association_.associate(fused.trees, graph_, config_.association_gate, mint_, tree_clusters_,
                               diagnostics_);
-  tree_consensus_.run(tree_lists_, tree_clusters_, graph_, config_, diagnostics_);
+  tree_consensus_.run(fused.trees, tree_clusters_, graph_, config_, diagnostics_);
 }
 
 }  // namespace canopy::agents::fusion

@@ -17,17 +17,27 @@
 
 namespace canopy::agents::fusion {
 
-/// One agent's part in a fusion step: its track lists, read and rewritten in place, and its
-/// position. The lists must outlive the fuse() call; nothing keeps them after it.
+/// One agent's part in a fusion step, read only: its lists after this step's local tracking and
+/// its position.
 struct AgentTracks {
-  std::vector<tracking::TargetTrack>* targets = nullptr;  // OOI tracks (null: none, takes no part)
-  std::vector<tracking::TreeTrack>* trees = nullptr;      // SOO tracks, its map Ŵ_i (null: none)
-  Vec2 position = Vec2::Zero();                           // m, UAV ground position (comm_range)
+  std::span<const tracking::TargetTrack> targets;  // OOI tracks
+  std::span<const tracking::TreeTrack> trees;      // SOO tracks, its map Ŵ_i
+  Vec2 position = Vec2::Zero();                    // m, UAV ground position (comm_range)
+};
+
+/// The result of a fusion step: every agent's lists after it, by agent index, for the agent to
+/// adopt as its own.
+struct FusedTracks {
+  std::vector<std::vector<tracking::TargetTrack>> targets;  // [agent]
+  std::vector<std::vector<tracking::TreeTrack>> trees;      // [agent]
 };
 
 /// Distributed fusion of the whole team, targets (Track<4>) and trees (Track<3>) alike.
 ///
-/// fuse(agents), with agents[i] agent i (size = the team size given at construction):
+/// fuse(agents, fused), with agents[i] agent i (size = the team size given at construction), reads
+/// every agent's lists and writes the fused lists into `fused`; the agents' own lists are not
+/// touched (each agent adopts its fused lists afterwards, Agent::adoptFused). fused.targets[i]
+/// starts as a copy of agents[i].targets (fused.trees[i] likewise) and is then changed by:
 /// 1. Graph: UAVs within config.comm_range (m) of each other are neighbours (all pairs when
 ///    infinite), with Metropolis weights π_ij = 1 / (1 + max(deg_i, deg_j)). For each of the
 ///    L = config.rounds consensus exchanges (one for observer_average) every directed message is
@@ -37,19 +47,21 @@ struct AgentTracks {
 /// 2. Association (TrackAssociation): neighbours' tracks are matched by label and position
 ///    (χ²₂ gate config.association_gate, Hungarian assignment, tracks sharing a key kept together
 ///    while gated); matched tracks take the smallest key; a confirmed track a neighbour lacks is
-///    copied into the neighbour's list (appended), so it reaches one more hop every step.
+///    copied into the neighbour's fused list (appended), so it reaches one more hop every step.
 /// 3. Consensus (InformationConsensus) by config.method: every track's posterior is overwritten
 ///    by the fused one. Track::prior, status and the counters are left alone, except that
 ///    adopted copies are confirmed, with detected = false.
 ///
 /// Postconditions: within one connected part of the network no two clusters share a key, so no
-/// list holds two tracks with one key; tracks never change label, and lists only grow (fusion
-/// deletes nothing: deletion stays with the tracker). Tracks of agents out of range of everyone
-/// are untouched. The result depends only on the inputs, the seed and the number of fuse() calls
+/// fused list holds two tracks with one key; tracks never change label, and a fused list holds
+/// its agent's tracks in their order, then the adopted ones (fusion deletes nothing: deletion
+/// stays with the tracker). The fused lists of agents out of range of everyone equal their
+/// input. The result depends only on the inputs, the seed and the number of fuse() calls
 /// so far (the loss streams advance), never on timing.
 ///
-/// Memory: scratch buffers are members, cleared and refilled every step, so a steady team
-/// allocates nothing per step once warmed up (except to append adopted tracks). Not thread-safe;
+/// Memory: scratch buffers are members, cleared and refilled every step, and the fused lists are
+/// refilled in place, so a steady team whose caller keeps one FusedTracks allocates nothing per
+/// step once warmed up (except to append adopted tracks). Not thread-safe;
 /// one TeamFusion per simulated team.
 class TeamFusion {
  public:
@@ -57,9 +69,10 @@ class TeamFusion {
   /// association_gate > 0 and finite). agents: team size N ≥ 0. seed: the trial's seed.
   TeamFusion(const FusionConfig& config, int agents, std::uint64_t seed);
 
-  /// Runs one fusion step on every agent's lists. agents.size() must equal the team size
-  /// (checked: a mismatch is a programming error and aborts).
-  void fuse(std::span<const AgentTracks> agents);
+  /// Runs one fusion step on the agents' lists and writes the result into `fused` (resized to
+  /// the team; its lists' capacity is reused). agents.size() must equal the team size (checked:
+  /// a mismatch is a programming error and aborts).
+  void fuse(std::span<const AgentTracks> agents, FusedTracks& fused);
 
   /// Totals since construction.
   const FusionDiagnostics& diagnostics() const { return diagnostics_; }
@@ -75,8 +88,6 @@ class TeamFusion {
   CommGraph graph_;
   FusionDiagnostics diagnostics_;
   std::vector<Vec2> positions_;
-  std::vector<std::vector<tracking::TargetTrack>*> target_lists_;
-  std::vector<std::vector<tracking::TreeTrack>*> tree_lists_;
   TrackAssociation<4> target_association_;
   TrackAssociation<3> tree_association_;
   InformationConsensus<4> target_consensus_;

@@ -25,8 +25,8 @@ double mahalanobis2(const Vec2& pa, const Mat2& Sa, const Vec2& pb, const Mat2& 
 }  // namespace
 
 template <int N>
-void TrackAssociation<N>::associate(std::span<TrackList* const> lists, const CommGraph& graph,
-                                    double gate, KeyMint& mint, Clusters& clusters,
+void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph& graph, double gate,
+                                    KeyMint& mint, Clusters& clusters,
                                     FusionDiagnostics& diagnostics) {
   agents_ = graph.agents();
   mask_words_ = (agents_ + 63) / 64;
@@ -40,22 +40,22 @@ void TrackAssociation<N>::associate(std::span<TrackList* const> lists, const Com
   }
   cluster(diagnostics);
   chooseKeys(graph, mint, diagnostics);
-  planAdoptions(lists, graph);
+  planAdoptions(graph);
   writeOut(lists, clusters, diagnostics);
 }
 
 template <int N>
-void TrackAssociation<N>::gatherNodes(std::span<TrackList* const> lists) {
+void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists) {
   node_start_.assign(static_cast<std::size_t>(agents_) + 1, 0);
   for (int a = 0; a < agents_; ++a) {
-    const int count = lists[a] ? static_cast<int>(lists[a]->size()) : 0;
+    const int count = static_cast<int>(lists[a].size());
     node_start_[a + 1] = node_start_[a] + count;
   }
   nodes_.resize(static_cast<std::size_t>(node_start_[agents_]));
   by_key_.resize(nodes_.size());
   for (int a = 0; a < agents_; ++a) {
     for (int n = node_start_[a]; n < node_start_[a + 1]; ++n) {
-      const tracking::Track<N>& track = (*lists[a])[n - node_start_[a]];
+      const tracking::Track<N>& track = lists[a][n - node_start_[a]];
       Node& node = nodes_[n];
       node.key = track.key;
       node.label = track.label;
@@ -284,7 +284,7 @@ void TrackAssociation<N>::chooseKeys(const CommGraph& graph, KeyMint& mint,
 }
 
 template <int N>
-void TrackAssociation<N>::planAdoptions(std::span<TrackList* const> lists, const CommGraph& graph) {
+void TrackAssociation<N>::planAdoptions(const CommGraph& graph) {
   adoptions_.clear();
   adopted_for_.assign(static_cast<std::size_t>(agents_), -1);
   const int count = static_cast<int>(nodes_.size());
@@ -294,7 +294,7 @@ void TrackAssociation<N>::planAdoptions(std::span<TrackList* const> lists, const
     const std::size_t words = static_cast<std::size_t>(find(n)) * mask_words_;
     for (const int j : graph.neighbours(nodes_[n].agent)) {
       const bool member = (mask_[words + j / 64] >> (j % 64)) & 1U;
-      if (member || lists[j] == nullptr || adopted_for_[j] == c) continue;
+      if (member || adopted_for_[j] == c) continue;
       adopted_for_[j] = c;
       adoptions_.push_back({c, j, n});
     }
@@ -302,7 +302,7 @@ void TrackAssociation<N>::planAdoptions(std::span<TrackList* const> lists, const
 }
 
 template <int N>
-void TrackAssociation<N>::writeOut(std::span<TrackList* const> lists, Clusters& clusters,
+void TrackAssociation<N>::writeOut(std::span<TrackList> lists, Clusters& clusters,
                                    FusionDiagnostics& diagnostics) {
   const int cluster_count = static_cast<int>(keys_.size());
   clusters.keys.assign(keys_.begin(), keys_.end());
@@ -316,17 +316,17 @@ void TrackAssociation<N>::writeOut(std::span<TrackList* const> lists, Clusters& 
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     const Node& node = nodes_[n];
     const int c = cluster_of_[n];
-    (*lists[node.agent])[node.track].key = keys_[c];
+    lists[node.agent][node.track].key = keys_[c];
     clusters.members[order_[c]++] = {node.agent, node.track, false};
   }
   for (const Adoption& adoption : adoptions_) {
     const Node& source = nodes_[adoption.source];
-    tracking::Track<N> copy = (*lists[source.agent])[source.track];
+    tracking::Track<N> copy = lists[source.agent][source.track];
     copy.key = keys_[adoption.cluster];
     copy.status = tracking::TrackStatus::confirmed;
     copy.expected_misses = 0;
     copy.detected = false;
-    TrackList& list = *lists[adoption.agent];
+    TrackList& list = lists[adoption.agent];
     list.push_back(copy);
     clusters.members[order_[adoption.cluster]++] = {adoption.agent,
                                                     static_cast<int>(list.size()) - 1, true};

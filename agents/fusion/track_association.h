@@ -69,10 +69,10 @@ class TrackAssociation {
  public:
   using TrackList = std::vector<tracking::Track<N>>;
 
-  /// lists[i]: agent i's tracks, or null when agent i keeps none of this kind (it then neither
-  /// offers nor adopts any). Rewrites keys, appends adopted copies, and fills `clusters`.
-  void associate(std::span<TrackList* const> lists, const CommGraph& graph, double gate,
-                 KeyMint& mint, Clusters& clusters, FusionDiagnostics& diagnostics);
+  /// lists[i]: agent i's tracks (the fusion's own copy, being fused). Rewrites keys, appends
+  /// adopted copies, and fills `clusters`.
+  void associate(std::span<TrackList> lists, const CommGraph& graph, double gate, KeyMint& mint,
+                 Clusters& clusters, FusionDiagnostics& diagnostics);
 
  private:
   struct Node {
@@ -100,14 +100,13 @@ class TrackAssociation {
     int source = 0;  // node copied
   };
 
-  void gatherNodes(std::span<TrackList* const> lists);
+  void gatherNodes(std::span<const TrackList> lists);
   void linkNeighbours(int i, int j, double gate);
   void assignComponents(double gate);
   void cluster(FusionDiagnostics& diagnostics);
   void chooseKeys(const CommGraph& graph, KeyMint& mint, FusionDiagnostics& diagnostics);
-  void planAdoptions(std::span<TrackList* const> lists, const CommGraph& graph);
-  void writeOut(std::span<TrackList* const> lists, Clusters& clusters,
-                FusionDiagnostics& diagnostics);
+  void planAdoptions(const CommGraph& graph);
+  void writeOut(std::span<TrackList> lists, Clusters& clusters, FusionDiagnostics& diagnostics);
   int find(int node);
   bool unite(int a, int b);
 

@@ -136,6 +136,11 @@ void Tracker::confirmOrDrop(std::vector<Track<N>>& tracks) {
   diagnostics_.deletions += static_cast<long>(dropped);
 }
 
+void Tracker::adopt(std::vector<TargetTrack>&& targets, std::vector<TreeTrack>&& trees) {
+  targets_.swap(targets);
+  trees_.swap(trees);
+}
+
 void Tracker::deleteStale() {
   deleteStale(targets_);
   deleteStale(trees_);

@@ -1,7 +1,8 @@
 #pragma once
 // One agent's local tracker over all labels (algorithms.md §4): NCV targets and static trees,
 // a JPDAF per label, track birth, confirmation and deletion. The agent calls, every step:
-//   predict(dt); update(scan, footprint, map); … fusion edits posteriors and keys …; deleteStale().
+//   predict(dt); update(scan, footprint, map); … the team fuses the lists …; adopt(fused lists);
+//   deleteStale().
 #include <cstdint>
 #include <vector>
 
@@ -46,10 +47,13 @@ class Tracker {
   /// Called by the agent after fusion, so it judges the fused posteriors.
   void deleteStale();
 
-  /// The tracks; fusion edits posteriors and keys in place.
-  std::vector<TargetTrack>& targets() { return targets_; }
+  /// Replaces the tracks by the team's fused lists (TeamFusion::fuse): the same tracks with
+  /// fused keys and posteriors, plus the ones adopted from neighbours. The lists are swapped
+  /// in, not copied: `targets` and `trees` are left holding the replaced tracks (their storage
+  /// for the next fusion to refill; their contents are not to be read).
+  void adopt(std::vector<TargetTrack>&& targets, std::vector<TreeTrack>&& trees);
+
   const std::vector<TargetTrack>& targets() const { return targets_; }
-  std::vector<TreeTrack>& trees() { return trees_; }
   const std::vector<TreeTrack>& trees() const { return trees_; }
 
   const TrackingDiagnostics& diagnostics() const { return diagnostics_; }

@@ -17,10 +17,10 @@ std::vector<std::vector<Interval>> occludedIntervals(const ScenarioSpec& spec) {
   scenarios::Simulation sim(spec);
   std::vector<TargetSet> occluded;
   while (!sim.done()) {
-    sim.tick();
+    const scenarios::StepRecord& step = sim.tick();
     TargetSet s = 0;
-    for (int t = 0; t < static_cast<int>(spec.targets.size()); ++t) {
-      if (sim.world().insideOccluder(sim.truth().targets[t].position)) s |= bit(t);
+    for (int t = 0; t < static_cast<int>(step.targets.size()); ++t) {
+      if (step.targets[t].occluded) s |= bit(t);
     }
     occluded.push_back(s);
   }
@@ -35,11 +35,10 @@ std::vector<TargetSet> initialOwnership(const ScenarioSpec& spec) {
   scenarios::Simulation sim(spec);
   SetHistory visible;
   for (int k = 0; k < spec.analysis.m; ++k) {
-    sim.tick();
     std::vector<TargetSet> row;
-    for (const sensing::Scan& scan : sim.scans()) {
+    for (const scenarios::UavRecord& uav : sim.tick().uavs) {
       TargetSet s = 0;
-      for (const int t : scan.visible) s |= bit(t);
+      for (const int t : uav.scan.visible) s |= bit(t);
       row.push_back(s);
     }
     visible.push_back(row);

@@ -42,24 +42,39 @@ std::vector<Case> cases() {
   return out;
 }
 
+// Rendered coverage as an observer of a run: one CSV row per step, from the record's footprints
+// and true target positions.
+class CoverageRows final : public scenarios::StepObserver {
+ public:
+  CoverageRows(const Aabb& aoi, ImageSize size) : counter_(aoi, size) {}
+  void onStep(const scenarios::StepRecord& record) override {
+    footprints_.clear();
+    for (const scenarios::UavRecord& uav : record.uavs) footprints_.push_back(uav.footprint);
+    targets_.clear();
+    for (const scenarios::TargetRecord& target : record.targets)
+      targets_.push_back(target.position);
+    csv += coverageCsvRow(record.step, record.time, counter_.count(footprints_, targets_)) + "\n";
+  }
+  std::string csv;
+
+ private:
+  CoverageCounter counter_;
+  std::vector<sensing::Footprint> footprints_;
+  std::vector<Vec2> targets_;
+};
+
 // The rendered coverage of every step of the run, as `canopy coverage` prints it.
 std::string coverageCsv(const Case& c) {
   scenarios::LoadOptions load;
   load.overrides = c.overrides;
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(c.scenario, load);
-  std::vector<sensing::SensorDef> sensors;
-  for (const scenarios::UavSpec& uav : spec.uavs) sensors.push_back(uav.sensor);
   std::vector<std::string> names;
   for (const scenarios::TargetSpec& target : spec.targets) names.push_back(target.name);
-  CoverageCounter counter(spec.aoi, c.size);
-  std::string csv = coverageCsvHeader(names) + "\n";
+  CoverageRows rows(spec.aoi, c.size);
   scenarios::Simulation sim(spec);
-  while (!sim.done()) {
-    sim.tick();
-    csv += coverageCsvRow(sim.truth().step, sim.truth().time, counter.count(sim.truth(), sensors)) +
-           "\n";
-  }
-  return csv;
+  scenarios::StepObserver* const observers[] = {&rows};
+  scenarios::runToEnd(sim, observers);
+  return coverageCsvHeader(names) + "\n" + rows.csv;
 }
 
 TEST(CoverageGolden, BuiltInScenariosMatchTheirGoldenFiles) {
@@ -116,8 +131,10 @@ TEST(RunFrames, ARunWithFramesUsesOneGlContextAndARunWithoutNone) {
   struct Frames final : scenarios::StepObserver {
     FrameWriter& writer;
     explicit Frames(FrameWriter& w) : writer(w) {}
-    void onStep(const scenarios::Simulation& sim) override {
-      writer.onStep(sim.truth(), sim.beliefs());
+    void onStep(const scenarios::StepRecord& record) override {
+      world::WorldSnapshot truth;
+      scenarios::truthSnapshot(record, truth);
+      writer.onStep(truth, record.beliefs);
     }
   } frames_observer(writer);
   framed.observers = {&frames_observer};

@@ -7,6 +7,7 @@
 
 #include "core/text_file.h"
 #include "scenarios/loader.h"
+#include "scenarios/simulation.h"
 
 namespace canopy::scenarios {
 namespace {
@@ -48,12 +49,12 @@ TEST(Run, ScriptedUavsFollowTheirSweeps) {
   const ScenarioSpec spec = loadScenario("demo");
   Simulation sim(spec);
   while (!sim.done()) {
-    sim.tick();
-    const double t = sim.truth().time;
+    const StepRecord& step = sim.tick();
+    const double t = step.time;
     for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
       // The sweeps never ask for more than v_max, so the UAVs are on their paths at every step.
       const Vec2 expected = spec.uavs[i].path->positionAt(t);
-      EXPECT_NEAR((sim.truth().uavs[i].position - expected).norm(), 0.0, 1e-3)
+      EXPECT_NEAR((step.uavs[i].position - expected).norm(), 0.0, 1e-3)
           << "uav " << i << " t " << t;
     }
   }

@@ -45,19 +45,18 @@ TEST(Simulation, KeepsItsCopyWhenTheCallersSpecChanges) {
 
 TEST(Simulation, ExternalCommandMovesTheUavAlongItForOneStep) {
   Simulation sim(shortRun("demo"));
-  sim.tick();
-  const Vec2 p0 = sim.truth().uavs[0].position;
+  const Vec2 p0 = sim.tick().uavs[0].position;
   const Vec2 v(1.25, -2.5);  // |v| = 2.80 m/s < v_max = 5 m/s
   sim.commandNext(0, v);
   EXPECT_EQ(sim.world().commandedVelocity(0), v);
-  sim.tick();
+  const StepRecord& step = sim.tick();
   const double dt = sim.spec().dt;
-  EXPECT_EQ(sim.truth().uavs[0].velocity, v);  // the velocity flown over the step
-  EXPECT_NEAR(sim.truth().uavs[0].position.x(), p0.x() + v.x() * dt, kFloatMetres);
-  EXPECT_NEAR(sim.truth().uavs[0].position.y(), p0.y() + v.y() * dt, kFloatMetres);
+  EXPECT_EQ(step.uavs[0].velocity, v);  // the velocity flown over the step
+  EXPECT_NEAR(step.uavs[0].position.x(), p0.x() + v.x() * dt, kFloatMetres);
+  EXPECT_NEAR(step.uavs[0].position.y(), p0.y() + v.y() * dt, kFloatMetres);
   // The next step is the script's again: aim at the path's position one step ahead.
-  const Vec2 p1 = sim.truth().uavs[0].position;
-  const Vec2 aim = (sim.spec().uavs[0].path->positionAt(sim.truth().time + dt) - p1) / dt;
+  const Vec2 p1 = step.uavs[0].position;
+  const Vec2 aim = (sim.spec().uavs[0].path->positionAt(step.time + dt) - p1) / dt;
   const double v_max = sim.spec().uavs[0].body.v_max;
   const Vec2 scripted = aim.norm() > v_max ? Vec2(aim * (v_max / aim.norm())) : aim;
   EXPECT_EQ(sim.world().commandedVelocity(0), scripted);
@@ -65,16 +64,15 @@ TEST(Simulation, ExternalCommandMovesTheUavAlongItForOneStep) {
 
 TEST(Simulation, ExternalCommandIsClampedToVmax) {
   Simulation sim(shortRun("demo"));
-  sim.tick();
-  const Vec2 p0 = sim.truth().uavs[0].position;
+  const Vec2 p0 = sim.tick().uavs[0].position;
   const double v_max = sim.spec().uavs[0].body.v_max;  // 5 m/s
   const Vec2 direction = Vec2(3.0, 4.0) / 5.0;
   sim.commandNext(0, 10.0 * v_max * direction);
-  sim.tick();
+  const StepRecord& step = sim.tick();
   const double dt = sim.spec().dt;
-  EXPECT_NEAR(sim.truth().uavs[0].velocity.norm(), v_max, 1e-12);
-  EXPECT_NEAR(sim.truth().uavs[0].position.x(), p0.x() + v_max * direction.x() * dt, kFloatMetres);
-  EXPECT_NEAR(sim.truth().uavs[0].position.y(), p0.y() + v_max * direction.y() * dt, kFloatMetres);
+  EXPECT_NEAR(step.uavs[0].velocity.norm(), v_max, 1e-12);
+  EXPECT_NEAR(step.uavs[0].position.x(), p0.x() + v_max * direction.x() * dt, kFloatMetres);
+  EXPECT_NEAR(step.uavs[0].position.y(), p0.y() + v_max * direction.y() * dt, kFloatMetres);
 }
 
 TEST(Simulation, ExternalCommandLeavesOtherUavsAndPlanningEpochsAlone) {
@@ -88,21 +86,21 @@ TEST(Simulation, ExternalCommandLeavesOtherUavsAndPlanningEpochsAlone) {
   int epochs = 0;
   while (!steered.done()) {
     steered.commandNext(0, v);
-    steered.tick();
-    free.tick();
-    EXPECT_EQ(steered.truth().uavs[0].velocity, v);
-    const bool epoch = steered.truth().step % steered.stepsPerPlan() == 0;
-    EXPECT_EQ(steered.plan().has_value(), epoch) << "step " << steered.truth().step;
-    EXPECT_EQ(free.plan().has_value(), epoch);
+    const StepRecord& step = steered.tick();
+    const StepRecord& free_step = free.tick();
+    EXPECT_EQ(step.uavs[0].velocity, v);
+    const bool epoch = step.step % steered.stepsPerPlan() == 0;
+    EXPECT_EQ(step.plan.has_value(), epoch) << "step " << step.step;
+    EXPECT_EQ(free_step.plan.has_value(), epoch);
     epochs += epoch;
-    if (steered.plan()) {
+    if (step.plan) {
       // The planner still commands UAV 0 (its plan is recorded), the hook overrides it after.
-      EXPECT_EQ(steered.world().commandedVelocity(1), steered.plan()->plans[1].command());
+      EXPECT_EQ(steered.world().commandedVelocity(1), step.plan->plans[1].command());
     }
   }
   EXPECT_GT(epochs, 2);
   // Without the hook, UAV 0 flies its plans, not v.
-  EXPECT_NE(free.truth().uavs[0].velocity, v);
+  EXPECT_NE(free.lastStep().uavs[0].velocity, v);
 }
 
 TEST(Simulation, ReplanPeriodDefaultsToThePlanPeriodAndSetsTheEpochs) {
@@ -113,9 +111,9 @@ TEST(Simulation, ReplanPeriodDefaultsToThePlanPeriodAndSetsTheEpochs) {
   EXPECT_EQ(sim.stepsPerPlan(), 1);
   int epoch = 0;
   while (!sim.done()) {
-    sim.tick();
-    ASSERT_TRUE(sim.plan().has_value()) << "step " << sim.truth().step;
-    EXPECT_EQ(sim.plan()->epoch, epoch++);  // one epoch per 0.2 s step
+    const StepRecord& step = sim.tick();
+    ASSERT_TRUE(step.plan.has_value()) << "step " << step.step;
+    EXPECT_EQ(step.plan->epoch, epoch++);  // one epoch per 0.2 s step
   }
   EXPECT_EQ(epoch, 6);
 }

@@ -36,13 +36,12 @@ TEST(Team, SweptTreesEnterEveryMapThroughFusionWithAccurateDiscs) {
   Simulation sim(spec);
   long hoverer_observations = 0;
   while (!sim.done()) {
-    sim.tick();
-    hoverer_observations += static_cast<long>(sim.scans()[1].observations.size());
+    hoverer_observations += static_cast<long>(sim.tick().uavs[1].scan.observations.size());
   }
   EXPECT_EQ(hoverer_observations, 0);  // every disc in the hoverer's map came through fusion
   ASSERT_EQ(spec.trees.size(), 7u);
   for (int agent = 0; agent < 2; ++agent) {
-    const auto& map = sim.beliefs()[agent].trees;
+    const auto& map = sim.lastStep().beliefs[agent].trees;
     ASSERT_EQ(map.size(), 6u) << "agent " << agent;  // the row, not the tree at y = 30
     for (int k = 0; k < 6; ++k) {
       const world::TreeDef& truth = spec.trees[k];
@@ -74,26 +73,26 @@ TEST(Team, TrackSurvivesAThreeSecondOcclusionAndIsReassociated) {
   int hidden_steps = 0;
   std::set<agents::TrackKey> target_keys;  // every target track the tracker ever held
   while (!sim.done()) {
-    sim.tick();
+    const StepRecord& step = sim.tick();
     for (const auto& track : sim.team().agents()[0].tracker().targets())
       target_keys.insert(track.key);
-    const double t = sim.truth().time;
-    const auto& tracks = sim.beliefs()[0].tracks;
+    const double t = step.time;
+    const auto& tracks = step.beliefs[0].tracks;
     if (t >= 2.0 && t < 4.5) {  // confirmed before the crown (hidden from 4.5 s to 7.5 s)
       ASSERT_EQ(tracks.size(), 1u) << t;
       key_before = tracks[0].key;
     }
-    if (sim.scans()[0].visible.empty() && t > 4.5) ++hidden_steps;
+    if (step.uavs[0].scan.visible.empty() && t > 4.5) ++hidden_steps;
     if (t > 4.5 && t < 7.5) {
       ASSERT_EQ(tracks.size(), 1u) << "lost under the crown at " << t;
     }
   }
   EXPECT_GE(hidden_steps, 14);  // (7.5 − 4.5) / 0.2 − 1 steps strictly inside
-  const auto& tracks = sim.beliefs()[0].tracks;
+  const auto& tracks = sim.lastStep().beliefs[0].tracks;
   ASSERT_EQ(tracks.size(), 1u);
   EXPECT_EQ(tracks[0].key, key_before);  // re-associated, not re-born
   EXPECT_EQ(target_keys.size(), 1u);     // not even a tentative second track
-  EXPECT_LT((tracks[0].belief.x.head<2>() - sim.truth().targets[0].position).norm(), 1.0);
+  EXPECT_LT((tracks[0].belief.x.head<2>() - sim.lastStep().targets[0].position).norm(), 1.0);
 }
 
 // Two UAVs with wide footprints each watch a pair of walking targets the whole time; no pre-seeds.
@@ -126,10 +125,10 @@ TEST(Team, FusedTracksConvergeOnTheTruth) {
   // Complete graph, CI with Metropolis weights 1/N: one round already gives every agent the same
   // posterior, so the agents' beliefs agree.
   std::map<agents::TrackKey, Vec4> first;
-  for (const auto& track : sim.beliefs()[0].tracks) first[track.key] = track.belief.x;
+  for (const auto& track : sim.lastStep().beliefs[0].tracks) first[track.key] = track.belief.x;
   ASSERT_EQ(first.size(), 4u);
-  ASSERT_EQ(sim.beliefs()[1].tracks.size(), 4u);
-  for (const auto& track : sim.beliefs()[1].tracks) {
+  ASSERT_EQ(sim.lastStep().beliefs[1].tracks.size(), 4u);
+  for (const auto& track : sim.lastStep().beliefs[1].tracks) {
     ASSERT_TRUE(first.count(track.key));
     EXPECT_LT((first[track.key] - track.belief.x).norm(), 1e-9);
   }
@@ -152,8 +151,8 @@ TEST_P(PlannedChase, MovesTheUavToCoverTheTarget) {
   Simulation sim(spec);
   int covered_last_5s = 0;
   while (!sim.done()) {
-    sim.tick();
-    if (sim.truth().time > 10.0 && !sim.scans()[0].visible.empty()) ++covered_last_5s;
+    const StepRecord& step = sim.tick();
+    if (step.time > 10.0 && !step.uavs[0].scan.visible.empty()) ++covered_last_5s;
   }
   EXPECT_EQ(covered_last_5s, 25);  // 30 m at ≤ 5 m/s: on the target within 10 s, then kept
 }
@@ -168,10 +167,10 @@ TEST(Team, PlanningIsDeterministicForASeed) {
   const ScenarioSpec b = loadScenario("trajectory_handover", options);
   Simulation sa(a), sb(b);
   while (!sa.done()) {
-    sa.tick();
-    sb.tick();
+    const StepRecord& ra = sa.tick();
+    const StepRecord& rb = sb.tick();
     for (std::size_t i = 0; i < a.uavs.size(); ++i) {
-      ASSERT_EQ(sa.truth().uavs[i].position, sb.truth().uavs[i].position);
+      ASSERT_EQ(ra.uavs[i].position, rb.uavs[i].position);
     }
   }
 }

@@ -1,7 +1,10 @@
 #pragma once
-// Small builders shared by the fusion tests: tracks, random SPD matrices, and a team whose
-// lists live in the test.
+// Small builders shared by the fusion tests: tracks, random SPD matrices, a team whose lists live
+// in the test, and a toy local tracker for closed loops.
 #include <Eigen/Core>
+#include <Eigen/LU>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 #include "agents/fusion/team_fusion.h"
@@ -47,6 +50,88 @@ Eigen::Matrix<double, N, 1> randomVector(RandomStream& rng, double half_width) {
   return v;
 }
 
+/// The toy tracker's step (s), detection range (m, a disc around the UAV) and measurement
+/// variance (m², per axis).
+constexpr double kToyDt = 0.2;
+constexpr double kToyFootprint = 35.0;
+constexpr double kToyMeasurementVar = 0.5;
+
+/// Targets: NCV prediction over kToyDt (paper eq. 4), σ_a = 1 m/s². Trees: static.
+template <int N>
+Gaussian<N> toyPredict(const Gaussian<N>& g) {
+  if constexpr (N == 3) {
+    return g;
+  } else {
+    Mat4 F = Mat4::Identity();
+    F(0, 2) = F(1, 3) = kToyDt;
+    Mat4 Q = Mat4::Zero();
+    const double q4 = std::pow(kToyDt, 4) / 4, q3 = std::pow(kToyDt, 3) / 2, q2 = kToyDt * kToyDt;
+    for (int a = 0; a < 2; ++a) {
+      Q(a, a) = q4;
+      Q(a, a + 2) = Q(a + 2, a) = q3;
+      Q(a + 2, a + 2) = q2;
+    }
+    return {F * g.x, F * g.P * F.transpose() + Q};
+  }
+}
+
+/// Kalman update on the position (the first two states), covariance form.
+template <int N>
+Gaussian<N> toyUpdate(const Gaussian<N>& g, const Vec2& z) {
+  const Mat2 S = g.P.template topLeftCorner<2, 2>() + kToyMeasurementVar * Mat2::Identity();
+  const Eigen::Matrix<double, N, 2> K = g.P.template leftCols<2>() * S.inverse();
+  Gaussian<N> out{g.x + K * (z - g.x.template head<2>()), g.P - K * S * K.transpose()};
+  out.P = 0.5 * (out.P + out.P.transpose());
+  return out;
+}
+
+/// One agent's toy tracking step: predict all, update the nearest gated track per detection of
+/// a truth within kToyFootprint of the UAV, birth a tentative track otherwise (trees with a
+/// 2 m radius), confirm on the second hit.
+template <int N>
+void trackLocally(std::vector<tracking::Track<N>>& tracks, const Vec2& uav,
+                  const std::vector<Vec2>& truths, RandomStream& rng, int agent, int& serial) {
+  for (auto& track : tracks) {
+    track.prior = toyPredict(track.posterior);
+    track.posterior = track.prior;
+    track.detected = false;
+  }
+  for (const Vec2& truth : truths) {
+    if ((truth - uav).norm() > kToyFootprint) continue;
+    const Vec2 z = truth + std::sqrt(kToyMeasurementVar) * Vec2(rng.normal(), rng.normal());
+    tracking::Track<N>* best = nullptr;
+    double best_d2 = 9.21;
+    for (auto& track : tracks) {
+      const Mat2 S =
+          track.prior.P.template topLeftCorner<2, 2>() + kToyMeasurementVar * Mat2::Identity();
+      const Vec2 nu = z - track.prior.x.template head<2>();
+      const double d2 = nu.dot(S.inverse() * nu);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = &track;
+      }
+    }
+    if (best) {
+      best->posterior = toyUpdate(best->posterior, z);
+      best->detected = true;
+      if (++best->hits >= 2) best->status = tracking::TrackStatus::confirmed;
+    } else {
+      Eigen::Matrix<double, N, N> P = Eigen::Matrix<double, N, N>::Identity();
+      P.template topLeftCorner<2, 2>() *= kToyMeasurementVar;
+      Eigen::Matrix<double, N, 1> x = Eigen::Matrix<double, N, 1>::Zero();
+      x.template head<2>() = z;
+      sensing::LabelId label = 1;
+      if constexpr (N == 3) {
+        x(2) = 2.0;
+        label = sensing::kTreeLabel;
+      }
+      tracks.push_back(makeTrack<N>({agent, serial++}, x, P, label, /*confirmed=*/false));
+      tracks.back().hits = 1;
+      tracks.back().detected = true;
+    }
+  }
+}
+
 /// The lists of a team of UAVs, owned by the test.
 struct Team {
   explicit Team(int agents)
@@ -54,12 +139,16 @@ struct Team {
         trees(static_cast<std::size_t>(agents)),
         positions(static_cast<std::size_t>(agents), Vec2::Zero()) {}
 
+  /// One fusion step; the test's lists then become the fused ones.
   void fuse(TeamFusion& fusion) {
-    std::vector<AgentTracks> view;
+    std::vector<AgentTracks> inputs;
     for (std::size_t i = 0; i < targets.size(); ++i) {
-      view.push_back({&targets[i], &trees[i], positions[i]});
+      inputs.push_back({targets[i], trees[i], positions[i]});
     }
-    fusion.fuse(view);
+    FusedTracks fused;
+    fusion.fuse(inputs, fused);
+    targets = std::move(fused.targets);
+    trees = std::move(fused.trees);
   }
 
   std::vector<std::vector<tracking::TargetTrack>> targets;

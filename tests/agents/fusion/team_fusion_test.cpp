@@ -1,5 +1,5 @@
-// A small closed loop: UAVs on a line with limited range, each with a toy local tracker (predict,
-// nearest-track update, birth), fused every step with losses. Checks the invariants TeamFusion
+// A small closed loop: UAVs on a line with limited range, each with a toy local tracker
+// (fusion_test_support.h), fused every step with losses. Checks the invariants TeamFusion
 // promises whatever the tracks do, then that a fully connected team ends in agreement.
 #include "agents/fusion/team_fusion.h"
 
@@ -17,70 +17,7 @@ namespace canopy::agents::fusion {
 namespace {
 
 using test::Team;
-
-constexpr double kDt = 0.2;              // s
-constexpr double kFootprint = 35.0;      // m, disc radius around each UAV
-constexpr double kMeasurementVar = 0.5;  // m²
-
-/// NCV prediction (paper eq. 4), σ_a = 1 m/s².
-TargetGaussian predict(const TargetGaussian& g) {
-  Mat4 F = Mat4::Identity();
-  F(0, 2) = F(1, 3) = kDt;
-  Mat4 Q = Mat4::Zero();
-  const double q4 = std::pow(kDt, 4) / 4, q3 = std::pow(kDt, 3) / 2, q2 = kDt * kDt;
-  for (int a = 0; a < 2; ++a) {
-    Q(a, a) = q4;
-    Q(a, a + 2) = Q(a + 2, a) = q3;
-    Q(a + 2, a + 2) = q2;
-  }
-  return {F * g.x, F * g.P * F.transpose() + Q};
-}
-
-TargetGaussian update(const TargetGaussian& g, const Vec2& z) {
-  const Mat2 S = g.P.topLeftCorner<2, 2>() + kMeasurementVar * Mat2::Identity();
-  const Mat42 K = g.P.leftCols<2>() * S.inverse();
-  TargetGaussian out{g.x + K * (z - g.x.head<2>()), g.P - K * S * K.transpose()};
-  out.P = 0.5 * (out.P + out.P.transpose());
-  return out;
-}
-
-/// One agent's toy tracking step: predict all, update the nearest gated track per detection,
-/// birth a tentative track otherwise, confirm on the second hit.
-void trackLocally(std::vector<tracking::TargetTrack>& tracks, const Vec2& uav,
-                  const std::vector<Vec2>& targets, RandomStream& rng, int agent, int& serial) {
-  for (auto& track : tracks) {
-    track.prior = predict(track.posterior);
-    track.posterior = track.prior;
-    track.detected = false;
-  }
-  for (const Vec2& target : targets) {
-    if ((target - uav).norm() > kFootprint) continue;
-    const Vec2 z = target + std::sqrt(kMeasurementVar) * Vec2(rng.normal(), rng.normal());
-    tracking::TargetTrack* best = nullptr;
-    double best_d2 = 9.21;
-    for (auto& track : tracks) {
-      const Mat2 S = track.prior.P.topLeftCorner<2, 2>() + kMeasurementVar * Mat2::Identity();
-      const Vec2 nu = z - track.prior.x.head<2>();
-      const double d2 = nu.dot(S.inverse() * nu);
-      if (d2 < best_d2) {
-        best_d2 = d2;
-        best = &track;
-      }
-    }
-    if (best) {
-      best->posterior = update(best->posterior, z);
-      best->detected = true;
-      if (++best->hits >= 2) best->status = tracking::TrackStatus::confirmed;
-    } else {
-      Mat4 P = Mat4::Identity();
-      P.topLeftCorner<2, 2>() *= kMeasurementVar;
-      tracks.push_back(test::makeTrack<4>({agent, serial++}, Vec4(z.x(), z.y(), 0, 0), P, 1,
-                                          /*confirmed=*/false));
-      tracks.back().hits = 1;
-      tracks.back().detected = true;
-    }
-  }
-}
+using test::trackLocally;
 
 void expectInvariants(const Team& team, int step) {
   std::map<std::pair<int, int>, sensing::LabelId> label_of;
@@ -116,7 +53,7 @@ TEST(TeamFusion, ClosedLoopKeepsItsInvariantsAndAConnectedTeamAgrees) {
   config.comm_drop = 0.2;
   TeamFusion fusion(config, n, 3);
   for (int step = 0; step < 100; ++step) {
-    for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += kDt * velocities[t];
+    for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += test::kToyDt * velocities[t];
     for (int i = 0; i < n; ++i) {
       trackLocally(team.targets[i], team.positions[i], targets, sensing[i], i, serials[i]);
     }
