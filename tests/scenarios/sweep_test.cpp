@@ -149,8 +149,8 @@ TEST(Sweep, TrialSeedsDependOnTheIndexOnly) {
 TEST(Sweep, ResultsDoNotDependOnTheNumberOfThreads) {
   const SweepSpec sweep = loadSweepText(kSweep, "small.json");
   const fs::path one = freshDir("jobs1"), two = freshDir("jobs2");
-  EXPECT_EQ(runSweep(sweep, {one, 1, {}}), 12);
-  EXPECT_EQ(runSweep(sweep, {two, 2, {}}), 12);
+  EXPECT_EQ(runSweep(sweep, {one, 1, {}, {}}), 12);
+  EXPECT_EQ(runSweep(sweep, {two, 2, {}, {}}), 12);
   const auto a = trialFiles(one), b = trialFiles(two);
   EXPECT_EQ(a.size(), 12u);
   EXPECT_EQ(a, b);
@@ -159,8 +159,8 @@ TEST(Sweep, ResultsDoNotDependOnTheNumberOfThreads) {
 TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
   const SweepSpec sweep = loadSweepText(kSweep, "small.json");
   const fs::path whole = freshDir("whole"), resumed = freshDir("resumed");
-  runSweep(sweep, {whole, 2, {}});
-  runSweep(sweep, {resumed, 2, {}});
+  runSweep(sweep, {whole, 2, {}, {}});
+  runSweep(sweep, {resumed, 2, {}, {}});
   // Interrupt by hand: two finished trials vanish and a half-written temp file is left behind.
   const auto files = trialFiles(resumed);
   auto it = files.begin();
@@ -169,23 +169,23 @@ TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
   fs::remove(resumed / (++it)->first);
   int last_resumed = -1;
   EXPECT_EQ(
-      runSweep(sweep, {resumed, 2, [&](const SweepProgress& p) { last_resumed = p.resumed; }}), 2);
+      runSweep(sweep, {resumed, 2, [&](const SweepProgress& p) { last_resumed = p.resumed; }, {}}), 2);
   EXPECT_EQ(last_resumed, 10);
   EXPECT_EQ(trialFiles(resumed), trialFiles(whole));
-  EXPECT_EQ(runSweep(sweep, {resumed, 2, {}}), 0);  // nothing left to do
+  EXPECT_EQ(runSweep(sweep, {resumed, 2, {}, {}}), 0);  // nothing left to do
 }
 
 TEST(Sweep, RefusesADirectoryHoldingAnotherSweep) {
   const fs::path dir = freshDir("other");
-  runSweep(loadSweepText(kSweep, "small.json"), {dir, 1, {}});
+  runSweep(loadSweepText(kSweep, "small.json"), {dir, 1, {}, {}});
   std::string changed = kSweep;
   changed.replace(changed.find("\"trials\": 3"), 11, "\"trials\": 4");
-  EXPECT_THROW(runSweep(loadSweepText(changed, "small.json"), {dir, 1, {}}), ScenarioError);
+  EXPECT_THROW(runSweep(loadSweepText(changed, "small.json"), {dir, 1, {}, {}}), ScenarioError);
 }
 
 TEST(Sweep, LoadsBackEveryTrialGroupedByConfiguration) {
   const fs::path dir = freshDir("load");
-  runSweep(loadSweepText(kSweep, "small.json"), {dir, 2, {}});
+  runSweep(loadSweepText(kSweep, "small.json"), {dir, 2, {}, {}});
   const SweepResults results = loadSweepResults(dir);
   ASSERT_EQ(results.trials.size(), 4u);
   for (const auto& trials : results.trials) {
@@ -205,14 +205,14 @@ TEST(Sweep, RefusesToResumeWhenTheScenarioBehindItChanged) {
   const std::string text = R"({"scenario": ")" + scenario.string() +
                            R"(", "trials": 1, "set": {"clock.duration": 1.0}})";
   const fs::path out = dir / "out";
-  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 1);
-  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}}), 0);  // resumes: nothing to do
+  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}, {}}), 1);
+  EXPECT_EQ(runSweep(loadSweepText(text, "s.json"), {out, 1, {}, {}}), 0);  // resumes: nothing to do
   // The same sweep text, but the scenario file now says something else.
   std::string changed = demo;
   changed.insert(changed.find("\"description\": \"") + 16, "changed: ");
   std::ofstream(scenario) << changed;
   try {
-    runSweep(loadSweepText(text, "s.json"), {out, 1, {}});
+    runSweep(loadSweepText(text, "s.json"), {out, 1, {}, {}});
     FAIL() << "expected a ScenarioError";
   } catch (const ScenarioError& e) {
     EXPECT_NE(std::string(e.what()).find("scenarios.json"), std::string::npos) << e.what();
@@ -229,7 +229,7 @@ TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
   const SweepSpec bad = loadSweepText(
       R"({"scenario": "demo", "axes": [{"path": "planner.horizon", "values": [0]}]})", "s.json");
   try {
-    runSweep(bad, {dir, 1, {}});
+    runSweep(bad, {dir, 1, {}, {}});
     FAIL() << "expected a ScenarioError";
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), "planner.horizon");
