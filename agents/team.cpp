@@ -1,5 +1,7 @@
 #include "agents/team.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace canopy::agents {
@@ -7,7 +9,11 @@ namespace canopy::agents {
 Team::Team(const TeamConfig& config)
     : config_(config),
       fusion_(config.fusion, static_cast<int>(config.uavs.size()), config.seed),
-      planner_(config.planner, config.tracking.sigma_a, config.seed),
+      planner_(config.planner, config.tracking.sigma_a, config.seed,
+               planning::LinkConfig{config.fusion.comm_range, config.fusion.comm_drop,
+                                    config.fusion.comm_latency,
+                                    std::max(1, static_cast<int>(std::lround(
+                                                    config.planner.replan_period / config.dt)))}),
       a_priori_(config.true_trees),
       uav_states_(config.uavs),
       planned_paths_(config.uavs.size()) {

@@ -22,6 +22,7 @@ struct TeamConfig {
       uavs;  // each UAV's limits and camera (positions filled per epoch)
   std::vector<world::TreeDef> true_trees;  // the a-priori map (occlusion_map "a_priori" only)
   std::uint64_t seed = 1;                  // the trial's seed
+  double dt = 0.2;                         // s, the simulation step (message latencies in steps)
 };
 
 class Team {
@@ -55,6 +56,7 @@ class Team {
 
   const std::vector<Agent>& agents() const { return agents_; }
   const fusion::TeamFusion& fusion() const { return fusion_; }
+  const planning::TeamPlanner& planner() const { return planner_; }
 
  private:
   TeamConfig config_;

@@ -19,6 +19,7 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   if (spec.planner.occlusion_map == agents::OcclusionMapMode::a_priori)
     config.true_trees = spec.trees;
   config.seed = spec.seed;
+  config.dt = spec.dt;
   return config;
 }
 
@@ -106,6 +107,7 @@ void Simulation::readTeam() {
                          agents[i].tracker().diagnostics()};
   }
   record_.fusion = team_.fusion().diagnostics();
+  record_.intentions = team_.planner().intentionCounts();
 }
 
 void Simulation::commandNext(int uav, const Vec2& velocity) {

@@ -57,6 +57,7 @@ struct StepRecord {
   std::vector<agents::AgentBelief> beliefs;
   std::vector<AgentCounts> counts;                 // per agent
   agents::fusion::FusionDiagnostics fusion;        // the team's, totals since the start
+  agents::planning::MessageCounts intentions;      // the team's, totals since the start
   std::optional<agents::planning::TeamPlan> plan;  // made at this step, on planning epochs
 };
 

@@ -72,6 +72,7 @@ void SummaryBuilder::onStep(const StepRecord& record) {
   }
   counts_at_end_ = record.counts;
   fusion_at_end_ = record.fusion;
+  intentions_at_end_ = record.intentions;
   ++steps_;
 }
 
@@ -141,6 +142,12 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                                      {"adoptions", d.adoptions},
                                      {"rekeys", d.rekeys},
                                      {"numerical_failures", d.numerical_failures}};
+    // Per kind, on links within comm_range: sent, of which lost, and of those that arrived, late
+    // (read at a later step than sent; consensus exchanges are not delayed).
+    const agents::planning::MessageCounts& p = intentions_at_end_;
+    summary["messages"] = {
+        {"consensus", {{"sent", d.messages}, {"lost", d.lost_messages}, {"late", 0}}},
+        {"intentions", {{"sent", p.sent}, {"lost", p.lost}, {"late", p.late}}}};
   }
   summary["timing"] = {{"wall_seconds", wall_seconds}, {"planning", plan_timing}};
   return summary.dump(2);

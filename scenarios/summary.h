@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "agents/fusion/fusion_diagnostics.h"
+#include "agents/planning/intention_links.h"
 #include "scenarios/ospa.h"
 #include "scenarios/spec.h"
 #include "scenarios/step_observer.h"
@@ -58,6 +59,7 @@ class SummaryBuilder final : public StepObserver {
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
   std::vector<AgentCounts> counts_at_end_;  // the last step's; empty until a step was added
   agents::fusion::FusionDiagnostics fusion_at_end_;
+  agents::planning::MessageCounts intentions_at_end_;
   int steps_ = 0;
 };
 

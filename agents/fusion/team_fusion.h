@@ -65,7 +65,7 @@ struct FusedTracks {
 /// one TeamFusion per simulated team.
 class TeamFusion {
  public:
-  /// config: validated at load time (rounds ≥ 0, comm_range > 0, comm_drop in [0, 1),
+  /// config: validated at load time (rounds ≥ 0, comm_range > 0, comm_drop in [0, 1],
   /// association_gate > 0 and finite). agents: team size N ≥ 0. seed: the trial's seed.
   TeamFusion(const FusionConfig& config, int agents, std::uint64_t seed);
 

@@ -21,8 +21,12 @@ double secondsSince(Clock::time_point start) {
 
 }  // namespace
 
-TeamPlanner::TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed)
-    : config_(config), settings_(CostSettings::from(config, sigma_a)), seed_(seed) {}
+TeamPlanner::TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed,
+                         const LinkConfig& links)
+    : config_(config),
+      settings_(CostSettings::from(config, sigma_a)),
+      seed_(seed),
+      link_config_(links) {}
 
 double TeamPlanner::actionsSince(int earlier_epoch, int epoch) const {
   // Epochs are replan_period apart, actions plan_period long.
@@ -35,7 +39,8 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
   if (static_cast<int>(views.size()) != n) fail("one view per UAV expected");
   if (rng_.empty()) {
     for (int i = 0; i < n; ++i) rng_.emplace_back(seed_, "pso", static_cast<std::uint64_t>(i));
-    published_.assign(n, IntentionMessage{});
+    own_.assign(n, IntentionMessage{});
+    links_ = IntentionLinks(link_config_, n, seed_);
     last_joint_.assign(n, {});
     last_joint_epoch_.assign(n, -1);
     order_ = config_.order;
@@ -50,6 +55,7 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
     }
   }
   if (static_cast<int>(rng_.size()) != n) fail("the team size changed between epochs");
+  links_.beginEpoch(epoch, uavs);
 
   TeamPlan out;
   out.epoch = epoch;
@@ -79,18 +85,20 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
                                  std::span<const AgentView> views) {
   const int n = static_cast<int>(uavs.size());
   const int H = settings_.horizon;
-  // Before anyone plans, every agent is represented by its intention.
   std::vector<Plan> joint(n);
   std::vector<int> joint_epoch(n, -1);
-  for (int i = 0; i < n; ++i) {
-    const IntentionMessage& last = published_[i];
-    joint[i] = last.epoch < 0 ? hoverPlan(H) : shiftedPlan(last.plan, actionsSince(last.epoch, out.epoch), H);
-    joint_epoch[i] = last.epoch;
-  }
   for (const int i : order_) {
+    // Agent i's picture of the team: its own latest plan, and for every other UAV the latest plan
+    // that has reached it (this epoch's, from the agents before it, when the links delivered it
+    // at once), each shifted by the time elapsed.
+    for (int j = 0; j < n; ++j) {
+      const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
+      joint[j] = m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
+      joint_epoch[j] = m.epoch;
+    }
     const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
     const std::span<const Plan> warm =
-        published_[i].epoch < 0 ? std::span<const Plan>() : std::span<const Plan>(&joint[i], 1);
+        own_[i].epoch < 0 ? std::span<const Plan>() : std::span<const Plan>(&joint[i], 1);
     const int self[] = {i};
     const Clock::time_point start = Clock::now();
     PlanSearch search = optimizer_.optimise(problem, config_.pso, self, joint, warm, rng_[i]);
@@ -108,7 +116,8 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
                                      search.iterations,
                                      search.evaluations};
     out.messages.push_back(IntentionMessage{i, i, out.epoch, joint[i]});
-    published_[i] = out.messages.back();
+    own_[i] = out.messages.back();
+    links_.send(out.messages.back());
   }
 }
 
@@ -173,18 +182,28 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
   const bool centralised = config_.algorithm == PlannerAlgorithm::centralized;
   for (int i = 0; i < n; ++i) {
     if (!centralised && i != planner) continue;
-    out.plans[i] = search.plans[i];
     const bool own = i == planner;
+    Plan flown = search.plans[i];
+    if (centralised) {
+      out.messages.push_back(IntentionMessage{planner, i, out.epoch, search.plans[i]});
+      if (!own) {
+        // UAV i flies the latest order that has reached it (this one, when the link delivered
+        // it at once), shifted by the time elapsed; it hovers until one does.
+        links_.send(out.messages.back(), i);
+        const IntentionMessage& order = links_.latest(i, i);
+        flown = order.epoch < 0 ? hoverPlan(H)
+                                : shiftedPlan(order.plan, actionsSince(order.epoch, out.epoch), H);
+      }
+    }
+    out.plans[i] = flown;
     out.reports[i] = AgentPlanReport{i,
-                                     search.plans[i],
+                                     flown,
                                      search.plans,
                                      joint_epoch,
                                      search.cost,
                                      own ? seconds : 0.0,
                                      own ? search.iterations : 0,
                                      own ? search.evaluations : 0};
-    if (centralised)
-      out.messages.push_back(IntentionMessage{planner, i, out.epoch, search.plans[i]});
   }
 }
 

@@ -9,6 +9,7 @@
 #include "agents/config.h"
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
+#include "agents/planning/intention_links.h"
 #include "agents/planning/nominal_cost.h"
 #include "agents/planning/plan.h"
 #include "agents/planning/plan_optimizer.h"
@@ -23,21 +24,14 @@ struct AgentView {
   const OcclusionMap* map = nullptr;       // its planning map (a-priori, Ŵ_i, or nullptr: none)
 };
 
-/// A plan as published to the team.
-struct IntentionMessage {
-  int from = -1;   // the agent that published it
-  int agent = -1;  // the UAV whose actions it holds (= from, except for centralised planning)
-  int epoch = -1;  // the planning epoch it was published in
-  Plan plan;
-};
-
 /// What one agent did in one epoch: the record of who saw what.
 struct AgentPlanReport {
   int agent = -1;
   Plan plan;                     // the plan it applies; plan.command() is its command now
   std::vector<Plan> joint;       // the joint plan (one per UAV) its choice was evaluated in
   std::vector<int> joint_epoch;  // per UAV: the epoch the plan used for it was made in (this
-                                 // epoch: a new plan; earlier: a shifted intention; −1: hover)
+                                 // epoch: a new plan; earlier: a shifted intention, the latest
+                                 // that reached this agent; −1: hover, none reached it)
   double cost = 0.0;             // J of `joint` on the agent's own belief (m²)
   double seconds = 0.0;          // s, wall time of its optimisation (steady_clock, reporting only)
   int iterations = 0;            // swarm iterations (0: it did not optimise)
@@ -47,7 +41,8 @@ struct AgentPlanReport {
 struct TeamPlan {
   int epoch = -1;
   std::vector<Plan> plans;                 // per UAV: the plan it applies
-  std::vector<IntentionMessage> messages;  // published this epoch, in publication order
+  std::vector<IntentionMessage> messages;  // published this epoch, in publication order (sent;
+                                           // whether each arrived is IntentionLinks' business)
   std::vector<AgentPlanReport> reports;    // per UAV, by index
 };
 
@@ -59,20 +54,26 @@ struct TeamPlan {
 /// for the report only and never feeds back into a decision.
 class TeamPlanner {
  public:
-  /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index).
-  TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed);
+  /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index);
+  /// links: what intention messages travel through (default: every message arrives at once).
+  TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed,
+              const LinkConfig& links = {});
 
   /// One planning epoch (epochs increase by one per replan_period; actions last plan_period). uavs and views: one per UAV,
   /// by index, the same team size at every call. With algorithm `none` every UAV hovers.
-  /// SMA-NBO: agents plan in `order`; agent i optimises its own H actions against the new plans
-  /// of the agents before it and the intentions of those after it (their latest plan shifted by
-  /// the time elapsed, a missing step repeating the last action; hover without a plan), then
-  /// publishes {i, i, epoch, plan}. Dec-POMDP: each agent optimises all N·H actions on its own
-  /// view and applies its own; no messages. Centralised: the first agent in `order` optimises the
-  /// joint plan on its view and publishes each UAV's part ({leader, i, epoch, plan_i}).
+  /// SMA-NBO: agents plan in `order`; agent i optimises its own H actions against, for every
+  /// other UAV, the latest plan of it that has reached agent i through the links (with perfect
+  /// links: the new plans of the agents before it and the intentions of those after it), shifted
+  /// by the time elapsed, a missing step repeating the last action; hover when none has reached
+  /// it. Then it publishes {i, i, epoch, plan} to the team. Dec-POMDP: each agent optimises all
+  /// N·H actions on its own view and applies its own; no messages. Centralised: the first agent
+  /// in `order` optimises the joint plan on its view and sends each UAV its part ({leader, i,
+  /// epoch, plan_i}); a UAV whose order did not arrive flies the latest one that did, shifted.
   TeamPlan plan(int epoch, std::span<const UavState> uavs, std::span<const AgentView> views);
 
   const PlannerConfig& config() const { return config_; }
+  /// Intention messages since the start (SMA-NBO's plans, the centralised leader's orders).
+  const MessageCounts& intentionCounts() const { return links_.counts(); }
 
  private:
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
@@ -88,7 +89,9 @@ class TeamPlanner {
   std::uint64_t seed_;
   std::vector<int> order_;                     // planning order (UAV indices)
   std::vector<RandomStream> rng_;              // per agent, purpose "pso"
-  std::vector<IntentionMessage> published_;    // per agent: its latest message (epoch −1: none)
+  LinkConfig link_config_;
+  IntentionLinks links_;                       // intention messages in flight and received
+  std::vector<IntentionMessage> own_;          // per agent: its own latest plan (epoch −1: none)
   std::vector<std::vector<Plan>> last_joint_;  // per agent: its previous joint plan (or empty)
   std::vector<int> last_joint_epoch_;          // per agent: the epoch of last_joint_
   PlanOptimizer optimizer_;

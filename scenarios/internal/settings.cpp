@@ -92,7 +92,7 @@ void readFusion(ObjectReader& root, ScenarioSpec& spec) {
     (*reader.field().out())["comm_range"] = nullptr;  // null: every pair of UAVs can talk
   }
   f.comm_drop = reader.number("comm_drop", f.comm_drop, Bound::probability);
-  if (f.comm_drop >= 1.0) reader.required("comm_drop").fail("expected a probability below 1");
+  f.comm_latency = reader.integer("comm_latency", f.comm_latency, 0, 1000);
   f.association_gate = reader.number("association_gate", f.association_gate, Bound::positive);
   reader.finish();
 }

@@ -262,6 +262,79 @@ TEST(CentralizedNbo, FirstAgentInOrderPlansForAll) {
   EXPECT_NEAR(plan.reports[1].cost, leader, 1e-9 * leader);
 }
 
+// Faulty links (IntentionLinks): what an SMA agent plans against is the latest intention that
+// reached it, shifted by the time since it was made; the record's joint_epoch says which.
+TEST(SmaNbo, WithEveryMessageLostEachAgentPlansAgainstHoveringTeammates) {
+  const PlannerConfig c = config(PlannerAlgorithm::sma);
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 3, LinkConfig{INFINITY, 1.0, 0, 1});
+  for (int epoch = 0; epoch < 3; ++epoch) {
+    const TeamPlan plan = planner.plan(epoch, team.uavs, team.views());
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        EXPECT_EQ(plan.reports[i].joint_epoch[j], j == i ? epoch : -1);
+        if (j != i) {
+          EXPECT_EQ(plan.reports[i].joint[j].velocities, hoverPlan(3).velocities);
+        }
+      }
+    }
+    team.apply(plan, c.plan_period);
+  }
+  EXPECT_EQ(planner.intentionCounts().sent, 3 * 3 * 2);
+  EXPECT_EQ(planner.intentionCounts().lost, 3 * 3 * 2);
+}
+
+// A latency of two epochs: at epoch e every agent holds its teammates' plans of epoch e − 2,
+// shifted by two actions.
+TEST(SmaNbo, LateIntentionsAreUsedShiftedByTheirAge) {
+  const PlannerConfig c = config(PlannerAlgorithm::sma);
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 3, LinkConfig{INFINITY, 0.0, 2, 1});
+  std::vector<TeamPlan> epochs;
+  for (int epoch = 0; epoch < 4; ++epoch) {
+    epochs.push_back(planner.plan(epoch, team.uavs, team.views()));
+    team.apply(epochs.back(), c.plan_period);
+  }
+  for (int epoch = 0; epoch < 4; ++epoch) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        if (j == i) continue;
+        const AgentPlanReport& r = epochs[epoch].reports[i];
+        if (epoch < 2) {
+          EXPECT_EQ(r.joint_epoch[j], -1);
+        } else {
+          EXPECT_EQ(r.joint_epoch[j], epoch - 2);
+          EXPECT_EQ(r.joint[j].velocities,
+                    shiftedPlan(messageFrom(epochs[epoch - 2], j).plan, 2, 3).velocities);
+        }
+      }
+    }
+  }
+}
+
+// The team of Team(3) stands at x = −20, 0, 20: with a 25 m range UAVs 0 and 2 (40 m apart)
+// never hear each other, and both hear UAV 1.
+TEST(SmaNbo, OutOfRangeTeammatesAreAssumedToHover) {
+  const PlannerConfig c = config(PlannerAlgorithm::sma);
+  Team team(3);
+  TeamPlanner planner(c, 1.0, 3, LinkConfig{25.0, 0.0, 0, 1});
+  const TeamPlan e0 = planner.plan(0, team.uavs, team.views());
+  EXPECT_EQ(e0.reports[2].joint_epoch[0], -1);
+  EXPECT_EQ(e0.reports[2].joint_epoch[1], 0);
+  EXPECT_EQ(e0.reports[1].joint_epoch[0], 0);
+  EXPECT_EQ(planner.intentionCounts().sent, 4);  // 0→1, 1→0, 1→2, 2→1
+}
+
+// Centralised planning with every order lost: the leader flies its own part, the others hover.
+TEST(CentralizedNbo, AUavWhoseOrdersAreLostHovers) {
+  const PlannerConfig c = config(PlannerAlgorithm::centralized, {1, 0});
+  Team team(2);
+  TeamPlanner planner(c, 1.0, 9, LinkConfig{INFINITY, 1.0, 0, 1});
+  const TeamPlan plan = planner.plan(0, team.uavs, team.views());
+  EXPECT_EQ(plan.plans[0].velocities, hoverPlan(3).velocities);
+  EXPECT_EQ(plan.plans[1].velocities, plan.reports[1].joint[1].velocities);
+}
+
 TEST(TeamPlanner, IsBitwiseDeterministicForASeed) {
   for (const PlannerAlgorithm algorithm : {PlannerAlgorithm::sma, PlannerAlgorithm::dec_pomdp}) {
     const PlannerConfig c = config(algorithm);

@@ -1,0 +1,58 @@
+#include "agents/planning/intention_links.h"
+
+#include <algorithm>
+
+namespace canopy::agents::planning {
+
+IntentionLinks::IntentionLinks(const LinkConfig& config, int agents, std::uint64_t seed)
+    : config_(config), agents_(agents), inbox_(static_cast<std::size_t>(agents) * agents) {
+  for (int i = 0; i < agents; ++i) loss_.emplace_back(seed, "intention.loss", i);
+}
+
+void IntentionLinks::beginEpoch(int epoch, std::span<const UavState> uavs) {
+  epoch_ = epoch;
+  positions_.resize(uavs.size());
+  for (std::size_t i = 0; i < uavs.size(); ++i) positions_[i] = uavs[i].position;
+  // Deliver, in the order sent, every message due by now; keep the rest in flight.
+  std::vector<InFlight> still_in_flight;
+  for (InFlight& f : in_flight_) {
+    if (f.arrival_epoch <= epoch) {
+      ++counts_.late;
+      deliver(f.receiver, f.message);
+    } else {
+      still_in_flight.push_back(std::move(f));
+    }
+  }
+  in_flight_ = std::move(still_in_flight);
+}
+
+void IntentionLinks::send(const IntentionMessage& message, int to) {
+  // The first epoch whose step is at least latency_steps after this one's:
+  // ⌈latency / steps_per_epoch⌉ epochs later.
+  const int delay =
+      (config_.latency_steps + config_.steps_per_epoch - 1) / std::max(1, config_.steps_per_epoch);
+  for (int r = 0; r < agents_; ++r) {
+    if (r == message.from || (to >= 0 && r != to)) continue;
+    // As in fusion's communication graph: a link exists within range (no message otherwise);
+    // a message on a link is lost with probability drop.
+    const double d2 = (positions_[r] - positions_[message.from]).squaredNorm();
+    if (d2 > config_.range * config_.range) continue;  // ∞ stays ∞
+    ++counts_.sent;
+    if (config_.drop > 0.0 && loss_[r].bernoulli(config_.drop)) {
+      ++counts_.lost;
+      continue;
+    }
+    if (delay == 0) {
+      deliver(r, message);
+    } else {
+      in_flight_.push_back({r, epoch_ + delay, message});
+    }
+  }
+}
+
+void IntentionLinks::deliver(int receiver, const IntentionMessage& message) {
+  IntentionMessage& held = inbox_[static_cast<std::size_t>(receiver) * agents_ + message.agent];
+  if (message.epoch >= held.epoch) held = message;  // never replace a newer plan by an older one
+}
+
+}  // namespace canopy::agents::planning
