@@ -19,7 +19,8 @@ struct ExperimentResult {
 struct ReportContext {
   int trials = 0;          // per configuration
   std::uint64_t seed = 0;  // the sweeps' seed
-  int jobs = 1;
+  int jobs = 1;   // threads per process
+  int ranks = 1;  // MPI processes (1 without --mpi)
   double wall_seconds = 0;  // of the whole reproduction (sweeps run now, analysis, figures)
   int trials_run = 0;       // trials run now (the rest were resumed from disk)
 };

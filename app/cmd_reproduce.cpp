@@ -59,11 +59,13 @@ int reproduceCommand(Args& args) {
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
   const std::vector<analysis::ExperimentResult> studies =
       runAll(analysis::sensitivityStudies(std::max(1, trials / 2), seed));
+  if (mpi) ran = sumOverRanks(ran);  // the trials every rank ran now
   if (!analyses) return kExitOk;
   analysis::ReportContext context;
   context.trials = trials;
   context.seed = seed;
   context.jobs = jobs;
+  context.ranks = mpi ? mpiWorld().size : 1;
   context.trials_run = ran;
   context.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

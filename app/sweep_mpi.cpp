@@ -115,6 +115,12 @@ int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& 
   return ran;
 }
 
+int sumOverRanks(int value) {
+  int sum = 0;
+  check(MPI_Allreduce(&value, &sum, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return sum;
+}
+
 #else
 
 bool mpiAvailable() { return false; }
@@ -126,6 +132,8 @@ const MpiWorld& mpiWorld() {
 int runSweepMpi(const scenarios::SweepSpec&, const std::filesystem::path&, int) {
   throw std::runtime_error("this canopy was built without MPI");
 }
+
+int sumOverRanks(int) { throw std::runtime_error("this canopy was built without MPI"); }
 
 #endif
 

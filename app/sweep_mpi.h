@@ -31,4 +31,7 @@ const MpiWorld& mpiWorld();
 int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out_dir,
                 int jobs);
 
+/// The sum of `value` over every rank (collective: every rank must call it).
+int sumOverRanks(int value);
+
 }  // namespace canopy::app
