@@ -19,6 +19,11 @@ class OcclusionMap {
 
   /// True when p is strictly inside some crown of the map.
   bool occludes(const Vec2& p) const;
+  /// True when the segment from a to b enters some crown of the map before b (a inside one
+  /// counts): the line-of-sight test of sensing (World::firstOccluderOnSegment, the same exact
+  /// world::segmentEntry), here against the map's trees. A segment shorter than 10⁻⁶ m is the
+  /// point test at a, as there.
+  bool blocksSegment(const Vec2& a, const Vec2& b) const;
   const std::vector<world::TreeDef>& trees() const { return trees_; }
   bool empty() const { return trees_.empty(); }
 

@@ -14,7 +14,8 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   config.planner = spec.planner;
   for (const UavSpec& uav : spec.uavs) {
     config.uavs.push_back({uav.body.start, uav.body.yaw, uav.body.yaw_mode, uav.body.v_max,
-                           uav.sensor.footprint, uav.sensor.quality});
+                           uav.sensor.footprint, uav.sensor.quality,
+                           spec.sensing.occlusion_model});
   }
   if (spec.planner.occlusion_map == agents::OcclusionMapMode::a_priori)
     config.true_trees = spec.trees;

@@ -116,8 +116,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   auto moverOf = [&](const UavState& u) {
     const bool follows = u.yaw_mode == world::YawMode::velocity;
     return Mover{u.position, std::cos(u.yaw), std::sin(u.yaw),         follows,
-                 u.v_max,    u.footprint,     sampleQuality(u.quality)};
+                 u.v_max,    u.footprint,     sampleQuality(u.quality),
+                 u.occlusion == sensing::OcclusionModel::line_of_sight};
   };
+  map_ = problem.map;
   std::vector<char> is_free(n_uavs, 0);
   free_.clear();
   free_index_.assign(free_agents.begin(), free_agents.end());
@@ -129,6 +131,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   // The fixed UAVs' paths and footprints over the horizon.
   all_final_.assign(n_uavs, Vec2::Zero());
   std::vector<int> fixed;
+  std::vector<Mover> fixed_movers(n_uavs);
   std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
   std::vector<sensing::Footprint> fixed_fp(fixed_pos.size());
   std::vector<Vec2> actions(H);
@@ -136,7 +139,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     if (is_free[i]) continue;
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
-    fly(moverOf(problem.uavs[i]), actions, &fixed_pos[i * T], &fixed_fp[i * T]);
+    fixed_movers[i] = moverOf(problem.uavs[i]);
+    fly(fixed_movers[i], actions, &fixed_pos[i * T], &fixed_fp[i * T]);
     all_final_[i] = fixed_pos[i * T + T - 1];
   }
 
@@ -170,7 +174,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         int seen = 0;
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
-          if (!fixed_fp[im].contains(z)) continue;
+          if (!fixed_fp[im].contains(z) || !sightClear(fixed_movers[i], fixed_pos[im], z)) continue;
           const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
                                                          sampleQuality(problem.uavs[i].quality));
           if (seen++ == 0) fixed_R_[k] = R;
@@ -231,7 +235,9 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
       const std::size_t k = static_cast<std::size_t>(j) * T + t;
       predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
       bool seen = false;
-      if (!occluded_[k]) {  // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map}
+      // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
+      // tree on the segment p_{i,m} → z_{j,m}}
+      if (!occluded_[k]) {
         if (fixed_seen_[k]) {
           updatePosition(P, fixed_R_[k]);
           seen = true;
@@ -239,7 +245,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
           const int f = std::countr_zero(bits);
           const std::size_t fq = static_cast<std::size_t>(f) * T + t;
-          if (!free_fp_[fq].contains(z_[k])) continue;
+          if (!free_fp_[fq].contains(z_[k]) || !sightClear(free_[f], free_pos_[fq], z_[k])) continue;
           const Mat2 R = sensing::rangeBearingCovariance(z_[k], free_pos_[fq], free_[f].quality);
           updatePosition(P, R);  // S·R
           seen = true;

@@ -84,7 +84,13 @@ class NominalCost {
     double v_max;                     // m/s
     sensing::FootprintDef footprint;  // φ relative to the UAV (m)
     sensing::SensorQuality quality;   // α·S, r0 (m): R of one of an action's S samples
+    bool line_of_sight;               // a map tree on the segment p → z hides z from it
   };
+  // Whether `uav` at p sees the nominal position z that its footprint holds and no crown covers:
+  // under line of sight, when no tree of the map lies on the segment p → z.
+  bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
+    return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
+  }
   // Moves a UAV through H actions: fills H positions (m) and footprints.
   void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
            sensing::Footprint* footprints) const;
@@ -98,13 +104,14 @@ class NominalCost {
   double weight_ = 0.5;           // 1/m, w
   NcvNoise Q_;                    // Q(τ) of the NCV model, τ = Δ/S
   std::vector<double> discount_;  // γ^{m−1}, m = 1..H
+  const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
   std::vector<Mover> free_;       // the free UAVs, in prepare's order
   std::vector<Vec2> all_final_;   // m, p_{i,H} of every UAV (free ones filled per call)
   std::vector<int> free_index_;   // UAV index of each free UAV
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
-  std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown of the map
+  std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown (hidden from all)
   std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}
   std::vector<Mat2> fixed_R_;             // m², R_fix at (j, m) when fixed_seen_
   std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}

@@ -4,6 +4,7 @@
 #include "core/types.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"
+#include "sensing/visibility.h"
 #include "world/defs.h"
 
 namespace canopy::agents::planning {
@@ -15,6 +16,8 @@ struct UavState {
   double v_max = 5.0;                               // m/s, |a_{i,m}| ≤ v_max
   sensing::FootprintDef footprint;                  // φ_i relative to the UAV (m)
   sensing::SensorQuality quality;                   // α_i (dimensionless) and r0 (m) of R_i
+  // What hides a target from its camera: the same model its sensor uses (sensing/visibility.h).
+  sensing::OcclusionModel occlusion = sensing::OcclusionModel::canopy;
 };
 
 }  // namespace canopy::agents::planning
