@@ -19,7 +19,7 @@ void Agent::adoptFused(std::vector<tracking::TargetTrack>&& targets,
   map_trees_.clear();
   for (const tracking::TreeTrack& tree : tracker_.trees()) {
     if (tree.status == tracking::TrackStatus::confirmed)
-      map_trees_.push_back({tree.key, tree.posterior});
+      map_trees_.push_back({tree.key, tree.posterior, tree.outline.mean});
   }
   map_ = OcclusionMap::fromEstimates(map_trees_, tracker_.config().tree_min_radius);
   planning_tracks_.clear();

@@ -27,7 +27,8 @@ struct TrackEstimate {
 /// A fused tree track: one disc of the dynamic occlusion map Ŵ_i.
 struct TreeEstimate {
   TrackKey key;
-  TreeGaussian belief;  // centre (m) and crown radius (m)
+  TreeGaussian belief;      // centre (m) and crown radius (m)
+  sensing::Outline outline;  // a polygonal crown's estimated vertex offsets (m); none: a disc
 };
 
 struct AgentBelief {

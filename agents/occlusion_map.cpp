@@ -55,13 +55,25 @@ OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move
 
 OcclusionMap OcclusionMap::fromEstimates(const std::vector<TreeEstimate>& trees,
                                          double min_radius) {
-  std::vector<world::TreeDef> discs;
-  discs.reserve(trees.size());
+  std::vector<world::TreeDef> crowns;
+  crowns.reserve(trees.size());
   for (const TreeEstimate& tree : trees) {
     const auto& x = tree.belief.x;  // (cx, cy, r)
-    discs.push_back(world::TreeDef::disc(Vec2(x(0), x(1)), std::max(min_radius, x(2))));
+    const Vec2 centre(x(0), x(1));
+    // A measured outline places the crown's polygon at the estimated centroid, while it stays
+    // convex and counter-clockwise (noise could fold a thin one); otherwise its disc.
+    std::vector<Vec2> vertices;
+    for (int v = 0; v < tree.outline.vertices; ++v) {
+      vertices.push_back(centre + tree.outline.offsets[v]);
+    }
+    if (vertices.size() >= 3 && world::isStrictlyConvex(vertices) &&
+        world::signedArea(vertices) > 0.0) {
+      crowns.push_back(world::TreeDef::polygon(std::move(vertices)));
+    } else {
+      crowns.push_back(world::TreeDef::disc(centre, std::max(min_radius, x(2))));
+    }
   }
-  return OcclusionMap(std::move(discs));
+  return OcclusionMap(std::move(crowns));
 }
 
 bool OcclusionMap::occludes(const Vec2& p) const {

@@ -14,7 +14,8 @@ class OcclusionMap {
  public:
   OcclusionMap() = default;
   explicit OcclusionMap(std::vector<world::TreeDef> trees);
-  /// Discs at the estimated centres with the estimated radii (never below min_radius).
+  /// Crowns at the estimated centres: the estimated outline's polygon when one was measured (and
+  /// is convex), else a disc of the estimated radius (never below min_radius).
   static OcclusionMap fromEstimates(const std::vector<TreeEstimate>& trees, double min_radius);
 
   /// True when p is strictly inside some crown of the map.

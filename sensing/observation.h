@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/types.h"
+#include "sensing/outline.h"
 
 namespace canopy::sensing {
 
@@ -18,6 +19,7 @@ struct Observation {
   double radius = 0.0;           // m, trees only: measured crown radius (≥ 0)
   double radius_variance = 0.0;  // m², trees only: σ_r²
   int truth = -1;                // analysis only: target or tree index, −1 for clutter
+  Outline outline;               // polygonal trees only: measured vertex offsets (m)
 };
 
 /// One UAV's scan at one step.

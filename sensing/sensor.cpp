@@ -36,7 +36,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const Vec2 z = chi + rng.gaussian(config.truth_noise_scale * R_truth);
     out.observations.push_back({target_labels[ref.index], z,
                                 rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0,
-                                ref.index});
+                                ref.index, {}});
   }
 
   // Clutter: Poisson count, uniform over the footprint.
@@ -45,7 +45,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const double u = rng.uniform();
     const Vec2 z = footprint.pointFromUnitSquare(u, rng.uniform());
     out.observations.push_back(
-        {config.clutter_label, z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0, -1});
+        {config.clutter_label, z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0, -1, {}});
   }
 
   // Trees (SOO): observed when the crown's centre is in φ_i; exempt from occlusion.
@@ -60,7 +60,17 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
         std::max(0.0, tree.radius + config.tree_radius_sigma * std::sqrt(config.truth_noise_scale) *
                                         rng.normal());
     out.observations.push_back({kTreeLabel, z, rangeBearingCovariance(z, p_i, sensor.quality),
-                                radius, radius_variance, ref.index});
+                                radius, radius_variance, ref.index, {}});
+    // A polygonal crown (or wall) is seen whole: each vertex's offset from the centroid with the
+    // radius's noise σ_r per axis, in the crown's vertex order.
+    if (tree.shape == world::TreeShape::polygon) {
+      Outline& outline = out.observations.back().outline;
+      const Mat2 vertex_noise = config.truth_noise_scale * radius_variance * Mat2::Identity();
+      outline.vertices = static_cast<int>(tree.vertices.size());
+      for (int v = 0; v < outline.vertices; ++v) {
+        outline.offsets[v] = tree.vertices[v] - tree.centre + rng.gaussian(vertex_noise);
+      }
+    }
   }
 }
 

@@ -41,6 +41,7 @@ void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
   tree_association_.associate(fused.trees, graph_, config_.association_gate, mint_, tree_clusters_,
                               diagnostics_);
   tree_consensus_.run(fused.trees, tree_clusters_, graph_, config_, diagnostics_);
+  shareOutlines(fused.trees, tree_clusters_, graph_, outline_scratch_);
 }
 
 }  // namespace canopy::agents::fusion

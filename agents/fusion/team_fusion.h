@@ -10,6 +10,7 @@
 #include "agents/fusion/comm_graph.h"
 #include "agents/fusion/fusion_diagnostics.h"
 #include "agents/fusion/information_consensus.h"
+#include "agents/fusion/outline_sharing.h"
 #include "agents/fusion/track_association.h"
 #include "agents/tracking/track.h"
 #include "core/random.h"
@@ -49,7 +50,8 @@ struct FusedTracks {
 ///    while gated); matched tracks take the smallest key; a confirmed track a neighbour lacks is
 ///    copied into the neighbour's fused list (appended), so it reaches one more hop every step.
 /// 3. Consensus (InformationConsensus) by config.method: every track's posterior is overwritten
-///    by the fused one. Track::prior, status and the counters are left alone, except that
+///    by the fused one. A tree's outline is not averaged: each takes its neighbours' outline
+///    with the most measurements (shareOutlines). Track::prior, status and the counters are left alone, except that
 ///    adopted copies are confirmed, with detected = false.
 ///
 /// Postconditions: within one connected part of the network no two clusters share a key, so no
@@ -94,6 +96,7 @@ class TeamFusion {
   InformationConsensus<3> tree_consensus_;
   Clusters target_clusters_;
   Clusters tree_clusters_;
+  std::vector<tracking::TreeOutline> outline_scratch_;
 };
 
 }  // namespace canopy::agents::fusion

@@ -189,4 +189,11 @@ template void Jpdaf::step<3>(std::vector<Track<3>>&, std::span<const int>,
                              std::span<const sensing::Observation>, std::span<const int>,
                              const TrackingConfig&, std::span<std::uint8_t>, TrackingDiagnostics&);
 
+int Jpdaf::likelyMeasurement(int k) const {
+  for (int p = pair_start_[k]; p < pair_start_[k + 1]; ++p) {
+    if (beta_[p] > 0.5) return pairs_[p].measurement;  // at most one β of a track exceeds ½
+  }
+  return -1;
+}
+
 }  // namespace canopy::agents::tracking

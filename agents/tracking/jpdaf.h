@@ -48,6 +48,9 @@ class Jpdaf {
   /// After step(): Σ_j β_tj of tracks[track_ids[k]], the probability that one of this scan's
   /// measurements is its own (0 when it gated none).
   double detectionProbability(int k) const { return detection_probability_[k]; }
+  /// After step(): the measurement (index into obs_ids) that is more likely than not
+  /// tracks[track_ids[k]]'s own (β > ½), or −1.
+  int likelyMeasurement(int k) const;
 
  private:
   struct Pair {

@@ -2,8 +2,11 @@
 // Track value types (Stone Soup's vocabulary): a track is a labelled Gaussian with a global key
 // and a little bookkeeping for confirmation and deletion. Targets use the NCV state
 // (px, py, vx, vy); trees the static state (cx, cy, r).
+#include <type_traits>
+
 #include "agents/belief.h"
 #include "agents/gaussian.h"
+#include "agents/tracking/tree_outline.h"
 #include "sensing/observation.h"
 
 namespace canopy::agents::tracking {
@@ -21,6 +24,8 @@ struct Track {
   int hits = 0;             // scans in which Σ_j β_tj ≥ ½ (see Tracker::update)
   int expected_misses = 0;  // consecutive misses while expected visible
   bool detected = false;    // this scan: at least one measurement in the gate
+  // Trees only: the outline of a polygonal crown or wall, when one was measured.
+  [[no_unique_address]] std::conditional_t<N == 3, TreeOutline, NoOutline> outline;
 };
 
 using TargetTrack = Track<4>;

@@ -96,6 +96,10 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     // the target's next measurements with it but mostly loses them, so it is dropped instead of
     // confirmed as a duplicate.
     if (jpdaf_.detectionProbability(k) >= kHitProbability) ++track.hits;
+    if constexpr (N == 3) {  // a crown's outline, from the measurement most likely its own
+      const int l = jpdaf_.likelyMeasurement(k);
+      if (l >= 0) track.outline.observe(scan.observations[obs_ids_[l]].outline);
+    }
     if (track.detected) {
       track.expected_misses = 0;
     } else if (expectedVisible(track, own_footprint, own_map)) {
@@ -115,6 +119,7 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     track.scans = 1;
     track.hits = 1;
     track.detected = true;
+    if constexpr (N == 3) track.outline.observe(scan.observations[obs_ids_[l]].outline);
     tracks.push_back(track);
     ++diagnostics_.births;
   }
