@@ -19,7 +19,7 @@ constexpr const char* kUsage = R"(canopy — multi-UAV target tracking under unk
 usage:
   canopy run [SCENARIO] [--out DIR] [--seed N] [--set key=value]...
              [--frames] [--frame-every K] [--size WxH] [--video]
-  canopy coverage RUN_DIR [--size WxH]
+  canopy coverage RUN_DIR [--size WxH] [--check GOLDEN.csv [--tolerance F]]
   canopy validate SCENARIO [--set key=value]...
   canopy list
   canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
@@ -42,7 +42,9 @@ the scenario's folder tree and the scenario library; --allow-path DIR allows ano
 --frames writes DIR/frames/frame_NNNNNN.png (NNNNNN = step) every K steps (default 1) at WxH px
 (default 800 px along the longer side); --video also assembles DIR/frames.mp4 when ffmpeg is
 on PATH. `canopy coverage` prints, per step of a finished run, the rendered coverage of the AOI
-as CSV: step, t, covered_px, multi_px, aoi_px, covered_fraction, then 0/1 per target.
+as CSV: step, t, covered_px, visible_px, multi_px, aoi_px, covered_fraction, visible_fraction,
+then 0/1 per target covered and per target visible; --check GOLDEN.csv compares with a pinned
+CSV (exit 0 match, 1 with the first differing rows, 2 bad input).
 `canopy sweep --shard I/N` runs only shard I (0 <= I < N) of the trials, numbered
 configuration-major and dealt round-robin; shards may run at once on several machines over one
 folder, in any order, and may be killed and rerun. `--status DIR` counts the finished trials
