@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/help.h"
 #include "app/run_coverage.h"
 #include "core/printable.h"
 #include "core/text_file.h"
@@ -58,7 +59,7 @@ int coverageCommand(Args& args) {
       if (*tolerance < 0.0 || *tolerance > 1.0)
         usageError(arg, "expected a fraction F in [0, 1] (of the AOI's pixels)");
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError(arg, "unknown option for `canopy coverage`");
+      unknownOption("coverage", arg);
     } else if (run_dir.empty()) {
       run_dir = arg;
     } else {

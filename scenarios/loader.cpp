@@ -26,7 +26,8 @@ Aabb readAoi(ObjectReader& root) {
     field.fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
   }
   // Box2D holds positions in single precision: beyond 10⁷ m a step is coarser than a metre.
-  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate || aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
+  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate ||
+      aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
     field.fail("expected an AOI within ±1e7 m of the origin (Box2D keeps positions as floats)");
   return aoi;
 }
@@ -78,36 +79,64 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   context.budget_scale = options.budget_scale;
   ObjectReader root = Field(document, file, "", &effective, &context).object();
 
-  spec.name = root.string("name", fs::path(file).stem().string());
-  spec.description = root.string("description", "");
-  if (options.seed) {
-    spec.seed = *options.seed;
-    effective["seed"] = spec.seed;
-    root.optional("seed");  // accepted, replaced by the command line
-  } else if (auto seed = root.optional("seed")) {
-    spec.seed = seed->unsignedInteger();
+  // Each section is read even when an earlier one failed, so that one pass reports every error
+  // it can; sections that depend on a failed one are skipped (their errors would be echoes).
+  std::vector<ScenarioError> errors;
+  auto attempt = [&errors](auto&& read) {
+    try {
+      read();
+      return true;
+    } catch (const ScenarioErrors& e) {
+      errors.insert(errors.end(), e.errors().begin(), e.errors().end());
+    } catch (const ScenarioError& e) {
+      errors.push_back(e);
+    }
+    return false;
+  };
+  attempt([&] { spec.name = root.string("name", fs::path(file).stem().string()); });
+  attempt([&] { spec.description = root.string("description", ""); });
+  attempt([&] {
+    if (options.seed) {
+      spec.seed = *options.seed;
+      effective["seed"] = spec.seed;
+      root.optional("seed");  // accepted, replaced by the command line
+    } else if (auto seed = root.optional("seed")) {
+      spec.seed = seed->unsignedInteger();
+    } else {
+      effective["seed"] = spec.seed;
+    }
+  });
+  const bool frame_ok =
+      attempt([&] { spec.aoi = readAoi(root); }) & attempt([&] { readClock(root, spec); });
+  if (!frame_ok) throw ScenarioErrors(std::move(errors));  // everything below needs both
+  std::string clutter_label;
+  bool bodies_ok = attempt([&] { clutter_label = internal::readSensing(root, spec); });
+  bodies_ok = attempt([&] { internal::readUavs(root, spec); }) && bodies_ok;
+  std::vector<std::string> target_labels;
+  bodies_ok = attempt([&] { target_labels = internal::readTargets(root, spec); }) && bodies_ok;
+
+  attempt([&] {
+    Json occluders_effective = Json::array();
+    if (auto list = root.optional("occluders")) {
+      std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
+      internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
+    }
+    effective["occluders"] = occluders_effective;
+  });
+  attempt([&] { internal::readTracking(root, spec); });
+  attempt([&] { internal::readFusion(root, spec); });
+  if (bodies_ok) {
+    // Labels, the planner and the analysis name UAVs and targets.
+    resolveLabels(target_labels, clutter_label, spec);
+    attempt([&] { internal::readPlanner(root, spec); });
+    attempt([&] { internal::readAnalysis(root, spec); });
   } else {
-    effective["seed"] = spec.seed;
+    root.optional("planner");  // skipped above, not unknown
+    root.optional("analysis");
   }
-  spec.aoi = readAoi(root);
-  readClock(root, spec);
-  const std::string clutter_label = internal::readSensing(root, spec);
-  internal::readUavs(root, spec);
-  const std::vector<std::string> target_labels = internal::readTargets(root, spec);
-
-  Json occluders_effective = Json::array();
-  if (auto list = root.optional("occluders")) {
-    std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
-    internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
-  }
-  effective["occluders"] = occluders_effective;
-
-  resolveLabels(target_labels, clutter_label, spec);
-  internal::readTracking(root, spec);
-  internal::readFusion(root, spec);
-  internal::readPlanner(root, spec);
-  internal::readAnalysis(root, spec);
-  root.finish();
+  attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
+  if (errors.size() == 1) throw errors[0];
+  if (!errors.empty()) throw ScenarioErrors(std::move(errors));
   checkWork(spec, options.budget_scale);
 
   spec.effective_config = effective.dump(2);

@@ -77,13 +77,17 @@ TEST_F(CanopyCli, BadFrameOptionsAreUsageErrors) {
   EXPECT_FALSE(fs::exists(dir_ / "bad"));  // rejected before anything ran
 }
 
-TEST_F(CanopyCli, VideoIsSkippedPlainlyWithoutFfmpeg) {
+TEST_F(CanopyCli, AVideoThatCannotBeMadeFailsNamingThePackage) {
   const Outcome o =
       canopy("run demo --out " + run("v") + " --video --frame-every 75", "PATH=/nonexistent");
-  ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_NE(o.out.find("video skipped: ffmpeg is not on PATH"), std::string::npos) << o.out;
-  EXPECT_TRUE(fs::exists(dir_ / "v" / "frames" / "frame_000150.png"));
-  EXPECT_FALSE(fs::exists(dir_ / "v" / "frames.mp4"));
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_NE(o.err.find("ffmpeg is not on PATH; install the Debian package ffmpeg"),
+            std::string::npos)
+      << o.err;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  EXPECT_FALSE(fs::exists(dir_ / "v"));  // known before anything ran
+  EXPECT_EQ(canopy("run demo --out " + run("f") + " --frames --fps 10").code, 2);  // needs --video
+  EXPECT_EQ(canopy("run demo --out " + run("f") + " --video --fps 0").code, 2);
 }
 
 TEST_F(CanopyCli, NoGlContextWithoutFrames) {
