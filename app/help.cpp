@@ -70,6 +70,10 @@ constexpr OptionHelp kForest[] = {
     {"--budget", "K", "1", "multiply the tree limit by K"},
 };
 
+constexpr OptionHelp kSchema[] = {
+    {"--markdown", "", "off (JSON Schema)", "print the reference page instead"},
+};
+
 #undef CANOPY_LOAD_OPTIONS
 
 constexpr CommandHelp kCommands[] = {
@@ -92,6 +96,10 @@ constexpr CommandHelp kCommands[] = {
      "The paper's experiment table and three sensitivity studies → DIR/report.md.", kReproduce},
     {"forest", "canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R [options]",
      "Prints a Poisson tree layout as a layout file.", kForest},
+    {"schema", "canopy schema [--markdown]",
+     "Prints the JSON Schema of scenario files (types, ranges, defaults, units, meaning) from the "
+     "loader's own field table; --markdown prints docs/scenario-reference.md.",
+     kSchema},
     {"list", "canopy list", "The built-in scenarios and their descriptions.", {}},
 };
 
@@ -104,8 +112,8 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
   for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
   for (std::size_t i = 1; i <= n; ++i) {
     for (std::size_t j = 1; j <= m; ++j) {
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1,
-                          d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
       if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
         d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }

@@ -47,6 +47,7 @@ int dispatch(const std::string& command, Args& args) {
   if (command == "sweep") return sweepCommand(args);
   if (command == "analyze") return analyzeCommand(args);
   if (command == "reproduce") return reproduceCommand(args);
+  if (command == "schema") return schemaCommand(args);
   std::vector<std::string> names;
   for (const CommandHelp& c : commands()) names.emplace_back(c.name);
   const std::string guess = nearest(command, names);

@@ -77,6 +77,7 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   Json effective = Json::object();
   internal::LoadContext context = internal::loadContextFor(file, options.allowed_roots);
   context.budget_scale = options.budget_scale;
+  context.log = options.field_log;
   ObjectReader root = Field(document, file, "", &effective, &context).object();
 
   // Each section is read even when an earlier one failed, so that one pass reports every error

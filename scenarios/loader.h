@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/field_log.h"
 #include "scenarios/spec.h"
 
 namespace canopy::scenarios {
@@ -19,6 +20,8 @@ struct LoadOptions {
   std::vector<std::filesystem::path> allowed_roots;
   /// Multiplies every work limit of scenarios/budget.h (`--budget K`); 1 keeps the defaults.
   double budget_scale = 1.0;
+  /// When set, every field the loader reads is recorded here (scenarios/field_log.h).
+  FieldLog* field_log = nullptr;
 };
 
 /// scenario: a path to a file, or the name of a file in the scenario library (with or without
