@@ -157,35 +157,54 @@ ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& option
 }
 
 fs::path libraryDir() {
-  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) return dir;
   return fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library";
+}
+
+std::vector<fs::path> scenarioSearchPath() {
+  std::vector<fs::path> dirs;
+  if (const char* list = std::getenv("CANOPY_PATH"); list && *list) {
+    std::string text = list;
+    for (std::size_t start = 0; start <= text.size();) {
+      const std::size_t colon = std::min(text.find(':', start), text.size());
+      if (colon > start) dirs.emplace_back(text.substr(start, colon - start));
+      start = colon + 1;
+    }
+  }
+  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) dirs.emplace_back(dir);
+  dirs.push_back(libraryDir());
+  return dirs;
 }
 
 std::vector<std::string> libraryScenarios() {
   std::vector<std::string> names;
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(libraryDir(), error)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") {
-      names.push_back(entry.path().stem().string());
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const auto& entry : fs::directory_iterator(dir, error)) {
+      if (entry.is_regular_file() && entry.path().extension() == ".json") {
+        names.push_back(entry.path().stem().string());
+      }
     }
   }
   std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;
 }
 
 fs::path resolveScenario(const std::string& scenario) {
   std::error_code error;
   if (fs::is_regular_file(scenario, error)) return scenario;
-  for (const fs::path& candidate : {libraryDir() / scenario, libraryDir() / (scenario + ".json")}) {
-    if (fs::is_regular_file(candidate, error)) return candidate;
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const fs::path& candidate : {dir / scenario, dir / (scenario + ".json")}) {
+      if (fs::is_regular_file(candidate, error)) return candidate;
+    }
   }
   if (fs::exists(scenario, error)) {
     throw ScenarioError(printable(scenario, 200), "",
                         "not a regular file (expected a scenario JSON file or a built-in name)");
   }
   throw ScenarioError(printable(scenario, 200), "",
-                      "no such scenario file, and no built-in scenario of that name "
-                      "(see `canopy list`)");
+                      "no such scenario file, and no scenario of that name in $CANOPY_PATH or "
+                      "the built-in library (see `canopy list`)");
 }
 
 std::vector<world::TreeDef> loadLayout(const std::string& path) {
