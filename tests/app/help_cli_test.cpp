@@ -102,6 +102,10 @@ TEST(HelpCli, RunPrintsAShortTableAndJsonOnRequest) {
   std::snprintf(ospa, sizeof ospa, "OSPA %.3g m",
                 summary.at("team").at("ospa_mean_m").get<double>());
   EXPECT_NE(table.out.find(ospa), std::string::npos) << table.out;
+  char gospa[64];
+  std::snprintf(gospa, sizeof gospa, ", GOSPA %.3g m",
+                summary.at("team").at("gospa_mean_m").get<double>());
+  EXPECT_NE(table.out.find(gospa), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("planning: none (scripted paths)"), std::string::npos) << table.out;
   fs::remove_all(dir);
 }

@@ -1,7 +1,6 @@
 #include "scenarios/loader.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -187,7 +186,6 @@ TEST(Loader, MutatedFilesFailCleanly) {
   }
   EXPECT_GT(rejected, 100);
 }
-
 
 // CANOPY_PATH's folders come before the built-in library, in order; CANOPY_LIBRARY_DIR adds a
 // folder after them instead of replacing the library.
