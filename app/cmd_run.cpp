@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/frame_view.h"
 #include "app/help.h"
 #include "app/run_report.h"
 #include "core/output_file.h"
@@ -22,8 +23,10 @@ std::string getenvOr(const char* name, const char* fallback) {
   return value ? value : fallback;
 }
 
-render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
+render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec, const Aabb& view) {
   render::SceneModel model;
+  model.view = view;
+  model.plans = spec.planner.algorithm != agents::PlannerAlgorithm::none;
   model.title = spec.name;
   model.aoi = spec.aoi;
   model.trees = spec.trees;
@@ -70,6 +73,7 @@ int runCommand(Args& args) {
   bool frames = false, video = false, json = false;
   std::optional<int> every;
   std::optional<double> fps;
+  std::optional<std::string> view;
   std::optional<render::ImageSize> size;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -92,6 +96,8 @@ int runCommand(Args& args) {
       fps = args.doubleValue(arg);
       if (!(*fps > 0.0) || *fps > 1000.0)
         usageError(arg, "expected frames per second in (0, 1000]");
+    } else if (arg == "--view") {
+      view = args.value(arg);
     } else if (arg == "--json") {
       json = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -105,6 +111,7 @@ int runCommand(Args& args) {
   if (!frames && every) usageError("--frame-every", "only applies with --frames or --video");
   if (!frames && size) usageError("--size", "only applies with --frames or --video");
   if (!video && fps) usageError("--fps", "only applies with --video");
+  if (!frames && view) usageError("--view", "only applies with --frames or --video");
   // A video that cannot be made is known before anything runs.
   if (video && render::findExecutable("ffmpeg", getenvOr("PATH", "")).empty()) {
     std::fprintf(stderr,
@@ -131,7 +138,7 @@ int runCommand(Args& args) {
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = every.value_or(1);
     frame_options.size = size.value_or(render::ImageSize{});
-    writer.emplace(sceneModel(spec), frame_options);
+    writer.emplace(sceneModel(spec, viewFor(view.value_or("action"), spec)), frame_options);
     frame_observer.emplace(*writer);
     options.observers.push_back(&*frame_observer);
   }

@@ -24,6 +24,8 @@ constexpr OptionHelp kRun[] = {
     {"--frames", "", "off", "write DIR/frames/frame_NNNNNN.png"},
     {"--frame-every", "K", "1", "a frame every K steps"},
     {"--size", "WxH", "800 px along the view's longer side", "frame size"},
+    {"--view", "aoi|action|x0,y0,x1,y1", "action",
+     "what every frame shows: the AOI, the padded box of everything that moves, or a box (m)"},
     {"--video", "", "off", "also assemble DIR/frames.mp4 with ffmpeg (Debian ffmpeg)"},
     {"--fps", "F", "real time, 1/(dt·K)", "frames per second of the video"},
     CANOPY_LOAD_OPTIONS,

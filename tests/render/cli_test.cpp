@@ -90,6 +90,21 @@ TEST_F(CanopyCli, AVideoThatCannotBeMadeFailsNamingThePackage) {
   EXPECT_EQ(canopy("run demo --out " + run("f") + " --video --fps 0").code, 2);
 }
 
+TEST_F(CanopyCli, FramesTakeAViewForTheWholeRun) {
+  for (const char* view : {"aoi", "action", "-10,-10,10,10"}) {
+    const Outcome o = canopy("run demo --set clock.duration=1 --out " + run("view") +
+                             " --frames --frame-every 5 --size 200x100 --view " + view);
+    EXPECT_EQ(o.code, 0) << view << o.err;
+  }
+  for (const char* view : {"nowhere", "1,2,3", "5,0,1,10", "--frames"}) {
+    const Outcome o = canopy("run demo --out " + run("bad") + " --frames --view " + view);
+    EXPECT_EQ(o.code, 2) << view;
+    EXPECT_NE(o.err.find("--view"), std::string::npos) << view << o.err;
+  }
+  EXPECT_EQ(canopy("run demo --out " + run("bad") + " --view aoi").code, 2);  // needs --frames
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
+}
+
 TEST_F(CanopyCli, NoGlContextWithoutFrames) {
   // ASan (CANOPY_SANITIZE) wants to be the first preloaded library; let it share.
   const std::string preload =
