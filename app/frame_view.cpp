@@ -35,7 +35,11 @@ Aabb actionBox(const scenarios::ScenarioSpec& spec) {
   lo -= Vec2::Constant(reach);
   hi += Vec2::Constant(reach);
   const double pad = std::max(2.0, 0.1 * std::max(hi.x() - lo.x(), hi.y() - lo.y()));
-  return {lo - Vec2::Constant(pad), hi + Vec2::Constant(pad)};
+  // Never beyond the AOI: everything scripted starts and stays inside it.
+  const Vec2 view_lo = (lo - Vec2::Constant(pad)).cwiseMax(spec.aoi.lo);
+  const Vec2 view_hi = (hi + Vec2::Constant(pad)).cwiseMin(spec.aoi.hi);
+  if (!(view_hi.x() > view_lo.x() && view_hi.y() > view_lo.y())) return spec.aoi;
+  return {view_lo, view_hi};
 }
 
 Aabb viewFor(const std::string& text, const scenarios::ScenarioSpec& spec) {

@@ -11,7 +11,7 @@ namespace canopy::app {
 /// The padded box of everything that moves over the run as the scenario scripts it: every
 /// target's path and every scripted UAV's path sampled at each step (a planned UAV: its start),
 /// grown by the largest footprint's half-diagonal and then by 10 % of the larger side (at least
-/// 2 m) on every side. A planned UAV may leave it.
+/// 2 m) on every side, and kept within the AOI. A planned UAV may leave it.
 Aabb actionBox(const scenarios::ScenarioSpec& spec);
 
 /// The region for `--view TEXT`: "aoi", "action" or "x0,y0,x1,y1" (m, x1 > x0, y1 > y0); a usage
