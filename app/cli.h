@@ -32,6 +32,10 @@ class Args {
   std::string outputDirValue(const std::string& name);
   /// "a,b,c,d" as numbers.
   std::vector<double> listValue(const std::string& name, std::size_t count);
+  /// The arguments not taken yet.
+  std::vector<std::string> rest() const {
+    return {args_.begin() + static_cast<long>(next_), args_.end()};
+  }
   /// The whole command line, for manifests.
   std::string joined() const;
 

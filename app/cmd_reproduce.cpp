@@ -6,6 +6,7 @@
 
 #include "analysis/report.h"
 #include "app/commands.h"
+#include "app/help.h"
 #include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
@@ -32,7 +33,7 @@ int reproduceCommand(Args& args) {
     } else if (arg == "--mpi") {
       mpi = true;
     } else {
-      usageError(arg, "unknown option for `canopy reproduce`");
+      unknownOption("reproduce", arg);
     }
   }
   if (out.empty()) usageError("reproduce", "expected --out DIR");

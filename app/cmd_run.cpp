@@ -1,9 +1,13 @@
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <string>
 
 #include "app/commands.h"
+#include "app/frame_view.h"
+#include "app/help.h"
+#include "app/run_report.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "render/frame_writer.h"
@@ -14,8 +18,15 @@
 namespace canopy::app {
 namespace {
 
-render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
+std::string getenvOr(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value ? value : fallback;
+}
+
+render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec, const Aabb& view) {
   render::SceneModel model;
+  model.view = view;
+  model.plans = spec.planner.algorithm != agents::PlannerAlgorithm::none;
   model.title = spec.name;
   model.aoi = spec.aoi;
   model.trees = spec.trees;
@@ -59,8 +70,10 @@ int runCommand(Args& args) {
   std::string scenario;
   std::string out_dir;
   scenarios::LoadOptions load;
-  bool frames = false, video = false;
+  bool frames = false, video = false, json = false;
   std::optional<int> every;
+  std::optional<double> fps;
+  std::optional<std::string> view;
   std::optional<render::ImageSize> size;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -79,8 +92,16 @@ int runCommand(Args& args) {
       size = imageSizeValue(args, arg);
     } else if (arg == "--video") {
       video = frames = true;  // a video is made of frames
+    } else if (arg == "--fps") {
+      fps = args.doubleValue(arg);
+      if (!(*fps > 0.0) || *fps > 1000.0)
+        usageError(arg, "expected frames per second in (0, 1000]");
+    } else if (arg == "--view") {
+      view = args.value(arg);
+    } else if (arg == "--json") {
+      json = true;
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError(arg, "unknown option for `canopy run`");
+      unknownOption("run", arg);
     } else if (scenario.empty()) {
       scenario = arg;
     } else {
@@ -89,6 +110,15 @@ int runCommand(Args& args) {
   }
   if (!frames && every) usageError("--frame-every", "only applies with --frames or --video");
   if (!frames && size) usageError("--size", "only applies with --frames or --video");
+  if (!video && fps) usageError("--fps", "only applies with --video");
+  if (!frames && view) usageError("--view", "only applies with --frames or --video");
+  // A video that cannot be made is known before anything runs.
+  if (video && render::findExecutable("ffmpeg", getenvOr("PATH", "")).empty()) {
+    std::fprintf(stderr,
+                 "canopy: --video: ffmpeg is not on PATH; install the Debian package ffmpeg "
+                 "(apt-get install ffmpeg), or run with --frames only\n");
+    return kExitFailure;
+  }
   if (scenario.empty()) scenario = kDefaultScenario;
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
   if (out_dir.empty()) {
@@ -108,28 +138,38 @@ int runCommand(Args& args) {
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = every.value_or(1);
     frame_options.size = size.value_or(render::ImageSize{});
-    writer.emplace(sceneModel(spec), frame_options);
+    writer.emplace(sceneModel(spec, viewFor(view.value_or("action"), spec)), frame_options);
     frame_observer.emplace(*writer);
     options.observers.push_back(&*frame_observer);
   }
   const scenarios::RunResult result = scenarios::runScenario(spec, options);
-  std::printf("%s: %d steps in %.3f s → %s/{manifest.json, record.jsonl, summary.json}\n",
-              printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
-              printable(out_dir).c_str());
-  // JSON escapes C0 controls but passes DEL and C1 in names through: printed line by line.
-  std::stringstream summary(result.summary_json);
-  for (std::string line; std::getline(summary, line);) std::printf("%s\n", printable(line).c_str());
+  for (const std::string& warning : runWarnings(result.summary_json))
+    std::fprintf(stderr, "canopy: warning: %s\n", printable(warning).c_str());
+  if (json) {
+    // JSON escapes C0 controls but passes DEL and C1 in names through: printed line by line.
+    std::stringstream summary(result.summary_json);
+    for (std::string line; std::getline(summary, line);)
+      std::printf("%s\n", printable(line).c_str());
+  } else {
+    std::printf(
+        "%s: %d steps in %.3f s → %s/ (manifest.json, record.jsonl, timings.jsonl, "
+        "summary.json)\n%s",
+        printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
+        printable(out_dir).c_str(), runTable(result.summary_json).c_str());
+  }
   if (!writer) return kExitOk;
 
-  std::printf("frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
-              writer->framesWritten(), writer->size().width, writer->size().height,
-              every.value_or(1), printable(writer->dir().string()).c_str());
+  std::fprintf(json ? stderr : stdout,
+               "frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
+               writer->framesWritten(), writer->size().width, writer->size().height,
+               every.value_or(1), printable(writer->dir().string()).c_str());
   if (!video) return kExitOk;
-  const double fps = 1.0 / (spec.dt * every.value_or(1));  // real time
+  const double rate = fps.value_or(1.0 / (spec.dt * every.value_or(1)));  // default: real time
   const render::VideoResult made =
-      render::assembleVideo(writer->dir(), options.out_dir / "frames.mp4", fps);
-  std::printf("%s\n", printable(made.message).c_str());
-  return made.status == render::VideoStatus::failed ? kExitFailure : kExitOk;
+      render::assembleVideo(writer->dir(), options.out_dir / "frames.mp4", rate);
+  std::fprintf(made.status == render::VideoStatus::made && !json ? stdout : stderr, "%s\n",
+               printable(made.message).c_str());
+  return made.status == render::VideoStatus::made ? kExitOk : kExitFailure;
 }
 
 }  // namespace canopy::app

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/help.h"
 #include "core/printable.h"
 #include "scenarios/budget.h"
 #include "scenarios/error.h"
@@ -20,7 +21,7 @@ int validateCommand(Args& args) {
       load.overrides.push_back(args.value(arg));
     } else if (takeLoadOption(args, arg, load)) {
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError(arg, "unknown option for `canopy validate`");
+      unknownOption("validate", arg);
     } else if (scenario.empty()) {
       scenario = arg;
     } else {
@@ -83,7 +84,7 @@ int forestCommand(Args& args) {
       if (*def.min_gap < 0.0) usageError(arg, "expected a gap >= 0 (m)");
     } else if (arg == "--budget" && takeLoadOption(args, arg, load)) {
     } else {
-      usageError(arg, "unknown option for `canopy forest`");
+      unknownOption("forest", arg);
     }
   }
   if (!has_aoi || !has_lambda || !has_radius) {
@@ -103,7 +104,8 @@ int forestCommand(Args& args) {
     trees = scenarios::poissonForest(def);
   } catch (const scenarios::ForestTooLarge& e) {
     usageError("--seed", "this seed's draw needs more than " + std::to_string(e.max_points) + " " +
-                             e.what_counted + "; change the seed or raise the limit with --budget K");
+                             e.what_counted +
+                             "; change the seed or raise the limit with --budget K");
   }
   Json occluders = Json::array();
   for (const world::TreeDef& tree : trees) {

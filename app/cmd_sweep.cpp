@@ -1,8 +1,8 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <thread>
 
@@ -10,6 +10,7 @@
 #include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
+#include "app/help.h"
 #include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
@@ -68,11 +69,11 @@ int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesyste
       sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }, shard});
 }
 
-int runSweepOverMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
-                    int jobs) {
+int runSweepOverMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs) {
   if (!mpiAvailable())
-    usageError("--mpi", "this canopy was built without MPI: install the Debian packages "
-                        "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
+    usageError("--mpi",
+               "this canopy was built without MPI: install the Debian packages "
+               "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
   for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
     checkOutputDirectories(out / "trials" / config.id, out);
   return runSweepMpi(sweep, out, jobs);
@@ -133,7 +134,7 @@ int sweepCommand(Args& args) {
       status = args.value(arg);
     } else if (takeLoadOption(args, arg, load)) {
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError(arg, "unknown option for `canopy sweep`");
+      unknownOption("sweep", arg);
     } else if (file.empty()) {
       file = arg;
     } else {
@@ -158,10 +159,11 @@ int sweepCommand(Args& args) {
                 printable(sweep.name, 200).c_str(), mpiWorld().rank, mpiWorld().size, ran, seconds,
                 jobs, printable(out).c_str());
   } else if (!shard.whole()) {
-    std::printf("%s: shard %d/%d ran %d trials in %.1f s with %d jobs → %s/trials/ (run without "
-                "--shard to finish)\n",
-                printable(sweep.name, 200).c_str(), shard.index, shard.count, ran, seconds, jobs,
-                printable(out).c_str());
+    std::printf(
+        "%s: shard %d/%d ran %d trials in %.1f s with %d jobs → %s/trials/ (run without "
+        "--shard to finish)\n",
+        printable(sweep.name, 200).c_str(), shard.index, shard.count, ran, seconds, jobs,
+        printable(out).c_str());
   } else {
     std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n",
                 printable(sweep.name, 200).c_str(), ran, seconds, jobs, printable(out).c_str());
@@ -185,7 +187,7 @@ int analyzeCommand(Args& args) {
       if (!(maps.before_hiding_s > 0.0) || maps.before_hiding_s > 1e6)
         usageError(arg, "expected a window in seconds, in (0, 1e6]");
     } else if (!arg.empty() && arg[0] == '-') {
-      usageError(arg, "unknown option for `canopy analyze`");
+      unknownOption("analyze", arg);
     } else if (dir.empty()) {
       dir = arg;
     } else {
@@ -202,6 +204,18 @@ int analyzeCommand(Args& args) {
   }
   analysis::writeTables(result, out);
   analysis::writeFigures(result, out, maps);
+  std::printf(
+      "Ownership state at the last step L, per configuration: the share of trials in each state "
+      "with its 95 %% Wilson interval.\nA state is the sets of targets each UAV owns (m-ownership: "
+      "kept in its footprint over the window; docs/design-notes.md, \"Behaviour analysis\");\n"
+      "named states (M*, …) come from the scenario's analysis.states; \"Miss 1\" / \"Miss >1\": "
+      "one / several targets owned by no UAV; \"Other\": every target owned, in no named "
+      "state.\n");
+  if (!result.specs.empty() && result.specs.front().analysis.states.empty()) {
+    std::printf(
+        "note: the scenario names no analysis.states, so every trial that misses no "
+        "target is \"Other\"; name states in its analysis section to tell them apart.\n");
+  }
   for (const analysis::ConfigStatistics& config : result.configs) {
     std::printf("%-40s %3d trials  at L:", printable(config.id, 200).c_str(), config.trials);
     for (std::size_t i = 0; i < config.states.size(); ++i) {

@@ -9,14 +9,15 @@
 
 namespace canopy::app {
 
-int runCommand(Args& args);        // canopy run [SCENARIO] [options]
-int validateCommand(Args& args);   // canopy validate SCENARIO [--set k=v]...
-int listCommand(Args& args);       // canopy list
-int forestCommand(Args& args);     // canopy forest --aoi … --lambda … --radius … --seed …
-int coverageCommand(Args& args);   // canopy coverage RUN_DIR [--size WxH]
-int sweepCommand(Args& args);      // canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
+int runCommand(Args& args);       // canopy run [SCENARIO] [options]
+int validateCommand(Args& args);  // canopy validate SCENARIO [--set k=v]...
+int listCommand(Args& args);      // canopy list
+int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
+int coverageCommand(Args& args);  // canopy coverage RUN_DIR [--size WxH]
+int sweepCommand(Args& args);  // canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
 int analyzeCommand(Args& args);    // canopy analyze DIR [--out DIR]
-int reproduceCommand(Args& args);  // canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
+int reproduceCommand(Args& args);
+int schemaCommand(Args& args);     // canopy schema [--markdown]  // canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
 
 /// The value after option `name` as "WxH" (px); a usage error (exit code 2) otherwise.
 render::ImageSize imageSizeValue(Args& args, const std::string& name);

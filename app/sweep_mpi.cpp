@@ -33,7 +33,9 @@ bool everyoneSucceeded(bool mine) {
 
 }  // namespace
 
-bool mpiAvailable() { return true; }
+bool mpiAvailable() {
+  return true;
+}
 
 const MpiWorld& mpiWorld() {
   static const MpiWorld world = [] {
@@ -50,8 +52,7 @@ const MpiWorld& mpiWorld() {
   return world;
 }
 
-int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out_dir,
-                int jobs) {
+int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out_dir, int jobs) {
   const MpiWorld& world = mpiWorld();
   // Rank 0 checks the directory, writes its manifests and lists the missing trials; the others
   // load the same configurations (their scenarios) without writing, and take rank 0's list.
@@ -78,8 +79,8 @@ int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& 
   // The shared counter: one long long at rank 0, advanced by MPI_Fetch_and_op.
   long long* counter = nullptr;
   MPI_Win window;
-  check(MPI_Win_allocate(world.rank == 0 ? sizeof(long long) : 0, sizeof(long long),
-                         MPI_INFO_NULL, MPI_COMM_WORLD, &counter, &window),
+  check(MPI_Win_allocate(world.rank == 0 ? sizeof(long long) : 0, sizeof(long long), MPI_INFO_NULL,
+                         MPI_COMM_WORLD, &counter, &window),
         "MPI_Win_allocate");
   if (world.rank == 0) *counter = 0;
   check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
@@ -109,7 +110,8 @@ int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& 
   const bool all_ran = everyoneSucceeded(!failure);  // also: every rank is done
   check(MPI_Win_free(&window), "MPI_Win_free");
   if (failure) std::rethrow_exception(failure);
-  if (!all_ran) throw std::runtime_error("MPI: a trial failed on another rank (its message says why)");
+  if (!all_ran)
+    throw std::runtime_error("MPI: a trial failed on another rank (its message says why)");
   if (world.rank == 0) scenarios::finishSweep(out_dir);
   check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");  // the summary exists when any rank returns
   return ran;
@@ -123,7 +125,9 @@ int sumOverRanks(int value) {
 
 #else
 
-bool mpiAvailable() { return false; }
+bool mpiAvailable() {
+  return false;
+}
 
 const MpiWorld& mpiWorld() {
   throw std::runtime_error("this canopy was built without MPI");

@@ -28,8 +28,7 @@ const MpiWorld& mpiWorld();
 /// call it with the same sweep. Returns the number of trials this rank ran. A ScenarioError on
 /// rank 0 (a different sweep in DIR, a bad scenario) is thrown there and reported as a
 /// std::runtime_error on the other ranks; a failed trial on any rank stops the summary.
-int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out_dir,
-                int jobs);
+int runSweepMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out_dir, int jobs);
 
 /// The sum of `value` over every rank (collective: every rank must call it).
 int sumOverRanks(int value);

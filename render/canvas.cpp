@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/internal/font.h"
 #include "render/internal/tessellate.h"
 
 namespace canopy::render {
@@ -242,6 +243,17 @@ void Canvas::draw(const Scene& scene, Image& out) {
       dst[3 * x] = row[4 * x];
       dst[3 * x + 1] = row[4 * x + 1];
       dst[3 * x + 2] = row[4 * x + 2];
+    }
+  }
+  // Text over everything, anti-aliased by FreeType (tessellate() left it out).
+  if (internal::Font* font = internal::Font::instance()) {
+    for (const Primitive& p : scene.world) {
+      if (const auto* t = std::get_if<Text>(&p))
+        font->draw(out, scene.viewport.toPixel(t->at) + t->offset_px, t->text, t->scale, t->colour);
+    }
+    for (const Primitive& p : scene.overlay) {
+      if (const auto* t = std::get_if<Text>(&p))
+        font->draw(out, t->at + t->offset_px, t->text, t->scale, t->colour);
     }
   }
 }

@@ -13,7 +13,7 @@ namespace {
 ImageSize chosenSize(const SceneModel& model, const FrameOptions& options) {
   return options.size.width > 0 && options.size.height > 0
              ? options.size
-             : defaultFrameSize(model.aoi, options.scene);
+             : defaultFrameSize(model.shown(), options.scene);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ void addEstimates(std::span<const agents::AgentBelief> beliefs, const Sizes& z,
 }
 
 void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
-               const TargetTrails& trails, const Sizes& z, bool labels,
+               const TargetTrails& trails, const Viewport& v, const Sizes& z, bool labels,
                std::vector<Primitive>& out) {
   for (int t = 0; t < static_cast<int>(truth.targets.size()); ++t) {
     const std::vector<Vec2>& trail = trails.trail(t);
@@ -125,16 +125,46 @@ void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
                     uavColour(static_cast<int>(i)), palette::kTarget, 1.2 * z.u});
   }
   if (!labels) return;
-  // Names last, on top of every symbol. Targets are labelled above and to the right, UAVs
-  // below and to the right, so that a UAV flying over its target hides neither name.
+  // Names last, on top of every symbol. Each tries, in order, the places around its symbol
+  // (targets first above right, UAVs below right, so that a UAV over its target hides neither)
+  // and takes the first whose box overlaps no name placed before it; the first place if none.
   const double line = kTextLineHeight * z.text;
+  std::vector<Aabb> placed_boxes;  // px, relative to the image, of the names placed so far
+  const auto place = [&](const Vec2& at, const std::string& name,
+                         const std::vector<Vec2>& offsets) {
+    const Vec2 px = v.toPixel(at);
+    const double width = textWidth(name) * z.text;
+    Vec2 chosen = offsets.front();
+    for (const Vec2& offset : offsets) {
+      const Aabb box{px + offset, px + offset + Vec2(width, line)};
+      const bool clear = std::none_of(placed_boxes.begin(), placed_boxes.end(), [&](const Aabb& b) {
+        return box.lo.x() < b.hi.x() && b.lo.x() < box.hi.x() && box.lo.y() < b.hi.y() &&
+               b.lo.y() < box.hi.y();
+      });
+      if (clear) {
+        chosen = offset;
+        break;
+      }
+    }
+    placed_boxes.push_back({px + chosen, px + chosen + Vec2(width, line)});
+    add(out, Text{at, chosen, name, z.text, palette::kText});
+  };
+  const auto around = [&](double gap, bool above_first, double width) {
+    const Vec2 above_right(gap, -line - gap), below_right(gap, gap),
+        above_left(-gap - width, -line - gap), below_left(-gap - width, gap),
+        far_above(-0.5 * width, -2.0 * line - gap), far_below(-0.5 * width, line + gap);
+    return above_first ? std::vector<Vec2>{above_right, above_left, below_right,
+                                           below_left,  far_above,  far_below}
+                       : std::vector<Vec2>{below_right, below_left, above_right,
+                                           above_left,  far_below,  far_above};
+  };
   for (std::size_t t = 0; t < truth.targets.size(); ++t) {
-    add(out, Text{truth.targets[t].position, Vec2(6.0 * z.u, -line - 4.0 * z.u),
-                  nameOr(model.target_names, t, "T"), z.text, palette::kText});
+    const std::string name = nameOr(model.target_names, t, "T");
+    place(truth.targets[t].position, name, around(6.0 * z.u, true, textWidth(name) * z.text));
   }
   for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
-    add(out, Text{truth.uavs[i].position, Vec2(9.0 * z.u, 5.0 * z.u),
-                  nameOr(model.uav_names, i, "uav"), z.text, palette::kText});
+    const std::string name = nameOr(model.uav_names, i, "uav");
+    place(truth.uavs[i].position, name, around(9.0 * z.u, false, textWidth(name) * z.text));
   }
 }
 
@@ -144,8 +174,7 @@ struct LegendEntry {
   std::vector<Primitive> symbol;  // around (0, 0), px
 };
 
-std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs,
-                                       std::span<const agents::AgentBelief> beliefs, double u) {
+std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs, double u) {
   std::vector<LegendEntry> entries;
   const auto entry = [&entries](std::string label) -> std::vector<Primitive>& {
     entries.push_back({std::move(label), {}});
@@ -165,18 +194,12 @@ std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs
       Marker{o, MarkerShape::dot, 10.0 * u, 0.0, palette::kTarget, palette::kWhite, 1.5 * u});
   std::vector<Primitive>& tree = entry("tree");
   add(tree, Disc{o, 6.0 * u, palette::kTreeFill, palette::kTreeEdge, u});
-  const auto any = [&beliefs](auto has) {
-    return std::any_of(beliefs.begin(), beliefs.end(), has);
-  };
-  if (any([](const agents::AgentBelief& b) { return !b.tracks.empty(); })) {
-    std::vector<Primitive>& estimate = entry("estimate, 2-sigma");
-    add(estimate, Ring{o, 7.0 * u, 1.5 * u, kLegendInk});
-    add(estimate, Marker{o, MarkerShape::cross, 10.0 * u, 0.0, kLegendInk, palette::kWhite, u});
-  }
-  if (any([](const agents::AgentBelief& b) { return !b.trees.empty(); })) {
-    add(entry("occlusion map"), Ring{o, 6.0 * u, 1.2 * u, kLegendInk});
-  }
-  if (any([](const agents::AgentBelief& b) { return !b.planned_path.empty(); })) {
+  // Every entry a run can need, whatever this step holds: the band keeps its height.
+  std::vector<Primitive>& estimate = entry("estimate, 2-sigma");
+  add(estimate, Ring{o, 7.0 * u, 1.5 * u, kLegendInk});
+  add(estimate, Marker{o, MarkerShape::cross, 10.0 * u, 0.0, kLegendInk, palette::kWhite, u});
+  add(entry("occlusion map"), Ring{o, 6.0 * u, 1.2 * u, kLegendInk});
+  if (model.plans) {
     std::vector<Primitive>& plan = entry("plan");
     add(plan, Polyline{{Vec2(-8.0 * u, 0.0), Vec2(8.0 * u, 0.0)}, 1.5 * u, kLegendInk, false});
     add(plan,
@@ -248,7 +271,48 @@ void addTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, co
   add(out, Text{lo + Vec2(pad, pad), Vec2::Zero(), text, z.text, palette::kText});
 }
 
+// A bar of scaleBarLength(map width) metres at the bottom left of the map, above the legend.
+void addScaleBar(const Viewport& v, ImageSize size, double band, const Sizes& z,
+                 std::vector<Primitive>& out) {
+  const double length = scaleBarLength(size.width * v.pixel_size);
+  if (!(length > 0.0)) return;
+  const double px = length / v.pixel_size, pad = 8.0 * z.u, tick = 5.0 * z.u;
+  const double y = size.height - band - pad;
+  const Vec2 left(pad + 4.0 * z.u, y), right = left + Vec2(px, 0.0);
+  const std::string label = scaleBarLabel(length);
+  const double line = kTextLineHeight * z.text;
+  const Vec2 lo(pad, y - line - tick - 6.0 * z.u),
+      hi(std::max(right.x(), left.x() + textWidth(label) * z.text) + 4.0 * z.u, y + 3.0 * z.u);
+  add(out, Polygon{rectangle(lo, hi), palette::kPanel});
+  add(out, Polyline{{left - Vec2(0, tick), left, right, right - Vec2(0, tick)},
+                    2.0 * z.u,
+                    palette::kText,
+                    false});
+  add(out, Text{Vec2(left.x(), y - tick - line - 2.0 * z.u), Vec2::Zero(), label, z.text,
+                palette::kText});
+}
+
 }  // namespace
+
+double scaleBarLength(double width_m) {
+  if (!(width_m > 0.0) || !std::isfinite(width_m)) return 0.0;
+  const double limit = 0.25 * width_m;
+  const double decade = std::pow(10.0, std::floor(std::log10(limit)));
+  for (const double step : {5.0, 2.0, 1.0}) {
+    if (step * decade <= limit * (1.0 + 1e-12)) return step * decade;
+  }
+  return decade;
+}
+
+std::string scaleBarLabel(double length_m) {
+  char text[32];
+  if (length_m >= 1000.0) {
+    std::snprintf(text, sizeof text, "%g km", length_m / 1000.0);
+  } else {
+    std::snprintf(text, sizeof text, "%g m", length_m);
+  }
+  return text;
+}
 
 std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points) {
   if (!P.allFinite() || !centre.allFinite() || points < 3) return {};
@@ -287,7 +351,7 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
   double band = 0.0;
   if (options.legend) {
     std::vector<Primitive> legend;
-    band = addLegend(legendEntries(model, truth.uavs.size(), beliefs, z.u), size, z, legend);
+    band = addLegend(legendEntries(model, model.sensors.size(), z.u), size, z, legend);
     if (band < 0.5 * size.height) {
       scene.overlay = std::move(legend);
     } else {
@@ -296,7 +360,7 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
   }
   // The map fills the image above the band; the band hides whatever the projection puts below.
   const ImageSize map{size.width, std::max(1, size.height - static_cast<int>(std::ceil(band)))};
-  scene.viewport = Viewport::fit(withMargin(model.aoi, options.margin), map);
+  scene.viewport = Viewport::fit(withMargin(model.shown(), options.margin), map);
   scene.viewport.size = size;
 
   // The image is cleared to the ground's colour and only the margins outside the AOI are
@@ -319,7 +383,8 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
   addFootprints(model, truth, z, w);
   addBeliefs(truth, beliefs, z, w);
   addEstimates(beliefs, z, w);
-  addBodies(model, truth, trails, z, options.labels, w);
+  addBodies(model, truth, trails, v, z, options.labels, w);
+  addScaleBar(v, size, band, z, scene.overlay);
   addTimeStamp(model, truth, z, scene.overlay);
   return scene;
 }

@@ -2,8 +2,11 @@
 // buildScene: truth, sensors and the agents' beliefs → a Scene (pure; no GL). What a frame shows,
 // in drawing order: the AOI, tree crowns, every UAV's footprint (its own colour, translucent),
 // the occlusion-map estimates (outlined discs), planned paths, targets' trails, the agents' fused
-// estimates with 2-σ ellipses, the true targets, the UAV bodies with their headings; then a time
-// stamp and a legend band along the bottom.
+// estimates with 2-σ ellipses, the true targets, the UAV bodies with their headings and their
+// names (each placed where it overlaps no name placed before it); then a time stamp, a scale bar
+// and a legend band along the bottom. The view and the legend depend on the model only, so every
+// frame of a run has the same projection.
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -25,6 +28,11 @@ struct SceneModel {
   std::vector<sensing::SensorDef> sensors;  // one per UAV, in the snapshot's order
   std::vector<std::string> uav_names;       // optional; "uav1", "uav2", … when missing
   std::vector<std::string> target_names;    // optional; "T1", "T2", … when missing
+  std::optional<Aabb> view;  // m, the region every frame shows (with the margin); AOI if unset
+  bool plans = false;        // the UAVs plan: the legend has a "plan" entry
+
+  /// The region the frames show: `view`, or the AOI.
+  Aabb shown() const { return view.value_or(aoi); }
 };
 
 struct SceneOptions {
@@ -43,6 +51,13 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
 /// The points of the 2-σ ellipse of a position covariance P (m²) around `centre`: the level set
 /// (p − c)ᵀ P⁻¹ (p − c) = 4, as `points` vertices counter-clockwise. Empty when P is not finite.
 std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points = 36);
+
+/// The length (m) of a scale bar for a map `width_m` wide: the largest 1, 2 or 5 × 10^k at most a
+/// quarter of the width.
+double scaleBarLength(double width_m);
+
+/// "20 m", "500 m", "0.5 m", "2 km" for a scale bar.
+std::string scaleBarLabel(double length_m);
 
 /// The corners of a rectangular footprint, or an empty list for a disc.
 std::vector<Vec2> footprintCorners(const sensing::Footprint& footprint);

@@ -26,7 +26,8 @@ Aabb readAoi(ObjectReader& root) {
     field.fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
   }
   // Box2D holds positions in single precision: beyond 10⁷ m a step is coarser than a metre.
-  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate || aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
+  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate ||
+      aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
     field.fail("expected an AOI within ±1e7 m of the origin (Box2D keeps positions as floats)");
   return aoi;
 }
@@ -76,38 +77,67 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   Json effective = Json::object();
   internal::LoadContext context = internal::loadContextFor(file, options.allowed_roots);
   context.budget_scale = options.budget_scale;
+  context.log = options.field_log;
   ObjectReader root = Field(document, file, "", &effective, &context).object();
 
-  spec.name = root.string("name", fs::path(file).stem().string());
-  spec.description = root.string("description", "");
-  if (options.seed) {
-    spec.seed = *options.seed;
-    effective["seed"] = spec.seed;
-    root.optional("seed");  // accepted, replaced by the command line
-  } else if (auto seed = root.optional("seed")) {
-    spec.seed = seed->unsignedInteger();
+  // Each section is read even when an earlier one failed, so that one pass reports every error
+  // it can; sections that depend on a failed one are skipped (their errors would be echoes).
+  std::vector<ScenarioError> errors;
+  auto attempt = [&errors](auto&& read) {
+    try {
+      read();
+      return true;
+    } catch (const ScenarioErrors& e) {
+      errors.insert(errors.end(), e.errors().begin(), e.errors().end());
+    } catch (const ScenarioError& e) {
+      errors.push_back(e);
+    }
+    return false;
+  };
+  attempt([&] { spec.name = root.string("name", fs::path(file).stem().string()); });
+  attempt([&] { spec.description = root.string("description", ""); });
+  attempt([&] {
+    if (options.seed) {
+      spec.seed = *options.seed;
+      effective["seed"] = spec.seed;
+      root.optional("seed");  // accepted, replaced by the command line
+    } else if (auto seed = root.optional("seed")) {
+      spec.seed = seed->unsignedInteger();
+    } else {
+      effective["seed"] = spec.seed;
+    }
+  });
+  const bool frame_ok =
+      attempt([&] { spec.aoi = readAoi(root); }) & attempt([&] { readClock(root, spec); });
+  if (!frame_ok) throw ScenarioErrors(std::move(errors));  // everything below needs both
+  std::string clutter_label;
+  bool bodies_ok = attempt([&] { clutter_label = internal::readSensing(root, spec); });
+  bodies_ok = attempt([&] { internal::readUavs(root, spec); }) && bodies_ok;
+  std::vector<std::string> target_labels;
+  bodies_ok = attempt([&] { target_labels = internal::readTargets(root, spec); }) && bodies_ok;
+
+  attempt([&] {
+    Json occluders_effective = Json::array();
+    if (auto list = root.optional("occluders")) {
+      std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
+      internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
+    }
+    effective["occluders"] = occluders_effective;
+  });
+  attempt([&] { internal::readTracking(root, spec); });
+  attempt([&] { internal::readFusion(root, spec); });
+  if (bodies_ok) {
+    // Labels, the planner and the analysis name UAVs and targets.
+    resolveLabels(target_labels, clutter_label, spec);
+    attempt([&] { internal::readPlanner(root, spec); });
+    attempt([&] { internal::readAnalysis(root, spec); });
   } else {
-    effective["seed"] = spec.seed;
+    root.optional("planner");  // skipped above, not unknown
+    root.optional("analysis");
   }
-  spec.aoi = readAoi(root);
-  readClock(root, spec);
-  const std::string clutter_label = internal::readSensing(root, spec);
-  internal::readUavs(root, spec);
-  const std::vector<std::string> target_labels = internal::readTargets(root, spec);
-
-  Json occluders_effective = Json::array();
-  if (auto list = root.optional("occluders")) {
-    std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
-    internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
-  }
-  effective["occluders"] = occluders_effective;
-
-  resolveLabels(target_labels, clutter_label, spec);
-  internal::readTracking(root, spec);
-  internal::readFusion(root, spec);
-  internal::readPlanner(root, spec);
-  internal::readAnalysis(root, spec);
-  root.finish();
+  attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
+  if (errors.size() == 1) throw errors[0];
+  if (!errors.empty()) throw ScenarioErrors(std::move(errors));
   checkWork(spec, options.budget_scale);
 
   spec.effective_config = effective.dump(2);
@@ -127,35 +157,54 @@ ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& option
 }
 
 fs::path libraryDir() {
-  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) return dir;
   return fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library";
+}
+
+std::vector<fs::path> scenarioSearchPath() {
+  std::vector<fs::path> dirs;
+  if (const char* list = std::getenv("CANOPY_PATH"); list && *list) {
+    std::string text = list;
+    for (std::size_t start = 0; start <= text.size();) {
+      const std::size_t colon = std::min(text.find(':', start), text.size());
+      if (colon > start) dirs.emplace_back(text.substr(start, colon - start));
+      start = colon + 1;
+    }
+  }
+  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) dirs.emplace_back(dir);
+  dirs.push_back(libraryDir());
+  return dirs;
 }
 
 std::vector<std::string> libraryScenarios() {
   std::vector<std::string> names;
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(libraryDir(), error)) {
-    if (entry.is_regular_file() && entry.path().extension() == ".json") {
-      names.push_back(entry.path().stem().string());
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const auto& entry : fs::directory_iterator(dir, error)) {
+      if (entry.is_regular_file() && entry.path().extension() == ".json") {
+        names.push_back(entry.path().stem().string());
+      }
     }
   }
   std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
   return names;
 }
 
 fs::path resolveScenario(const std::string& scenario) {
   std::error_code error;
   if (fs::is_regular_file(scenario, error)) return scenario;
-  for (const fs::path& candidate : {libraryDir() / scenario, libraryDir() / (scenario + ".json")}) {
-    if (fs::is_regular_file(candidate, error)) return candidate;
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const fs::path& candidate : {dir / scenario, dir / (scenario + ".json")}) {
+      if (fs::is_regular_file(candidate, error)) return candidate;
+    }
   }
   if (fs::exists(scenario, error)) {
     throw ScenarioError(printable(scenario, 200), "",
                         "not a regular file (expected a scenario JSON file or a built-in name)");
   }
   throw ScenarioError(printable(scenario, 200), "",
-                      "no such scenario file, and no built-in scenario of that name "
-                      "(see `canopy list`)");
+                      "no such scenario file, and no scenario of that name in $CANOPY_PATH or "
+                      "the built-in library (see `canopy list`)");
 }
 
 std::vector<world::TreeDef> loadLayout(const std::string& path) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scenarios/field_log.h"
 #include "scenarios/spec.h"
 
 namespace canopy::scenarios {
@@ -19,6 +20,8 @@ struct LoadOptions {
   std::vector<std::filesystem::path> allowed_roots;
   /// Multiplies every work limit of scenarios/budget.h (`--budget K`); 1 keeps the defaults.
   double budget_scale = 1.0;
+  /// When set, every field the loader reads is recorded here (scenarios/field_log.h).
+  FieldLog* field_log = nullptr;
 };
 
 /// scenario: a path to a file, or the name of a file in the scenario library (with or without
@@ -29,12 +32,15 @@ ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& option
 ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
                               const LoadOptions& options = {});
 
-/// The directory of built-in scenarios: $CANOPY_LIBRARY_DIR, or scenarios/library in the source
-/// tree canopy was built from.
+/// The directory of built-in scenarios: scenarios/library in the source tree canopy was built from.
 std::filesystem::path libraryDir();
-/// Names of the built-in scenarios, sorted.
+/// Where scenario names are looked up, in order: each folder of $CANOPY_PATH (':'-separated),
+/// then $CANOPY_LIBRARY_DIR if set, then the built-in library.
+std::vector<std::filesystem::path> scenarioSearchPath();
+/// Names of the scenarios in every folder of the search path, sorted, each once.
 std::vector<std::string> libraryScenarios();
-/// A path for `scenario` (existing file, or library name); a ScenarioError when neither exists.
+/// A path for `scenario`: an existing file, or NAME / NAME.json in the first folder of the search
+/// path that has it; a ScenarioError when none does.
 std::filesystem::path resolveScenario(const std::string& scenario);
 
 /// The occluders a layout file describes (the same grammar as a scenario's "occluders" list),

@@ -9,6 +9,7 @@
 #include "core/random.h"
 #include "core/text_file.h"
 #include "scenarios/recorder.h"
+#include "scenarios/version.h"
 #include "scenarios/simulation.h"
 #include "scenarios/summary.h"
 
@@ -20,7 +21,8 @@ std::string manifestJson(const ScenarioSpec& spec, const std::string& command_li
   std::snprintf(hash, sizeof hash, "%016llx",
                 static_cast<unsigned long long>(fnv1a64(spec.effective_config)));
   Json manifest;
-  manifest["canopy_version"] = CANOPY_VERSION;
+  manifest["canopy_version"] = kVersion;
+  manifest["git_commit"] = kGitCommit;
   manifest["scenario"] = spec.name;
   manifest["scenario_file"] = spec.file.string();
   manifest["config_hash_fnv1a64"] = hash;

@@ -10,6 +10,7 @@ SummaryBuilder::SummaryBuilder(const ScenarioSpec& spec)
       targets_(spec.targets.size()),
       uavs_(spec.uavs.size()),
       ospa_(spec.uavs.size()),
+      gospa_(spec.uavs.size()),
       plan_seconds_(spec.uavs.size()) {
   for (const TargetSpec& target : spec.targets) {
     names_.targets.push_back(target.name);
@@ -65,6 +66,7 @@ void SummaryBuilder::onStep(const StepRecord& record) {
       estimates_.push_back(track.belief.x.head<2>());
     }
     ospa_[i].push_back(ospa_metric_(truth_positions_, estimates_));
+    gospa_[i].push_back(gospa_metric_(truth_positions_, estimates_));
   }
   if (record.plan) {
     for (const auto& report : record.plan->reports)
@@ -98,7 +100,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   }
   summary["targets"] = targets;
   Json uavs = Json::array();
-  double ospa_sum = 0.0;
+  double ospa_sum = 0.0, gospa_sum = 0.0;
   Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
     Json uav = {{"name", names_.uavs[i]},
@@ -106,7 +108,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                 {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
                 {"observations", uavs_[i].observations},
                 {"ospa_mean_m", mean(ospa_[i])},
-                {"ospa_m", ospa_[i]}};
+                {"ospa_m", ospa_[i]},
+                {"gospa_mean_m", mean(gospa_[i])},
+                {"gospa_m", gospa_[i]}};
     if (i < counts_at_end_.size()) {
       const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;
@@ -119,6 +123,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
     }
     uavs.push_back(std::move(uav));
     ospa_sum += mean(ospa_[i]);
+    gospa_sum += mean(gospa_[i]);
     if (!plan_seconds_[i].empty()) {
       plan_timing.push_back(
           {{"name", names_.uavs[i]},
@@ -134,7 +139,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
        targets_.empty() ? 0.0 : visible_sum / static_cast<double>(targets_.size())},
       {"ospa_mean_m", uavs_.empty() ? 0.0 : ospa_sum / static_cast<double>(uavs_.size())},
       {"ospa_cutoff_m", 50.0},
-      {"ospa_order", 2}};
+      {"ospa_order", 2},
+      {"gospa_mean_m", uavs_.empty() ? 0.0 : gospa_sum / static_cast<double>(uavs_.size())},
+      {"gospa_alpha", 2}};
   if (steps_ > 0) {
     const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
     summary["fusion_diagnostics"] = {{"messages", d.messages},

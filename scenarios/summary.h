@@ -6,6 +6,7 @@
 
 #include "agents/fusion/fusion_diagnostics.h"
 #include "agents/planning/intention_links.h"
+#include "scenarios/gospa.h"
 #include "scenarios/ospa.h"
 #include "scenarios/spec.h"
 #include "scenarios/step_observer.h"
@@ -55,9 +56,11 @@ class SummaryBuilder final : public StepObserver {
   std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
   Ospa ospa_metric_{50.0, 2.0};
   std::vector<std::vector<double>> ospa_;          // [agent][k], m
+  Gospa gospa_metric_{50.0, 2.0};                  // same cut-off and order, α = 2
+  std::vector<std::vector<double>> gospa_;         // [agent][k], m
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
-  std::vector<AgentCounts> counts_at_end_;  // the last step's; empty until a step was added
+  std::vector<AgentCounts> counts_at_end_;         // the last step's; empty until a step was added
   agents::fusion::FusionDiagnostics fusion_at_end_;
   agents::planning::MessageCounts intentions_at_end_;
   int steps_ = 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/internal/font.h"
 #include "render/internal/text.h"
 
 namespace canopy::render::internal {
@@ -205,7 +206,7 @@ void primitives(const std::vector<Primitive>& list, const Transform& t, Builder&
       b.polyline(points, l->width_px, l->closed, l->colour);
     } else if (const auto* m = std::get_if<Marker>(&primitive)) {
       marker(b, *m, t.point(m->at));
-    } else if (const auto* x = std::get_if<Text>(&primitive)) {
+    } else if (const auto* x = std::get_if<Text>(&primitive); x && !Font::instance()) {
       b.text(t.point(x->at) + x->offset_px, x->text, x->scale, x->colour);
     }
   }

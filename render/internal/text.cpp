@@ -4,6 +4,8 @@
 
 #include <cstring>
 
+#include "render/internal/font.h"
+
 namespace canopy::render::internal {
 namespace {
 
@@ -26,6 +28,7 @@ static_assert(sizeof(FontVertex) == 16);
 }  // namespace
 
 double textWidth(const std::string& text) {
+  if (const Font* font = Font::instance()) return font->advance(text);
   std::string s = printable(text);
   return stb_easy_font_width(s.data());
 }

@@ -38,6 +38,28 @@ const char* boundText(Bound bound) {
   return "a number";
 }
 
+const char* rangeText(Bound bound) {
+  switch (bound) {
+    case Bound::any:
+      return "";
+    case Bound::positive:
+      return "> 0";
+    case Bound::non_negative:
+      return ">= 0";
+    case Bound::probability:
+      return "[0, 1]";
+    case Bound::open_probability:
+      return "(0, 1)";
+    case Bound::unit_interval:
+      return "(0, 1]";
+  }
+  return "";
+}
+
+std::string intRange(int min_value, int max_value) {
+  return "[" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
+}
+
 bool satisfies(double x, Bound bound) {
   switch (bound) {
     case Bound::any:
@@ -123,9 +145,9 @@ Json readJsonFile(const std::string& path, const std::string& referenced_from) {
   const std::optional<std::string> text =
       error ? std::nullopt : readRegularFile(canonical, kMaxJsonBytes, why);
   if (!text) {
-    throw ScenarioError(referenced_from.empty() ? printable(path, 200) : referenced_from, "",
-                        "cannot read file '" + printable(path, 200) + "'" +
-                            (why.empty() ? "" : ": " + why));
+    throw ScenarioError(
+        referenced_from.empty() ? printable(path, 200) : referenced_from, "",
+        "cannot read file '" + printable(path, 200) + "'" + (why.empty() ? "" : ": " + why));
   }
   return parseJson(*text, path);
 }
@@ -154,7 +176,24 @@ void Field::fail(const std::string& message) const {
   throw ScenarioError(file_, path_, message);
 }
 
+void Field::note(const std::string& type, const std::string& range,
+                 const std::vector<std::string>& choices) const {
+  if (!context_ || !context_->log) return;
+  FieldInfo& info = (*context_->log)[fieldPattern(path_)];
+  info.path = fieldPattern(path_);
+  // A field that takes several forms (a radius or a [min, max] range) lists each: "number | array".
+  if (info.type.empty()) {
+    info.type = type;
+  } else if (("| " + info.type + " |").find("| " + type + " |") == std::string::npos) {
+    info.type += " | " + type;
+  }
+  if (!range.empty() && !info.range.empty() && info.range != range) info.range_varies = true;
+  if (!range.empty()) info.range = range;
+  if (!choices.empty()) info.choices = choices;
+}
+
 double Field::number(Bound bound) const {
+  note("number", rangeText(bound));
   if (!value_->is_number())
     fail(std::string("expected ") + boundText(bound) + ", got " + describe(*value_));
   const double x = value_->get<double>();
@@ -167,6 +206,7 @@ double Field::number(Bound bound) const {
 }
 
 int Field::integer(int min_value, int max_value) const {
+  note("integer", intRange(min_value, max_value));
   const std::string expected =
       "an integer in [" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
   if (!value_->is_number_integer()) fail("expected " + expected + ", got " + describe(*value_));
@@ -181,6 +221,7 @@ int Field::integer(int min_value, int max_value) const {
 }
 
 std::uint64_t Field::unsignedInteger() const {
+  note("integer", ">= 0");
   if (!value_->is_number_unsigned()) {
     fail("expected a non-negative integer, got " + describe(*value_));
   }
@@ -190,18 +231,21 @@ std::uint64_t Field::unsignedInteger() const {
 }
 
 bool Field::boolean() const {
+  note("boolean", "");
   if (!value_->is_boolean()) fail("expected true or false, got " + describe(*value_));
   if (out_) *out_ = value_->get<bool>();
   return value_->get<bool>();
 }
 
 std::string Field::string() const {
+  note("string", "");
   if (!value_->is_string()) fail("expected a string, got " + describe(*value_));
   if (out_) *out_ = *value_;
   return value_->get<std::string>();
 }
 
 int Field::choice(const std::vector<std::string>& choices) const {
+  note("string", "", choices);
   std::string options;
   for (const std::string& c : choices) options += (options.empty() ? "\"" : ", \"") + c + "\"";
   if (value_->is_string()) {
@@ -232,6 +276,12 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
     expected = "an array of at least " + std::to_string(min_size) + " element" +
                (min_size == 1 ? "" : "s");
   }
+  note("array", min_size == 0 && max_size == SIZE_MAX
+                    ? ""
+                    : (max_size == SIZE_MAX   ? std::to_string(min_size) + "+ elements"
+                       : min_size == max_size ? std::to_string(min_size) + " elements"
+                                              : std::to_string(min_size) + " to " +
+                                                    std::to_string(max_size) + " elements"));
   if (!value_->is_array()) fail("expected " + expected + ", got " + describe(*value_));
   const std::size_t n = value_->size();
   if (n < min_size || n > max_size) {
@@ -259,6 +309,7 @@ void Field::keepAsIs() const {
 }
 
 ObjectReader::ObjectReader(const Field& field) : field_(field) {
+  field.note("object", "");
   if (!field.json().is_object()) field.fail("expected an object, got " + describe(field.json()));
   if (field_.out() && !field_.out()->is_object()) *field_.out() = Json::object();
 }
@@ -268,7 +319,14 @@ bool ObjectReader::has(const std::string& key) const {
 }
 
 Field ObjectReader::required(const std::string& key) {
-  if (auto f = optional(key)) return *f;
+  if (auto f = optional(key)) {
+    if (field_.context() && field_.context()->log) {
+      FieldInfo& info = (*field_.context()->log)[fieldPattern(f->path())];
+      info.path = fieldPattern(f->path());
+      info.required = !info.default_json;
+    }
+    return *f;
+  }
   throw ScenarioError(field_.file(), joinPath(field_.path(), key), "missing required field");
 }
 
@@ -280,38 +338,58 @@ std::optional<Field> ObjectReader::optional(const std::string& key) {
                field_.context());
 }
 
-void ObjectReader::recordDefault(const std::string& key, const Json& value) {
+void ObjectReader::logDefault(const std::string& key, const Json& value) {
+  if (!field_.context() || !field_.context()->log) return;
+  const std::string path = fieldPattern(joinPath(field_.path(), key));
+  FieldInfo& info = (*field_.context()->log)[path];
+  info.path = path;
+  if (info.default_json && *info.default_json != value.dump()) info.default_varies = true;
+  info.default_json = value.dump();
+  info.required = false;
+}
+
+void ObjectReader::recordDefault(const std::string& key, const Json& value, const std::string& type,
+                                 const std::string& range,
+                                 const std::vector<std::string>& choices) {
   if (field_.out()) (*field_.out())[key] = value;
+  logDefault(key, value);
+  Field(value, field_.file(), joinPath(field_.path(), key), nullptr, field_.context())
+      .note(type, range, choices);
 }
 
 double ObjectReader::number(const std::string& key, double fallback, Bound bound) {
+  logDefault(key, fallback);
   if (auto f = optional(key)) return f->number(bound);
-  recordDefault(key, fallback);
+  recordDefault(key, fallback, "number", rangeText(bound));
   return fallback;
 }
 
 int ObjectReader::integer(const std::string& key, int fallback, int min_value, int max_value) {
+  logDefault(key, fallback);
   if (auto f = optional(key)) return f->integer(min_value, max_value);
-  recordDefault(key, fallback);
+  recordDefault(key, fallback, "integer", intRange(min_value, max_value));
   return fallback;
 }
 
 bool ObjectReader::boolean(const std::string& key, bool fallback) {
+  logDefault(key, fallback);
   if (auto f = optional(key)) return f->boolean();
-  recordDefault(key, fallback);
+  recordDefault(key, fallback, "boolean", "");
   return fallback;
 }
 
 std::string ObjectReader::string(const std::string& key, const std::string& fallback) {
+  logDefault(key, fallback);
   if (auto f = optional(key)) return f->string();
-  recordDefault(key, fallback);
+  recordDefault(key, fallback, "string", "");
   return fallback;
 }
 
 int ObjectReader::choice(const std::string& key, const std::vector<std::string>& choices,
                          int fallback) {
+  logDefault(key, choices[fallback]);
   if (auto f = optional(key)) return f->choice(choices);
-  recordDefault(key, choices[fallback]);
+  recordDefault(key, choices[fallback], "string", "", choices);
   return fallback;
 }
 
@@ -341,3 +419,17 @@ void ObjectReader::finish() const {
 }
 
 }  // namespace canopy::scenarios::internal
+
+namespace canopy::scenarios {
+
+std::string fieldPattern(const std::string& path) {
+  std::string out;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    out += path[i];
+    if (path[i] != '[') continue;
+    while (i + 1 < path.size() && path[i + 1] >= '0' && path[i + 1] <= '9') ++i;
+  }
+  return out;
+}
+
+}  // namespace canopy::scenarios

@@ -13,13 +13,14 @@
 #include "core/enum_names.h"
 #include "core/types.h"
 #include "scenarios/error.h"
+#include "scenarios/field_log.h"
 
 namespace canopy::scenarios::internal {
 
 // std::map-backed: slots of the effective config keep their address while siblings are added.
 using Json = nlohmann::json;
 
-constexpr int kMaxJsonDepth = 64;                         // nested arrays and objects
+constexpr int kMaxJsonDepth = 64;                             // nested arrays and objects
 constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
 
 /// Thrown by parseBoundedJson for input nested deeper than kMaxJsonDepth.
@@ -39,7 +40,8 @@ struct JsonDuplicateKey : std::invalid_argument {
 /// in one object: JsonDuplicateKey; the library's own exceptions for anything else.
 Json parseBoundedJson(const std::string& text);
 
-/// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError naming file:line:column.
+/// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError
+/// naming file:line:column.
 Json parseJson(const std::string& text, const std::string& file);
 /// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
 Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
@@ -58,6 +60,7 @@ class ObjectReader;
 struct LoadContext {
   std::vector<std::filesystem::path> roots;
   double budget_scale = 1.0;
+  FieldLog* log = nullptr;  // records every read (scenarios/field_log.h) when set
 };
 
 /// A value at a known place: its file, its field path, and the slot of the effective config it
@@ -78,6 +81,9 @@ class Field {
   Json* out() const { return out_; }  // this value's slot in the effective config (may be null)
   const LoadContext* context() const { return context_; }  // null: no file may be read through it
   [[noreturn]] void fail(const std::string& message) const;
+  /// Records this field's type and range in the context's log (no-op without one).
+  void note(const std::string& type, const std::string& range,
+            const std::vector<std::string>& choices = {}) const;
 
   double number(Bound bound = Bound::any) const;
   int integer(int min_value, int max_value) const;
@@ -137,8 +143,11 @@ class ObjectReader {
   void finish() const;
 
  private:
-  /// Records a default in the effective config for a member that was absent.
-  void recordDefault(const std::string& key, const Json& value);
+  /// Records a default in the effective config for a member that was absent, and in the log.
+  void recordDefault(const std::string& key, const Json& value, const std::string& type,
+                     const std::string& range, const std::vector<std::string>& choices = {});
+  /// Logs that `key` may be absent with `value` as its default.
+  void logDefault(const std::string& key, const Json& value);
 
   Field field_;
   std::set<std::string> read_;

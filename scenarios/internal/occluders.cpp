@@ -165,7 +165,8 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
                    Json& effective, std::vector<std::string>& include_stack) {
   for (const Field& element : list.elements()) {
     Json element_out = Json::object();
-    const Field item(element.json(), element.file(), element.path(), &element_out, element.context());
+    const Field item(element.json(), element.file(), element.path(), &element_out,
+                     element.context());
     ObjectReader reader = item.object();
     if (reader.has("include")) {
       const Field name_field = reader.required("include");
@@ -190,8 +191,11 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
         }
         const Json& inner = wrapped ? document.at("occluders") : document;
         include_stack.push_back(canonical);
+        // The included file's fields are those of the including list: not logged twice.
+        LoadContext quiet = name_field.context() ? *name_field.context() : LoadContext{};
+        quiet.log = nullptr;
         readOccluders(Field(inner, file.path.string(), wrapped ? "occluders" : "", nullptr,
-                            name_field.context()),
+                            name_field.context() ? &quiet : nullptr),
                       aoi, trees, effective, include_stack);
         include_stack.pop_back();
       } catch (const ScenarioError& e) {

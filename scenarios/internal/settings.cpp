@@ -13,7 +13,7 @@ ObjectReader section(ObjectReader& root, const std::string& key) {
   static const Json kEmpty = Json::object();
   if (auto field = root.optional(key)) return field->object();
   Json* slot = &(*root.field().out())[key];
-  return Field(kEmpty, root.field().file(), key, slot).object();
+  return Field(kEmpty, root.field().file(), key, slot, root.field().context()).object();
 }
 
 void readPso(ObjectReader& planner, agents::PsoConfig& pso) {

@@ -10,6 +10,7 @@
 
 #include "core/random.h"
 #include "render/image.h"
+#include "render/internal/font.h"
 #include "render/internal/text.h"
 
 namespace canopy::render {
@@ -102,6 +103,35 @@ TEST(Canvas, TextDrawsInsideItsBoxOnly) {
   }
   EXPECT_GT(inside, 20);
   EXPECT_EQ(outside, 0);
+}
+
+// With fonts-dejavu-core installed (./canopy installs it) text is DejaVu Sans through FreeType:
+// anti-aliased (some pixels between ink and paper), and "1" is not drawn like "I" (the stroke
+// font drew "UAV1" as "UAVI").
+TEST(Canvas, TextIsDejaVuThroughFreeType) {
+  ASSERT_NE(internal::Font::instance(), nullptr) << internal::kFontPath;
+  const auto render = [](const std::string& text) {
+    Scene scene = square();
+    add(scene.overlay, Text{Vec2(10, 10), Vec2::Zero(), text, 4.0, Rgba{0, 0, 0, 255}});
+    return Canvas({100, 100}).draw(scene);
+  };
+  const Image one = render("1"), eye = render("I");
+  EXPECT_NE(one.rgb, eye.rgb);
+  const Rgba paper = one.pixel(95, 95);
+  int ink = 0, between = 0;
+  for (int y = 0; y < 100; ++y) {
+    for (int x = 0; x < 100; ++x) {
+      const Rgba p = one.pixel(x, y);
+      if (p == Rgba{0, 0, 0, 255}) ++ink;
+      if (!(p == paper) && !(p == Rgba{0, 0, 0, 255})) ++between;
+    }
+  }
+  EXPECT_GT(ink, 10);
+  EXPECT_GT(between, 4);
+  // Widths are the font's advances: additive without kerning.
+  EXPECT_NEAR(internal::textWidth("UAV1"), internal::textWidth("UAV") + internal::textWidth("1"),
+              1e-9);
+  EXPECT_NE(internal::textWidth("W"), internal::textWidth("i"));  // proportional
 }
 
 TEST(Canvas, SameSceneGivesTheSameBytes) {

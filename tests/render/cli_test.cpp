@@ -77,13 +77,32 @@ TEST_F(CanopyCli, BadFrameOptionsAreUsageErrors) {
   EXPECT_FALSE(fs::exists(dir_ / "bad"));  // rejected before anything ran
 }
 
-TEST_F(CanopyCli, VideoIsSkippedPlainlyWithoutFfmpeg) {
+TEST_F(CanopyCli, AVideoThatCannotBeMadeFailsNamingThePackage) {
   const Outcome o =
       canopy("run demo --out " + run("v") + " --video --frame-every 75", "PATH=/nonexistent");
-  ASSERT_EQ(o.code, 0) << o.err;
-  EXPECT_NE(o.out.find("video skipped: ffmpeg is not on PATH"), std::string::npos) << o.out;
-  EXPECT_TRUE(fs::exists(dir_ / "v" / "frames" / "frame_000150.png"));
-  EXPECT_FALSE(fs::exists(dir_ / "v" / "frames.mp4"));
+  EXPECT_EQ(o.code, 1) << o.err;
+  EXPECT_NE(o.err.find("ffmpeg is not on PATH; install the Debian package ffmpeg"),
+            std::string::npos)
+      << o.err;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  EXPECT_FALSE(fs::exists(dir_ / "v"));  // known before anything ran
+  EXPECT_EQ(canopy("run demo --out " + run("f") + " --frames --fps 10").code, 2);  // needs --video
+  EXPECT_EQ(canopy("run demo --out " + run("f") + " --video --fps 0").code, 2);
+}
+
+TEST_F(CanopyCli, FramesTakeAViewForTheWholeRun) {
+  for (const char* view : {"aoi", "action", "-10,-10,10,10"}) {
+    const Outcome o = canopy("run demo --set clock.duration=1 --out " + run("view") +
+                             " --frames --frame-every 5 --size 200x100 --view " + view);
+    EXPECT_EQ(o.code, 0) << view << o.err;
+  }
+  for (const char* view : {"nowhere", "1,2,3", "5,0,1,10", "--frames"}) {
+    const Outcome o = canopy("run demo --out " + run("bad") + " --frames --view " + view);
+    EXPECT_EQ(o.code, 2) << view;
+    EXPECT_NE(o.err.find("--view"), std::string::npos) << view << o.err;
+  }
+  EXPECT_EQ(canopy("run demo --out " + run("bad") + " --view aoi").code, 2);  // needs --frames
+  EXPECT_FALSE(fs::exists(dir_ / "bad"));
 }
 
 TEST_F(CanopyCli, NoGlContextWithoutFrames) {
@@ -111,10 +130,63 @@ TEST_F(CanopyCli, CoverageReproducesTheGoldenFiles) {
         0);
     const std::string size = std::to_string(c.at("size")[0].get<int>()) + "x" +
                              std::to_string(c.at("size")[1].get<int>());
-    const Outcome o = canopy("coverage " + run(name) + " --size " + size);
-    ASSERT_EQ(o.code, 0) << o.err;
-    EXPECT_EQ(compareCoverageCsv(readFile((golden / (name + ".csv")).string()), o.out), "") << name;
+    const Outcome printed = canopy("coverage " + run(name) + " --size " + size);
+    ASSERT_EQ(printed.code, 0) << printed.err;
+    EXPECT_EQ(compareCoverageCsv(readFile((golden / (name + ".csv")).string()), printed.out), "")
+        << name;
+    const Outcome checked = canopy("coverage " + run(name) + " --size " + size + " --check '" +
+                                   (golden / (name + ".csv")).string() + "'");
+    EXPECT_EQ(checked.code, 0) << checked.out << checked.err;
+    EXPECT_NE(checked.out.find("coverage matches"), std::string::npos) << checked.out;
   }
+}
+
+// The user's recipe: pin a run's coverage, then catch a change. The golden is edited by hand so
+// that the expected outcome is known: step 3's covered_px moved by 200 px of a 153 600 px AOI
+// (0.13 %) fails at the default tolerance 0.001 (153.6 px) and passes at 0.002 (307.2 px).
+TEST_F(CanopyCli, CoverageCheckCatchesAChangeAndNamesTheRow) {
+  ASSERT_EQ(canopy("run demo --set clock.duration=2 --out " + run("r")).code, 0);
+  const Outcome pinned = canopy("coverage " + run("r") + " --size 480x320");
+  ASSERT_EQ(pinned.code, 0) << pinned.err;
+  std::ofstream(dir_ / "golden.csv") << pinned.out;
+  EXPECT_EQ(canopy("coverage " + run("r") + " --size 480x320 --check " + run("golden.csv")).code,
+            0);
+
+  auto rows = canopy::render::testing::parseCsv(pinned.out);
+  ASSERT_GT(rows.size(), 5u);
+  ASSERT_EQ(rows[0][2], "covered_px");
+  ASSERT_EQ(rows[4][0], "3");
+  rows[4][2] = std::to_string(std::atol(rows[4][2].c_str()) + 200);
+  std::string edited;
+  for (const auto& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) edited += (c ? "," : "") + row[c];
+    edited += "\n";
+  }
+  std::ofstream(dir_ / "edited.csv") << edited;
+  const Outcome caught =
+      canopy("coverage " + run("r") + " --size 480x320 --check " + run("edited.csv"));
+  EXPECT_EQ(caught.code, 1) << caught.err;
+  EXPECT_NE(caught.out.find("1 of 11 rows outside tolerance 0.001"), std::string::npos)
+      << caught.out;
+  EXPECT_NE(caught.out.find("line 5 (step 3): covered_px expected " + rows[4][2]),
+            std::string::npos)
+      << caught.out;
+  EXPECT_EQ(canopy("coverage " + run("r") + " --size 480x320 --tolerance 0.002 --check " +
+                   run("edited.csv"))
+                .code,
+            0);
+
+  // Bad input is exit code 2 naming the file.
+  std::ofstream(dir_ / "junk.csv") << "hello,world\n";
+  const Outcome junk = canopy("coverage " + run("r") + " --check " + run("junk.csv"));
+  EXPECT_EQ(junk.code, 2);
+  EXPECT_NE(junk.err.find("junk.csv: line 1: expected the header"), std::string::npos) << junk.err;
+  const Outcome missing = canopy("coverage " + run("r") + " --check " + run("none.csv"));
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("none.csv: missing"), std::string::npos) << missing.err;
+  EXPECT_EQ(canopy("coverage " + run("r") + " --tolerance 0.1").code, 2);
+  EXPECT_EQ(
+      canopy("coverage " + run("r") + " --check " + run("golden.csv") + " --tolerance -1").code, 2);
 }
 
 TEST_F(CanopyCli, CoverageOfABadRunDirectoryIsAClearError) {

@@ -139,13 +139,56 @@ TEST(Coverage, FinerMasksAreCloser) {
 TEST(Coverage, CsvRowsFollowTheHeader) {
   const std::vector<std::string> names = {"T1", "T2"};
   EXPECT_EQ(coverageCsvHeader(names),
-            "step,t,covered_px,multi_px,aoi_px,covered_fraction,covered_T1,covered_T2");
+            "step,t,covered_px,visible_px,multi_px,aoi_px,covered_fraction,visible_fraction,"
+            "covered_T1,covered_T2,visible_T1,visible_T2");
   CoverageCounts c;
   c.covered_px = 250;
+  c.visible_px = 200;
   c.multi_px = 10;
   c.aoi_px = 1000;
-  c.target_covered = {1, 0};
-  EXPECT_EQ(coverageCsvRow(12, 2.4, c), "12,2.4,250,10,1000,0.250000,1,0");
+  c.target_covered = {1, 1};
+  c.target_visible = {0, 1};
+  EXPECT_EQ(coverageCsvRow(12, 2.4, c), "12,2.4,250,200,10,1000,0.250000,0.200000,1,1,0,1");
+}
+
+// A 20 × 14 m footprint centred on its UAV's ground point (50, 40), a crown of radius 3 m at the
+// centre: looking down, the visible area is the footprint minus the crown, 280 − 9π m².
+TEST(Coverage, VisibleIsTheFootprintMinusTheCrowns) {
+  CoverageCounter counter(kAoi, kMask, {world::TreeDef::disc(Vec2(50, 40), 3.0)});
+  const Footprint f = rectangle(Vec2(50, 40), 20, 14, 0.0);
+  const std::vector<Vec2> targets = {Vec2(50, 40), Vec2(44, 40), Vec2(59, 40)};
+  const CoverageCounts c = counter.count(std::span(&f, 1), targets);
+  const double a = counter.viewport().pixel_size, a2 = counter.pixelArea();
+  EXPECT_NEAR(static_cast<double>(c.covered_px) * a2, 280.0, 68.0 * a + 4 * a2);
+  EXPECT_NEAR(static_cast<double>(c.visible_px) * a2, 280.0 - 9.0 * kPi,
+              (68.0 + 6.0 * kPi) * a + 8 * a2);
+  EXPECT_EQ(c.target_covered, (std::vector<std::uint8_t>{1, 1, 1}));
+  EXPECT_EQ(c.target_visible, (std::vector<std::uint8_t>{0, 1, 1}));
+}
+
+// Line of sight from the ground point A = (50, 40) past a crown of radius r = 2 at distance
+// D = 5 (centre (55, 40)): the hidden region is the cone tangent to the crown, cut at the
+// footprint's edge x = 60 (d = 10), less the part in front of the crown. With sin α = r/D,
+// the cone's triangle is d² tan α; the kite A–T1–C–T2 (tangent points T) is L·r with
+// L = √(D² − r²), and the crown's sector inside the kite r²·acos(r/D). Hidden:
+// d² tan α − (L r − r² acos(r/D)) = 200/√21 − 2√21 + 4 acos 0.4 ≈ 39.12 m².
+TEST(Coverage, LineOfSightShadowsAreNotVisible) {
+  CoverageCounter counter(kAoi, kMask, {world::TreeDef::disc(Vec2(55, 40), 2.0)});
+  const Footprint f = rectangle(Vec2(50, 40), 20, 14, 0.0);
+  const std::vector<Vec2> targets = {Vec2(44, 40), Vec2(59, 40), Vec2(59, 46)};
+  const CoverageCounts c =
+      counter.count(std::span(&f, 1), targets, sensing::OcclusionModel::line_of_sight);
+  const double hidden = 200.0 / std::sqrt(21.0) - 2.0 * std::sqrt(21.0) + 4.0 * std::acos(0.4);
+  const double a = counter.viewport().pixel_size, a2 = counter.pixelArea();
+  // Boundary of the hidden region: two rays of 10/cos α and the near arc (< 2πr).
+  const double boundary = 68.0 + 2.0 * 10.0 / std::cos(std::asin(0.4)) + 4.0 * kPi;
+  EXPECT_NEAR(static_cast<double>(c.visible_px) * a2, 280.0 - hidden, boundary * a + 8 * a2);
+  EXPECT_EQ(c.target_visible, (std::vector<std::uint8_t>{1, 0, 1}));
+  // Under the canopy model the same crown hides only itself.
+  const CoverageCounts down = counter.count(std::span(&f, 1), targets);
+  EXPECT_NEAR(static_cast<double>(down.visible_px) * a2, 280.0 - 4.0 * kPi,
+              (68.0 + 4.0 * kPi) * a + 8 * a2);
+  EXPECT_EQ(down.target_visible, (std::vector<std::uint8_t>{1, 1, 1}));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "app/run_coverage.h"
 #include "render/coverage.h"
 #include "render/frame_writer.h"
 #include "scenarios/loader.h"
@@ -42,39 +43,21 @@ std::vector<Case> cases() {
   return out;
 }
 
-// Rendered coverage as an observer of a run: one CSV row per step, from the record's footprints
-// and true target positions.
-class CoverageRows final : public scenarios::StepObserver {
- public:
-  CoverageRows(const Aabb& aoi, ImageSize size) : counter_(aoi, size) {}
-  void onStep(const scenarios::StepRecord& record) override {
-    footprints_.clear();
-    for (const scenarios::UavRecord& uav : record.uavs) footprints_.push_back(uav.footprint);
-    targets_.clear();
-    for (const scenarios::TargetRecord& target : record.targets)
-      targets_.push_back(target.position);
-    csv += coverageCsvRow(record.step, record.time, counter_.count(footprints_, targets_)) + "\n";
-  }
-  std::string csv;
-
- private:
-  CoverageCounter counter_;
-  std::vector<sensing::Footprint> footprints_;
-  std::vector<Vec2> targets_;
-};
-
-// The rendered coverage of every step of the run, as `canopy coverage` prints it.
+// The rendered coverage of every step of the run, as `canopy coverage` prints it: the run is
+// written to a temporary folder and read back by the command's own code.
 std::string coverageCsv(const Case& c) {
   scenarios::LoadOptions load;
   load.overrides = c.overrides;
   const scenarios::ScenarioSpec spec = scenarios::loadScenario(c.scenario, load);
-  std::vector<std::string> names;
-  for (const scenarios::TargetSpec& target : spec.targets) names.push_back(target.name);
-  CoverageRows rows(spec.aoi, c.size);
-  scenarios::Simulation sim(spec);
-  scenarios::StepObserver* const observers[] = {&rows};
-  scenarios::runToEnd(sim, observers);
-  return coverageCsvHeader(names) + "\n" + rows.csv;
+  const fs::path dir =
+      fs::temp_directory_path() / ("canopy_golden_" + c.name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  scenarios::RunOptions options;
+  options.out_dir = dir;
+  scenarios::runScenario(spec, options);
+  std::string csv = app::coverageCsvOfRun(dir, c.size);
+  fs::remove_all(dir);
+  return csv;
 }
 
 TEST(CoverageGolden, BuiltInScenariosMatchTheirGoldenFiles) {

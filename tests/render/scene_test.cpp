@@ -207,14 +207,72 @@ TEST(BuildScene, FitsTheAoiAboveTheLegendWithItsAspect) {
   EXPECT_LT(lo.y(), band_top);
 }
 
-TEST(BuildScene, WithoutBeliefsHasNoBeliefLegend) {
+// The legend and the projection depend on the model only: a step before the agents hold any
+// belief has the same band, the same viewport and the same entries as one after.
+TEST(BuildScene, TheLegendAndTheViewDoNotChangeFromStepToStep) {
+  Fixture f;
+  f.model.plans = true;
+  const Scene before = buildScene(f.model, f.truth, {}, f.trails, {800, 534});
+  const Scene after = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 534});
+  EXPECT_EQ(before.viewport.top_left, after.viewport.top_left);
+  EXPECT_EQ(before.viewport.pixel_size, after.viewport.pixel_size);
+  std::vector<std::string> a, b;
+  for (const Text& t : all<Text>(before.overlay)) a.push_back(t.text);
+  for (const Text& t : all<Text>(after.overlay)) b.push_back(t.text);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(std::find(a.begin(), a.end(), "estimate, 2-sigma"), a.end());
+  EXPECT_NE(std::find(a.begin(), a.end(), "plan"), a.end());
+  EXPECT_TRUE(all<Ring>(before.world).empty());
+}
+
+// A view replaces the AOI as the fitted region: a 20 × 10 m box on 800 px with the default
+// 4 % margin (0.8 m each side) is 21.6 m wide, so a pixel is 21.6/800 m.
+TEST(BuildScene, TheViewIsWhatEveryFrameShows) {
+  Fixture f;
+  f.model.view = Aabb{Vec2(-40, -5), Vec2(-20, 5)};
+  SceneOptions options;
+  options.legend = false;
+  const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 600}, options);
+  EXPECT_NEAR(scene.viewport.pixel_size, 21.6 / 800.0, 1e-12);
+  EXPECT_NEAR(scene.viewport.toPixel(Vec2(-30, 0)).x(), 400.0, 1e-9);
+}
+
+TEST(ScaleBar, TheLargestOneTwoOrFiveBelowAQuarterOfTheWidth) {
+  EXPECT_DOUBLE_EQ(scaleBarLength(120.0), 20.0);  // a quarter is 30 → 20
+  EXPECT_DOUBLE_EQ(scaleBarLength(38.0), 5.0);    // 9.5 → 5
+  EXPECT_DOUBLE_EQ(scaleBarLength(40.0), 10.0);   // exactly 10
+  EXPECT_DOUBLE_EQ(scaleBarLength(7.9), 1.0);     // 1.975 → 1
+  EXPECT_DOUBLE_EQ(scaleBarLength(3000.0), 500.0);
+  EXPECT_EQ(scaleBarLabel(20.0), "20 m");
+  EXPECT_EQ(scaleBarLabel(2000.0), "2 km");
+  EXPECT_EQ(scaleBarLabel(0.5), "0.5 m");
   const Fixture f;
+  const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 534});
+  bool found = false;
+  for (const Text& t : all<Text>(scene.overlay)) found = found || t.text == "20 m";
+  EXPECT_TRUE(found);  // the AOI with its margin is 108 m wide: a quarter is 27 → 20 m
+}
+
+// Two targets and two UAVs on one spot: four names, no two boxes overlapping.
+TEST(BuildScene, NamesDoNotOverlap) {
+  Fixture f;
+  f.truth.targets = {{Vec2(0, 0), Vec2::Zero()}, {Vec2(0.1, 0), Vec2::Zero()}};
+  f.truth.uavs = {{Vec2(0, 0.1), Vec2::Zero(), 0.0}, {Vec2(0.1, 0.1), Vec2::Zero(), 0.0}};
+  f.model.target_names = {"I", "II"};
   const Scene scene = buildScene(f.model, f.truth, {}, f.trails, {800, 534});
-  for (const Text& t : all<Text>(scene.overlay)) {
-    EXPECT_EQ(t.text.find("estimate"), std::string::npos);
-    EXPECT_EQ(t.text.find("occlusion"), std::string::npos);
+  std::vector<Aabb> boxes;
+  for (const Text& t : all<Text>(scene.world)) {
+    const Vec2 lo = scene.viewport.toPixel(t.at) + t.offset_px;
+    boxes.push_back({lo, lo + Vec2(textWidthPx(t.text, t.scale), 9.0 * t.scale)});
   }
-  EXPECT_TRUE(all<Ring>(scene.world).empty());
+  ASSERT_EQ(boxes.size(), 4u);
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      const bool overlap = boxes[i].lo.x() < boxes[j].hi.x() && boxes[j].lo.x() < boxes[i].hi.x() &&
+                           boxes[i].lo.y() < boxes[j].hi.y() && boxes[j].lo.y() < boxes[i].hi.y();
+      EXPECT_FALSE(overlap) << i << " and " << j;
+    }
+  }
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 #include "scenarios/loader.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -182,6 +185,46 @@ TEST(Loader, MutatedFilesFailCleanly) {
     }
   }
   EXPECT_GT(rejected, 100);
+}
+
+// CANOPY_PATH's folders come before the built-in library, in order; CANOPY_LIBRARY_DIR adds a
+// folder after them instead of replacing the library.
+TEST(ScenarioSearchPath, CanopyPathComesFirstAndTheLibraryStays) {
+  const fs::path root = fs::temp_directory_path() / ("canopy_path_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "a");
+  fs::create_directories(root / "b");
+  fs::create_directories(root / "c");
+  const std::string scenario =
+      R"({"description": "DESC", "aoi": [0, 0, 10, 10], "uavs": [{"start": [1, 1]}]})";
+  auto write = [&](const fs::path& file, const std::string& description) {
+    std::string text = scenario;
+    text.replace(text.find("DESC"), 4, description);
+    std::ofstream(file) << text;
+  };
+  write(root / "a" / "demo.json", "my demo");
+  write(root / "b" / "demo.json", "second demo");
+  write(root / "b" / "mine.json", "mine");
+  write(root / "c" / "extra.json", "extra");
+  ::setenv("CANOPY_PATH", ((root / "a").string() + ":" + (root / "b").string()).c_str(), 1);
+  ::setenv("CANOPY_LIBRARY_DIR", (root / "c").c_str(), 1);
+
+  EXPECT_EQ(resolveScenario("demo"), root / "a" / "demo.json");
+  EXPECT_EQ(loadScenario("demo").description, "my demo");
+  EXPECT_EQ(resolveScenario("mine"), root / "b" / "mine.json");
+  EXPECT_EQ(resolveScenario("extra"), root / "c" / "extra.json");
+  EXPECT_EQ(resolveScenario("joint_effect"), libraryDir() / "joint_effect.json");
+  const std::vector<std::string> names = libraryScenarios();
+  for (const char* name : {"demo", "mine", "extra", "joint_effect"})
+    EXPECT_EQ(std::count(names.begin(), names.end(), name), 1) << name;
+  EXPECT_EQ(scenarioSearchPath(),
+            (std::vector<fs::path>{root / "a", root / "b", root / "c", libraryDir()}));
+
+  ::unsetenv("CANOPY_PATH");
+  ::unsetenv("CANOPY_LIBRARY_DIR");
+  EXPECT_EQ(resolveScenario("demo"), libraryDir() / "demo.json");
+  EXPECT_THROW(resolveScenario("mine"), ScenarioError);
+  fs::remove_all(root);
 }
 
 }  // namespace
