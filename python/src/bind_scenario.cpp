@@ -1,0 +1,76 @@
+// Scenarios cross into Python as their effective configuration (JSON text, every default
+// filled in); Python edits it as a dict and hands it back as text, checked by the same loader as
+// the command line, so errors read the same: "FILE: FIELD: expected …".
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/stl.h>
+
+#include "python/src/bindings.h"
+#include "python/src/scenario_source.h"
+#include "scenarios/error.h"
+#include "scenarios/loader.h"
+
+namespace py = pybind11;
+
+namespace canopy::python {
+namespace {
+
+scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
+                                   std::optional<std::uint64_t> seed) {
+  scenarios::LoadOptions options;
+  options.seed = seed;
+  for (const std::string& root : allowed_roots) options.allowed_roots.emplace_back(root);
+  return options;
+}
+
+}  // namespace
+
+scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
+  const auto [text, file, roots] =
+      scenario.attr("_source")().cast<std::tuple<std::string, std::string, std::vector<std::string>>>();
+  return scenarios::loadScenarioText(text, file, loadOptions(roots, seed));
+}
+
+void bindScenario(py::module_& m) {
+  // canopy.ScenarioError (a ValueError) with the parts of the message as attributes.
+  static py::exception<scenarios::ScenarioError> error(m, "ScenarioError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const scenarios::ScenarioError& e) {
+      py::object value = py::reinterpret_borrow<py::object>(error.ptr())(e.what());
+      value.attr("file") = e.file();
+      value.attr("field") = e.field();
+      value.attr("reason") = e.message();
+      PyErr_SetObject(error.ptr(), value.ptr());
+    }
+  });
+
+  m.def(
+      "_load",
+      [](const std::string& scenario, const std::vector<std::string>& overrides,
+         const std::vector<std::string>& allowed_roots) {
+        scenarios::LoadOptions options = loadOptions(allowed_roots, std::nullopt);
+        options.overrides = overrides;
+        const std::string file = scenarios::resolveScenario(scenario).string();
+        const scenarios::ScenarioSpec spec = scenarios::loadScenario(file, options);
+        return std::make_pair(spec.effective_config, file);
+      },
+      py::arg("scenario"), py::arg("overrides"), py::arg("allowed_roots"),
+      "(effective configuration as JSON text, the file it came from)");
+  m.def(
+      "_check",
+      [](const std::string& text, const std::string& file,
+         const std::vector<std::string>& allowed_roots) {
+        return scenarios::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt))
+            .effective_config;
+      },
+      py::arg("text"), py::arg("file"), py::arg("allowed_roots"),
+      "Validates a configuration; returns it with every default filled in.");
+  m.def("library_scenarios", &scenarios::libraryScenarios, "The built-in scenarios' names.");
+  m.def("_library_dir", [] { return scenarios::libraryDir().string(); });
+}
+
+}  // namespace canopy::python
