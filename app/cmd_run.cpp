@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "app/frame_observer.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "render/frame_writer.h"
@@ -12,37 +13,6 @@
 #include "scenarios/run.h"
 
 namespace canopy::app {
-namespace {
-
-render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec) {
-  render::SceneModel model;
-  model.title = spec.name;
-  model.aoi = spec.aoi;
-  model.trees = spec.trees;
-  for (const scenarios::UavSpec& uav : spec.uavs) {
-    model.sensors.push_back(uav.sensor);
-    model.uav_names.push_back(uav.name);
-  }
-  for (const scenarios::TargetSpec& target : spec.targets)
-    model.target_names.push_back(target.name);
-  return model;
-}
-
-// The frames as one more observer of the run's steps.
-class FrameObserver final : public scenarios::StepObserver {
- public:
-  explicit FrameObserver(render::FrameWriter& writer) : writer_(writer) {}
-  void onStep(const scenarios::StepRecord& record) override {
-    scenarios::truthSnapshot(record, truth_);
-    writer_.onStep(truth_, record.beliefs);
-  }
-
- private:
-  render::FrameWriter& writer_;
-  world::WorldSnapshot truth_;  // the record's truth as the renderer takes it (storage reused)
-};
-
-}  // namespace
 
 render::ImageSize imageSizeValue(Args& args, const std::string& name) {
   const std::string text = args.value(name);

@@ -6,8 +6,8 @@
 
 The compiled part is canopy._canopy; everything here is thin Python over it.
 """
-from ._canopy import ScenarioError, library_scenarios
+from ._canopy import ScenarioError, Simulation, library_scenarios
 from .scenario import Scenario, load
 from . import forest
 
-__all__ = ["ScenarioError", "Scenario", "load", "forest", "library_scenarios"]
+__all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios"]

@@ -5,4 +5,5 @@ PYBIND11_MODULE(_canopy, m) {
   m.doc() = "canopy's C++ core: scenarios, layout generators, stepping, whole runs";
   canopy::python::bindScenario(m);
   canopy::python::bindForest(m);
+  canopy::python::bindSimulation(m);
 }

@@ -1,0 +1,49 @@
+#pragma once
+// canopy.Simulation: a scenarios::Simulation driven from Python. Constructing one runs step 0
+// (the initial sensing), so the readers always have a step to show and every step() advances
+// the world by dt; step(commands) replaces the planner's (or path's) command for that one step
+// (Simulation::commandNext), clamped to each UAV's v_max.
+#include <cstdint>
+#include <optional>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "agents/planning/team_planner.h"
+#include "render/canvas.h"
+#include "render/image.h"
+#include "render/scene_builder.h"
+#include "scenarios/simulation.h"
+
+namespace canopy::python {
+
+class PySimulation {
+ public:
+  explicit PySimulation(scenarios::ScenarioSpec spec);
+
+  /// One step. commands: None, or an (n_uav, 2) array-like of velocities (m/s). Raises
+  /// ValueError for a wrong shape or a non-finite command, RuntimeError when done.
+  void step(const pybind11::handle& commands);
+
+  const scenarios::Simulation& sim() const { return sim_; }
+  const scenarios::StepRecord& record() const { return sim_.lastStep(); }
+  /// The plan of the last planning epoch so far (none before the first, or without a planner).
+  const std::optional<agents::planning::TeamPlan>& lastPlan() const { return last_plan_; }
+  /// The current step drawn by the CLI's renderer (no trails), (height, width, 3) uint8.
+  pybind11::array_t<std::uint8_t> render(int width, int height);
+
+ private:
+  void applyCommands(const pybind11::handle& commands);
+  void keepPlan();
+
+  scenarios::Simulation sim_;
+  std::optional<agents::planning::TeamPlan> last_plan_;
+  std::optional<render::SceneModel> scene_model_;  // made on the first render
+  std::optional<render::Canvas> canvas_;           // GL starts on the first render only
+  render::Image image_;
+};
+
+/// The readers (bind_readers.cpp): numpy views of the truth, copies of the variable-size lists.
+void bindReaders(pybind11::class_<PySimulation>& cls);
+
+}  // namespace canopy::python
