@@ -41,6 +41,7 @@ class Scenario:
         self.config = config
         self.file = os.fspath(file)
         self.allowed_roots = [os.fspath(r) for r in allowed_roots]
+        self._compiled = None  # (source, the loader's spec) for the last configuration checked
 
     # --- fields --------------------------------------------------------------------------
     def __getitem__(self, path):
@@ -82,10 +83,18 @@ class Scenario:
     def _source(self):
         return json.dumps(self.config), self.file, self.allowed_roots
 
+    def _spec(self):
+        """The loader's result for the current configuration; loaded again only after a change
+        (a Simulation per episode then costs a json.dumps, not a parse and a layout draw)."""
+        source = self._source()
+        if self._compiled is None or self._compiled[0] != source:
+            self._compiled = (source, _canopy._compile(*source))
+        return self._compiled[1]
+
     def validate(self):
         """Checks the configuration as ``canopy validate`` does; raises ScenarioError naming the
         file and the field. Returns self."""
-        _canopy._check(*self._source())
+        self._spec()
         return self
 
     def filled(self):
@@ -106,6 +115,12 @@ class Scenario:
 
     def copy(self):
         return Scenario(copy.deepcopy(self.config), self.file, self.allowed_roots)
+
+    def __getstate__(self):
+        return {"config": self.config, "file": self.file, "allowed_roots": self.allowed_roots}
+
+    def __setstate__(self, state):
+        self.__init__(state["config"], state["file"], state["allowed_roots"])
 
     def __repr__(self):
         return (f"Scenario({self.name!r}: {len(self.uavs)} UAVs, {len(self.targets)} targets, "

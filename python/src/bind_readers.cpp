@@ -1,7 +1,8 @@
 // The readers of canopy.Simulation. The truth is read without copying: numpy views with the
 // record's stride over UavRecord / TargetRecord, whose fields sit next to each other (checked
 // at run time; a copy otherwise). Those vectors are sized once, so a view stays valid for the
-// simulation's life, shows the current step and is read-only. Scans, tracks, maps and plans vary
+// simulation's life, shows the current step and is read-only; the same array object is returned
+// at every step. Scans, tracks, maps and plans vary
 // in length from step to step (their storage may move), so they are copied into new arrays.
 #include <cstddef>
 #include <string>
@@ -21,7 +22,7 @@ using scenarios::StepRecord;
 const char* bytes(const void* p) { return static_cast<const char*>(p); }
 
 /// A read-only (rows, cols) view of doubles starting at `first`, rows `row_stride` bytes apart;
-/// `owner` (the Python Simulation) is kept alive by the array.
+/// `owner` (a capsule sharing the simulation) is kept alive by the array.
 py::array view(const double* first, std::size_t rows, std::size_t cols, std::size_t row_stride,
                const py::handle& owner) {
   py::array out(py::dtype::of<double>(),
@@ -41,36 +42,52 @@ py::array_t<double> copyRows(std::size_t rows, std::size_t cols, Row row) {
   return out;
 }
 
-py::array uavStates(const py::object& self) {
-  const StepRecord& r = self.cast<const PySimulation&>().record();
-  const auto& u = r.uavs;
-  if (!u.empty() && bytes(&u[0].yaw) == bytes(u[0].position.data() + 2))
-    return view(u[0].position.data(), u.size(), 3, sizeof(u[0]), self);
-  return copyRows(u.size(), 3, [&](std::size_t i, double* o) {
-    o[0] = u[i].position.x(), o[1] = u[i].position.y(), o[2] = u[i].yaw;
-  });
+/// The cached view in `slot`, made by `make(owner)` on first use; `make` returns None when the
+/// layout does not allow a view, and then `copy()` is called every time.
+template <typename Make, typename Copy>
+py::object cachedView(PySimulation& s, py::object& slot, Make make, Copy copy) {
+  if (!slot) slot = make(s.viewOwner());
+  return slot.is_none() ? py::object(copy()) : slot;
 }
 
-py::array targetStates(const py::object& self) {
-  const StepRecord& r = self.cast<const PySimulation&>().record();
-  const auto& t = r.targets;
-  if (!t.empty() && bytes(t[0].velocity.data()) == bytes(t[0].position.data() + 2))
-    return view(t[0].position.data(), t.size(), 4, sizeof(t[0]), self);
-  return copyRows(t.size(), 4, [&](std::size_t i, double* o) {
+}  // namespace
+
+py::object uavStatesView(PySimulation& s) {
+  const auto& u = s.record().uavs;
+  return cachedView(s, s.views().uav_states, [&](const py::object& owner) -> py::object {
+    if (!u.empty() && bytes(&u[0].yaw) == bytes(u[0].position.data() + 2))
+      return view(u[0].position.data(), u.size(), 3, sizeof(u[0]), owner);
+    return py::none();
+  }, [&] { return copyRows(u.size(), 3, [&](std::size_t i, double* o) {
+    o[0] = u[i].position.x(), o[1] = u[i].position.y(), o[2] = u[i].yaw;
+  }); });
+}
+
+py::object targetStatesView(PySimulation& s) {
+  const auto& t = s.record().targets;
+  return cachedView(s, s.views().target_states, [&](const py::object& owner) -> py::object {
+    if (!t.empty() && bytes(t[0].velocity.data()) == bytes(t[0].position.data() + 2))
+      return view(t[0].position.data(), t.size(), 4, sizeof(t[0]), owner);
+    return py::none();
+  }, [&] { return copyRows(t.size(), 4, [&](std::size_t i, double* o) {
     o[0] = t[i].position.x(), o[1] = t[i].position.y();
     o[2] = t[i].velocity.x(), o[3] = t[i].velocity.y();
-  });
+  }); });
 }
+
+namespace {
 
 template <typename Member>
-py::array uavVec2(const py::object& self, Member member) {
-  const auto& u = self.cast<const PySimulation&>().record().uavs;
-  if (u.empty()) return py::array_t<double>(std::vector<py::ssize_t>{0, 2});
-  return view((u[0].*member).data(), u.size(), 2, sizeof(u[0]), self);
+py::object uavVec2(PySimulation& s, py::object& slot, Member member) {
+  const auto& u = s.record().uavs;
+  return cachedView(s, slot, [&](const py::object& owner) -> py::object {
+    if (u.empty()) return py::array_t<double>(std::vector<py::ssize_t>{0, 2});
+    return view((u[0].*member).data(), u.size(), 2, sizeof(u[0]), owner);
+  }, [] { return py::none(); });
 }
 
-py::array targetOccluded(const py::object& self) {
-  const auto& t = self.cast<const PySimulation&>().record().targets;
+py::array targetOccluded(const PySimulation& s) {
+  const auto& t = s.record().targets;
   py::array_t<bool> out(static_cast<py::ssize_t>(t.size()));
   for (std::size_t i = 0; i < t.size(); ++i) out.mutable_at(i) = t[i].occluded;
   return out;
@@ -181,16 +198,14 @@ py::object plan(const PySimulation& s) {
 }  // namespace
 
 void bindReaders(py::class_<PySimulation>& cls) {
-  cls.def_property_readonly("uav_states", &uavStates,
-                            "(n_uav, 3) x, y (m), yaw (rad): a read-only view of the last step")
-      .def_property_readonly(
-          "uav_velocities", [](const py::object& self) { return uavVec2(self, &scenarios::UavRecord::velocity); },
+  cls.def_property_readonly(
+          "uav_velocities",
+          [](PySimulation& s) { return uavVec2(s, s.views().uav_velocities, &scenarios::UavRecord::velocity); },
           "(n_uav, 2) m/s flown over the last step (view)")
       .def_property_readonly(
-          "uav_commands", [](const py::object& self) { return uavVec2(self, &scenarios::UavRecord::command); },
+          "uav_commands",
+          [](PySimulation& s) { return uavVec2(s, s.views().uav_commands, &scenarios::UavRecord::command); },
           "(n_uav, 2) m/s, the planner's or path's command for the next step, clamped (view)")
-      .def_property_readonly("target_states", &targetStates,
-                             "(n_target, 4) x, y (m), vx, vy (m/s): a read-only view of the last step")
       .def_property_readonly("target_occluded", &targetOccluded,
                              "(n_target,) bool: strictly under a crown")
       .def("scan", &scan, py::arg("uav"),

@@ -1,6 +1,7 @@
 // Scenarios cross into Python as their effective configuration (JSON text, every default
 // filled in); Python edits it as a dict and hands it back as text, checked by the same loader as
 // the command line, so errors read the same: "FILE: FIELD: expected …".
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,9 +29,11 @@ scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots
 }  // namespace
 
 scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
-  const auto [text, file, roots] =
-      scenario.attr("_source")().cast<std::tuple<std::string, std::string, std::vector<std::string>>>();
-  return scenarios::loadScenarioText(text, file, loadOptions(roots, seed));
+  scenarios::ScenarioSpec spec = *scenario.attr("_spec")().cast<std::shared_ptr<const scenarios::ScenarioSpec>>();
+  // The loader's --seed sets spec.seed and the effective configuration's "seed" (a generator's
+  // seed is its own field). A Simulation never reads effective_config; run() loads afresh.
+  if (seed) spec.seed = *seed;
+  return spec;
 }
 
 void bindScenario(py::module_& m) {
@@ -69,6 +72,17 @@ void bindScenario(py::module_& m) {
       },
       py::arg("text"), py::arg("file"), py::arg("allowed_roots"),
       "Validates a configuration; returns it with every default filled in.");
+  // The loader's result, opaque to Python: Scenario caches it while its configuration is unchanged,
+  // so that a Simulation per episode does not parse and generate the layout again.
+  py::class_<scenarios::ScenarioSpec, std::shared_ptr<scenarios::ScenarioSpec>>(m, "_Spec");
+  m.def(
+      "_compile",
+      [](const std::string& text, const std::string& file,
+         const std::vector<std::string>& allowed_roots) {
+        return std::make_shared<scenarios::ScenarioSpec>(
+            scenarios::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt)));
+      },
+      py::arg("text"), py::arg("file"), py::arg("allowed_roots"));
   m.def("library_scenarios", &scenarios::libraryScenarios, "The built-in scenarios' names.");
   m.def("_library_dir", [] { return scenarios::libraryDir().string(); });
 }

@@ -28,19 +28,28 @@ std::string shapeText(const py::array& a) {
 
 }  // namespace
 
-PySimulation::PySimulation(scenarios::ScenarioSpec spec) : sim_(std::move(spec)) {
-  sim_.tick();  // step 0: the initial sensing, no motion
+PySimulation::PySimulation(scenarios::ScenarioSpec spec)
+    : sim_(std::make_shared<scenarios::Simulation>(std::move(spec))) {
+  sim_->tick();  // step 0: the initial sensing, no motion
   keepPlan();
 }
 
+py::object PySimulation::viewOwner() {
+  if (!owner_) {
+    auto* share = new std::shared_ptr<scenarios::Simulation>(sim_);
+    owner_ = py::capsule(share, [](void* p) { delete static_cast<std::shared_ptr<scenarios::Simulation>*>(p); });
+  }
+  return owner_;
+}
+
 void PySimulation::keepPlan() {
-  if (sim_.lastStep().plan) last_plan_ = *sim_.lastStep().plan;
+  if (sim_->lastStep().plan) last_plan_ = *sim_->lastStep().plan;
 }
 
 void PySimulation::applyCommands(const py::handle& commands) {
   using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
   const Array a = Array::ensure(commands);
-  const auto n = static_cast<py::ssize_t>(sim_.spec().uavs.size());
+  const auto n = static_cast<py::ssize_t>(sim_->spec().uavs.size());
   if (!a) {
     throw py::type_error("Simulation.step: commands: expected an array of numbers of shape (" +
                          std::to_string(n) + ", 2) (m/s), got " +
@@ -60,16 +69,16 @@ void PySimulation::applyCommands(const py::handle& commands) {
     }
   }
   for (py::ssize_t i = 0; i < n; ++i)
-    sim_.commandNext(static_cast<int>(i), Vec2(v(i, 0), v(i, 1)));
+    sim_->commandNext(static_cast<int>(i), Vec2(v(i, 0), v(i, 1)));
 }
 
 void PySimulation::step(const py::handle& commands) {
-  if (sim_.done()) {
+  if (sim_->done()) {
     throw std::runtime_error("Simulation.step: the run is done (it ended at step " +
-                             std::to_string(sim_.spec().steps()) + ")");
+                             std::to_string(sim_->spec().steps()) + ")");
   }
   if (!commands.is_none()) applyCommands(commands);
-  sim_.tick();
+  sim_->tick();
   keepPlan();
 }
 
@@ -82,7 +91,7 @@ py::array_t<std::uint8_t> PySimulation::render(int width, int height) {
                           std::to_string(width) + " x " + std::to_string(height));
   }
   const render::ImageSize size{width, height};
-  if (!scene_model_) scene_model_ = app::sceneModel(sim_.spec());
+  if (!scene_model_) scene_model_ = app::sceneModel(sim_->spec());
   if (!canvas_ || canvas_->size() != size) canvas_.emplace(size);
   world::WorldSnapshot truth;
   scenarios::truthSnapshot(record(), truth);
@@ -105,14 +114,7 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
             return std::make_unique<PySimulation>(specOf(scenario, seed));
           }),
           py::arg("scenario"), py::arg("seed") = py::none())
-      .def("step", &PySimulation::step, py::arg("commands") = py::none(),
-           "Advances one step; commands: None or (n_uav, 2) velocities (m/s) for this step.")
-      .def_property_readonly("done", [](const PySimulation& s) { return s.sim().done(); },
-                             "True once steps 0..K have all run.")
-      .def_property_readonly("step_index", [](const PySimulation& s) { return s.record().step; },
-                             "k of the last step run.")
-      .def_property_readonly("time", [](const PySimulation& s) { return s.record().time; },
-                             "t = k·dt of the last step (s).")
+      .def("_step_commands", &PySimulation::step, py::arg("commands"))
       .def_property_readonly("steps", [](const PySimulation& s) { return s.sim().spec().steps(); },
                              "K: the last step (states k = 0..K).")
       .def_property_readonly("dt", [](const PySimulation& s) { return s.sim().spec().dt; })
@@ -138,6 +140,7 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
       .def("render", &PySimulation::render, py::arg("width") = 800, py::arg("height") = 600,
            "The last step drawn by the CLI's renderer (OSMesa), an (height, width, 3) uint8 array.");
   bindReaders(cls);
+  addFastMethods(cls);
 }
 
 }  // namespace canopy::python

@@ -12,8 +12,11 @@
 
 namespace canopy::python {
 
-/// Loads and validates `scenario` (anything with a `_source()` method returning (text, file,
-/// allowed_roots)); `seed` replaces the scenario's seed. Throws scenarios::ScenarioError.
+/// The spec of `scenario` (anything with a `_spec()` method returning the loader's result for its
+/// current configuration, cached by python/canopy/scenario.py while the configuration is
+/// unchanged); `seed` replaces the scenario's seed, as `--seed` does. Throws
+/// scenarios::ScenarioError. effective_config keeps the scenario's own seed: for a Simulation,
+/// which does not read it, not for writing a manifest.
 scenarios::ScenarioSpec specOf(const pybind11::object& scenario,
                                std::optional<std::uint64_t> seed = std::nullopt);
 

@@ -90,7 +90,7 @@ def test_truth_views_are_live_read_only_and_keep_the_simulation(demo):
     uavs, targets = demo.uav_states, demo.target_states
     assert uavs.shape == (2, 3) and targets.shape == (3, 4)
     assert not uavs.flags.writeable and not uavs.flags.owndata
-    assert np.shares_memory(uavs, demo.uav_states)
+    assert demo.uav_states is uavs  # one view, handed out at every step: no allocation
     with pytest.raises(ValueError):
         uavs[0, 0] = 1.0
     demo.step([[1, 0], [1, 0]])
@@ -154,3 +154,21 @@ def test_render_equals_the_clis_first_frame(tmp_path, cli):
 def test_render_rejects_bad_sizes(demo):
     with pytest.raises(ValueError, match="width and height"):
         demo.render(0, 100)
+
+
+def test_step_takes_none_or_one_argument(demo):
+    demo.step(None)
+    demo.step()
+    assert demo.step_index == 2
+    with pytest.raises(TypeError, match="at most one argument"):
+        demo.step(np.zeros((2, 2)), np.zeros((2, 2)))
+
+
+def test_a_simulation_per_episode_reuses_the_loaded_scenario():
+    s = canopy.load("demo")
+    first = s._spec()
+    canopy.Simulation(s)
+    assert s._spec() is first  # unchanged configuration: not loaded again
+    s["uavs.0.v_max"] = 2.0
+    sim = canopy.Simulation(s)
+    assert s._spec() is not first and list(sim.v_max) == [2.0, 5.0]
