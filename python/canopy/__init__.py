@@ -9,5 +9,7 @@ The compiled part is canopy._canopy; everything here is thin Python over it.
 from ._canopy import ScenarioError, Simulation, library_scenarios
 from .scenario import Scenario, load
 from . import forest
+from .jobs import analyze, run, sweep
 
-__all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios"]
+__all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios",
+           "run", "sweep", "analyze"]

@@ -6,4 +6,5 @@ PYBIND11_MODULE(_canopy, m) {
   canopy::python::bindScenario(m);
   canopy::python::bindForest(m);
   canopy::python::bindSimulation(m);
+  canopy::python::bindJobs(m);
 }
