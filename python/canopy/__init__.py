@@ -10,6 +10,7 @@ from ._canopy import ScenarioError, Simulation, library_scenarios
 from .scenario import Scenario, load
 from . import forest
 from .jobs import analyze, run, sweep
+from .env import TrackingEnv
 
 __all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios",
-           "run", "sweep", "analyze"]
+           "run", "sweep", "analyze", "TrackingEnv"]
