@@ -13,6 +13,7 @@
 #include "analysis/sweep_analysis.h"
 #include "app/frame_observer.h"
 #include "python/src/bindings.h"
+#include "python/src/scenario_source.h"
 #include "render/frame_writer.h"
 #include "scenarios/loader.h"
 #include "scenarios/run.h"
@@ -22,14 +23,6 @@ namespace py = pybind11;
 
 namespace canopy::python {
 namespace {
-
-scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
-                                   std::optional<std::uint64_t> seed) {
-  scenarios::LoadOptions options;
-  options.seed = seed;
-  for (const std::string& root : allowed_roots) options.allowed_roots.emplace_back(root);
-  return options;
-}
 
 struct FrameRequest {
   bool on = false;

@@ -16,18 +16,6 @@
 namespace py = pybind11;
 
 namespace canopy::python {
-namespace {
-
-scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
-                                   std::optional<std::uint64_t> seed) {
-  scenarios::LoadOptions options;
-  options.seed = seed;
-  for (const std::string& root : allowed_roots) options.allowed_roots.emplace_back(root);
-  return options;
-}
-
-}  // namespace
-
 scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
   scenarios::ScenarioSpec spec = *scenario.attr("_spec")().cast<std::shared_ptr<const scenarios::ScenarioSpec>>();
   // The loader's --seed sets spec.seed and the effective configuration's "seed" (a generator's

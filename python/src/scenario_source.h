@@ -5,12 +5,23 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <pybind11/pybind11.h>
 
+#include "scenarios/loader.h"
 #include "scenarios/spec.h"
 
 namespace canopy::python {
+
+/// LoadOptions from Python's arguments: extra readable folders (--allow-path) and the seed.
+inline scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
+                                          std::optional<std::uint64_t> seed) {
+  scenarios::LoadOptions options;
+  options.seed = seed;
+  for (const std::string& root : allowed_roots) options.allowed_roots.emplace_back(root);
+  return options;
+}
 
 /// The spec of `scenario` (anything with a `_spec()` method returning the loader's result for its
 /// current configuration, cached by python/canopy/scenario.py while the configuration is
