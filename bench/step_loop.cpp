@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
   const canopy::scenarios::ScenarioSpec spec = canopy::scenarios::loadScenario(argv[1], options);
   const int runs = std::atoi(argv[2]);
   using Clock = std::chrono::steady_clock;
-  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
   double checksum = 0.0, building = 0.0, stepping = 0.0;
   for (int r = -1; r < runs; ++r) {  // run −1 warms up and is not timed, as in step_loop.py
     const auto t0 = Clock::now();
@@ -29,8 +31,10 @@ int main(int argc, char** argv) {
     building += since(t0);
     const auto t1 = Clock::now();
     while (!sim.done()) checksum += sim.tick().uavs[0].position.x();
-    if (r < 0) building = stepping = 0.0;
-    else stepping += since(t1);
+    if (r < 0)
+      building = stepping = 0.0;
+    else
+      stepping += since(t1);
   }
   const double n = runs ? runs : 1;
   std::printf("%s: %d runs; per run: build + step 0 %.1f us, steps 1..K %.1f us (checksum %.6f)\n",

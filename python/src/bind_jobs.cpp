@@ -2,13 +2,13 @@
 // optional frames), sweep (trials on a thread pool, resumable) and analyze (the CSV tables and
 // figures; python/canopy/jobs.py reads the tables into numpy arrays). The GIL is released while
 // they run: they touch no Python object.
+#include <pybind11/stl.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <pybind11/stl.h>
 
 #include "analysis/sweep_analysis.h"
 #include "app/frame_observer.h"
@@ -33,7 +33,8 @@ struct FrameRequest {
 std::string runJob(const std::string& text, const std::string& file,
                    const std::vector<std::string>& roots, const std::string& out,
                    std::optional<std::uint64_t> seed, const FrameRequest& frames) {
-  const scenarios::ScenarioSpec spec = scenarios::loadScenarioText(text, file, loadOptions(roots, seed));
+  const scenarios::ScenarioSpec spec =
+      scenarios::loadScenarioText(text, file, loadOptions(roots, seed));
   scenarios::RunOptions options;
   options.out_dir = out;
   options.command_line = "python: canopy.run(" + spec.name + ")";
@@ -65,7 +66,8 @@ int sweepJob(const std::string& file, const std::string& out, int jobs,
 void analyzeJob(const std::string& dir, const std::string& out,
                 const std::vector<std::string>& roots, bool figures) {
   py::gil_scoped_release release;
-  const analysis::SweepAnalysis result = analysis::analyseSweep(dir, loadOptions(roots, std::nullopt));
+  const analysis::SweepAnalysis result =
+      analysis::analyseSweep(dir, loadOptions(roots, std::nullopt));
   analysis::writeTables(result, out);
   if (figures) analysis::writeFigures(result, out);
 }

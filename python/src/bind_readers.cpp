@@ -4,11 +4,11 @@
 // simulation's life, shows the current step and is read-only; the same array object is returned
 // at every step. Scans, tracks, maps and plans vary
 // in length from step to step (their storage may move), so they are copied into new arrays.
+#include <pybind11/numpy.h>
+
 #include <cstddef>
 #include <string>
 #include <vector>
-
-#include <pybind11/numpy.h>
 
 #include "python/src/py_simulation.h"
 
@@ -19,7 +19,9 @@ namespace {
 
 using scenarios::StepRecord;
 
-const char* bytes(const void* p) { return static_cast<const char*>(p); }
+const char* bytes(const void* p) {
+  return static_cast<const char*>(p);
+}
 
 /// A read-only (rows, cols) view of doubles starting at `first`, rows `row_stride` bytes apart;
 /// `owner` (a capsule sharing the simulation) is kept alive by the array.
@@ -54,25 +56,35 @@ py::object cachedView(PySimulation& s, py::object& slot, Make make, Copy copy) {
 
 py::object uavStatesView(PySimulation& s) {
   const auto& u = s.record().uavs;
-  return cachedView(s, s.views().uav_states, [&](const py::object& owner) -> py::object {
-    if (!u.empty() && bytes(&u[0].yaw) == bytes(u[0].position.data() + 2))
-      return view(u[0].position.data(), u.size(), 3, sizeof(u[0]), owner);
-    return py::none();
-  }, [&] { return copyRows(u.size(), 3, [&](std::size_t i, double* o) {
-    o[0] = u[i].position.x(), o[1] = u[i].position.y(), o[2] = u[i].yaw;
-  }); });
+  return cachedView(
+      s, s.views().uav_states,
+      [&](const py::object& owner) -> py::object {
+        if (!u.empty() && bytes(&u[0].yaw) == bytes(u[0].position.data() + 2))
+          return view(u[0].position.data(), u.size(), 3, sizeof(u[0]), owner);
+        return py::none();
+      },
+      [&] {
+        return copyRows(u.size(), 3, [&](std::size_t i, double* o) {
+          o[0] = u[i].position.x(), o[1] = u[i].position.y(), o[2] = u[i].yaw;
+        });
+      });
 }
 
 py::object targetStatesView(PySimulation& s) {
   const auto& t = s.record().targets;
-  return cachedView(s, s.views().target_states, [&](const py::object& owner) -> py::object {
-    if (!t.empty() && bytes(t[0].velocity.data()) == bytes(t[0].position.data() + 2))
-      return view(t[0].position.data(), t.size(), 4, sizeof(t[0]), owner);
-    return py::none();
-  }, [&] { return copyRows(t.size(), 4, [&](std::size_t i, double* o) {
-    o[0] = t[i].position.x(), o[1] = t[i].position.y();
-    o[2] = t[i].velocity.x(), o[3] = t[i].velocity.y();
-  }); });
+  return cachedView(
+      s, s.views().target_states,
+      [&](const py::object& owner) -> py::object {
+        if (!t.empty() && bytes(t[0].velocity.data()) == bytes(t[0].position.data() + 2))
+          return view(t[0].position.data(), t.size(), 4, sizeof(t[0]), owner);
+        return py::none();
+      },
+      [&] {
+        return copyRows(t.size(), 4, [&](std::size_t i, double* o) {
+          o[0] = t[i].position.x(), o[1] = t[i].position.y();
+          o[2] = t[i].velocity.x(), o[3] = t[i].velocity.y();
+        });
+      });
 }
 
 namespace {
@@ -80,13 +92,17 @@ namespace {
 template <typename Member>
 py::object uavVec2(PySimulation& s, py::object& slot, Member member) {
   const auto& u = s.record().uavs;
-  return cachedView(s, slot, [&](const py::object& owner) -> py::object {
-    if (u.empty()) return py::array_t<double>(std::vector<py::ssize_t>{0, 2});
-    return view((u[0].*member).data(), u.size(), 2, sizeof(u[0]), owner);
-  }, [] { return py::none(); });
+  return cachedView(
+      s, slot,
+      [&](const py::object& owner) -> py::object {
+        if (u.empty()) return py::array_t<double>(std::vector<py::ssize_t>{0, 2});
+        return view((u[0].*member).data(), u.size(), 2, sizeof(u[0]), owner);
+      },
+      [] { return py::none(); });
 }
 
-py::array targetOccluded(const PySimulation& s) {
+py::array targetOccluded(py::handle self) {
+  const PySimulation& s = simulationOf(self);
   const auto& t = s.record().targets;
   py::array_t<bool> out(static_cast<py::ssize_t>(t.size()));
   for (std::size_t i = 0; i < t.size(); ++i) out.mutable_at(i) = t[i].occluded;
@@ -100,7 +116,8 @@ void checkIndex(std::size_t index, std::size_t count, const char* what) {
   }
 }
 
-py::dict scan(const PySimulation& s, std::size_t uav) {
+py::dict scan(py::handle self, std::size_t uav) {
+  const PySimulation& s = simulationOf(self);
   checkIndex(uav, s.record().uavs.size(), "UAV");
   const sensing::Scan& scan = s.record().uavs[uav].scan;
   const auto& obs = scan.observations;
@@ -122,11 +139,12 @@ py::dict scan(const PySimulation& s, std::size_t uav) {
   out["labels"] = labels;  // (m,) label ids (Simulation.labels names them)
   out["truth"] = truth;    // (m,) target or tree index, −1 for clutter (analysis only)
   out["radius"] = radius;  // (m,) m, trees only
-  out["in_footprint"] = py::array_t<long>(static_cast<py::ssize_t>(scan.in_footprint.size()),
-                                          std::vector<long>(scan.in_footprint.begin(),
-                                                            scan.in_footprint.end()).data());
-  out["visible"] = py::array_t<long>(static_cast<py::ssize_t>(scan.visible.size()),
-                                     std::vector<long>(scan.visible.begin(), scan.visible.end()).data());
+  out["in_footprint"] = py::array_t<long>(
+      static_cast<py::ssize_t>(scan.in_footprint.size()),
+      std::vector<long>(scan.in_footprint.begin(), scan.in_footprint.end()).data());
+  out["visible"] =
+      py::array_t<long>(static_cast<py::ssize_t>(scan.visible.size()),
+                        std::vector<long>(scan.visible.begin(), scan.visible.end()).data());
   return out;
 }
 
@@ -150,7 +168,8 @@ py::dict gaussians(const std::vector<Estimate>& list) {
   return out;
 }
 
-py::dict tracks(const PySimulation& s, std::size_t agent) {
+py::dict tracks(py::handle self, std::size_t agent) {
+  const PySimulation& s = simulationOf(self);
   checkIndex(agent, s.record().beliefs.size(), "agent");
   const auto& list = s.record().beliefs[agent].tracks;
   py::dict out = gaussians<4>(list);  // means (m, 4) px, py, vx, vy; covariances (m, 4, 4)
@@ -165,18 +184,19 @@ py::dict tracks(const PySimulation& s, std::size_t agent) {
   return out;
 }
 
-py::dict occlusionMap(const PySimulation& s, std::size_t agent) {
+py::dict occlusionMap(py::handle self, std::size_t agent) {
+  const PySimulation& s = simulationOf(self);
   checkIndex(agent, s.record().beliefs.size(), "agent");
   return gaussians<3>(s.record().beliefs[agent].trees);  // means (m, 3) cx, cy, r (m)
 }
 
 py::array_t<double> vec2Rows(const std::vector<Vec2>& points) {
-  return copyRows(points.size(), 2, [&](std::size_t i, double* o) {
-    o[0] = points[i].x(), o[1] = points[i].y();
-  });
+  return copyRows(points.size(), 2,
+                  [&](std::size_t i, double* o) { o[0] = points[i].x(), o[1] = points[i].y(); });
 }
 
-py::object plan(const PySimulation& s) {
+py::object plan(py::handle self) {
+  const PySimulation& s = simulationOf(self);
   if (!s.lastPlan()) return py::none();
   const agents::planning::TeamPlan& plan = *s.lastPlan();
   py::list velocities;
@@ -199,12 +219,18 @@ py::object plan(const PySimulation& s) {
 
 void bindReaders(py::class_<PySimulation>& cls) {
   cls.def_property_readonly(
-          "uav_velocities",
-          [](PySimulation& s) { return uavVec2(s, s.views().uav_velocities, &scenarios::UavRecord::velocity); },
-          "(n_uav, 2) m/s flown over the last step (view)")
+         "uav_velocities",
+         [](py::handle self) {
+           PySimulation& s = simulationOf(self);
+           return uavVec2(s, s.views().uav_velocities, &scenarios::UavRecord::velocity);
+         },
+         "(n_uav, 2) m/s flown over the last step (view)")
       .def_property_readonly(
           "uav_commands",
-          [](PySimulation& s) { return uavVec2(s, s.views().uav_commands, &scenarios::UavRecord::command); },
+          [](py::handle self) {
+            PySimulation& s = simulationOf(self);
+            return uavVec2(s, s.views().uav_commands, &scenarios::UavRecord::command);
+          },
           "(n_uav, 2) m/s, the planner's or path's command for the next step, clamped (view)")
       .def_property_readonly("target_occluded", &targetOccluded,
                              "(n_target,) bool: strictly under a crown")
@@ -216,10 +242,14 @@ void bindReaders(py::class_<PySimulation>& cls) {
            "covariances (m, 4, 4)")
       .def("occlusion_map", &occlusionMap, py::arg("agent"),
            "Agent's occlusion map: keys (m, 2), means (m, 3) cx, cy, r, covariances (m, 3, 3)")
-      .def("planned_path", [](const PySimulation& s, std::size_t agent) {
-             checkIndex(agent, s.record().beliefs.size(), "agent");
-             return vec2Rows(s.record().beliefs[agent].planned_path);
-           }, py::arg("agent"), "Agent's planned positions (H, 2) m (empty without a planner)")
+      .def(
+          "planned_path",
+          [](py::handle self, std::size_t agent) {
+            const PySimulation& s = simulationOf(self);
+            checkIndex(agent, s.record().beliefs.size(), "agent");
+            return vec2Rows(s.record().beliefs[agent].planned_path);
+          },
+          py::arg("agent"), "Agent's planned positions (H, 2) m (empty without a planner)")
       .def_property_readonly("plan", &plan,
                              "The last planning epoch's plan (epoch, commands, velocities, costs), "
                              "or None");

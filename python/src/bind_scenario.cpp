@@ -1,12 +1,12 @@
 // Scenarios cross into Python as their effective configuration (JSON text, every default
 // filled in); Python edits it as a dict and hands it back as text, checked by the same loader as
 // the command line, so errors read the same: "FILE: FIELD: expected …".
+#include <pybind11/stl.h>
+
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <pybind11/stl.h>
 
 #include "python/src/bindings.h"
 #include "python/src/scenario_source.h"
@@ -17,7 +17,8 @@ namespace py = pybind11;
 
 namespace canopy::python {
 scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
-  scenarios::ScenarioSpec spec = *scenario.attr("_spec")().cast<std::shared_ptr<const scenarios::ScenarioSpec>>();
+  scenarios::ScenarioSpec spec =
+      *scenario.attr("_spec")().cast<std::shared_ptr<const scenarios::ScenarioSpec>>();
   // The loader's --seed sets spec.seed and the effective configuration's "seed" (a generator's
   // seed is its own field). A Simulation never reads effective_config; run() loads afresh.
   if (seed) spec.seed = *seed;

@@ -1,11 +1,11 @@
 // canopy.Simulation: stepping with the scenario's planner or with commands from Python.
+#include <pybind11/stl.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
-
-#include <pybind11/stl.h>
 
 #include "app/frame_observer.h"
 #include "python/src/bindings.h"
@@ -37,7 +37,8 @@ PySimulation::PySimulation(scenarios::ScenarioSpec spec)
 py::object PySimulation::viewOwner() {
   if (!owner_) {
     auto* share = new std::shared_ptr<scenarios::Simulation>(sim_);
-    owner_ = py::capsule(share, [](void* p) { delete static_cast<std::shared_ptr<scenarios::Simulation>*>(p); });
+    owner_ = py::capsule(
+        share, [](void* p) { delete static_cast<std::shared_ptr<scenarios::Simulation>*>(p); });
   }
   return owner_;
 }
@@ -114,31 +115,68 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
             return std::make_unique<PySimulation>(specOf(scenario, seed));
           }),
           py::arg("scenario"), py::arg("seed") = py::none())
-      .def("_step_commands", &PySimulation::step, py::arg("commands"))
-      .def_property_readonly("steps", [](const PySimulation& s) { return s.sim().spec().steps(); },
-                             "K: the last step (states k = 0..K).")
-      .def_property_readonly("dt", [](const PySimulation& s) { return s.sim().spec().dt; })
-      .def_property_readonly("seed", [](const PySimulation& s) { return s.sim().spec().seed; })
+      .def(
+          "_step_commands",
+          [](py::handle self, py::handle commands) { simulationOf(self).step(commands); },
+          py::arg("commands"))
+      .def_property_readonly(
+          "steps",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return s.sim().spec().steps();
+          },
+          "K: the last step (states k = 0..K).")
+      .def_property_readonly("dt",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.sim().spec().dt;
+                             })
+      .def_property_readonly("seed",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.sim().spec().seed;
+                             })
       .def_property_readonly("n_uavs",
-                             [](const PySimulation& s) { return s.record().uavs.size(); })
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.record().uavs.size();
+                             })
       .def_property_readonly("n_targets",
-                             [](const PySimulation& s) { return s.record().targets.size(); })
-      .def_property_readonly("v_max",
-                             [](const PySimulation& s) {
-                               py::array_t<double> out(static_cast<py::ssize_t>(s.record().uavs.size()));
-                               for (std::size_t i = 0; i < s.sim().spec().uavs.size(); ++i)
-                                 out.mutable_at(i) = s.sim().spec().uavs[i].body.v_max;
-                               return out;
-                             },
-                             "Each UAV's speed limit (m/s).")
-      .def_property_readonly("labels",
-                             [](const PySimulation& s) { return s.sim().spec().labels; },
-                             "Label names by id (labels[0] is \"tree\").")
-      .def("record_line",
-           [](const PySimulation& s) { return scenarios::recordLine(s.sim().spec().labels, s.record()); },
-           "The last step as the line record.jsonl holds for it (JSON text).")
-      .def("render", &PySimulation::render, py::arg("width") = 800, py::arg("height") = 600,
-           "The last step drawn by the CLI's renderer (OSMesa), an (height, width, 3) uint8 array.");
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.record().targets.size();
+                             })
+      .def_property_readonly(
+          "v_max",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            py::array_t<double> out(static_cast<py::ssize_t>(s.record().uavs.size()));
+            for (std::size_t i = 0; i < s.sim().spec().uavs.size(); ++i)
+              out.mutable_at(i) = s.sim().spec().uavs[i].body.v_max;
+            return out;
+          },
+          "Each UAV's speed limit (m/s).")
+      .def_property_readonly(
+          "labels",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return s.sim().spec().labels;
+          },
+          "Label names by id (labels[0] is \"tree\").")
+      .def(
+          "record_line",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return scenarios::recordLine(s.sim().spec().labels, s.record());
+          },
+          "The last step as the line record.jsonl holds for it (JSON text).")
+      .def(
+          "render",
+          [](py::handle self, int width, int height) {
+            return simulationOf(self).render(width, height);
+          },
+          py::arg("width") = 800, py::arg("height") = 600,
+          "The last step drawn by the CLI's renderer (OSMesa), an (height, width, 3) uint8 array.");
   bindReaders(cls);
   addFastMethods(cls);
 }

@@ -13,9 +13,15 @@ namespace py = pybind11;
 namespace canopy::python {
 namespace {
 
-/// The C++ object behind `self` (a canopy.Simulation: the descriptor has checked the type), or
-/// null with a Python error set when __init__ has not run.
-PySimulation* simulationOf(PyObject* self) {
+PyTypeObject* simulation_type = nullptr;  // canopy.Simulation, set by addFastMethods
+
+/// The C++ object behind `self`, or null with a Python error set when `self` is not a
+/// canopy.Simulation or its __init__ has not run.
+PySimulation* simulationOrNull(PyObject* self) {
+  if (!simulation_type || !PyObject_TypeCheck(self, simulation_type)) {
+    PyErr_SetString(PyExc_TypeError, "expected a canopy.Simulation");
+    return nullptr;
+  }
   auto* instance = reinterpret_cast<py::detail::instance*>(self);
   const py::detail::value_and_holder v = instance->get_value_and_holder();
   if (!v.holder_constructed()) {
@@ -46,7 +52,7 @@ PyObject* step(PyObject* self, PyObject* const* args, Py_ssize_t nargs) {
     static PyObject* name = PyUnicode_InternFromString("_step_commands");
     return PyObject_CallMethodOneArg(self, name, args[0]);
   }
-  PySimulation* sim = simulationOf(self);
+  PySimulation* sim = simulationOrNull(self);
   if (!sim) return nullptr;
   return guarded([&] {
     sim->step(py::none());
@@ -55,24 +61,24 @@ PyObject* step(PyObject* self, PyObject* const* args, Py_ssize_t nargs) {
 }
 
 PyObject* done(PyObject* self, void*) {
-  PySimulation* sim = simulationOf(self);
+  PySimulation* sim = simulationOrNull(self);
   if (!sim) return nullptr;
   return PyBool_FromLong(sim->sim().done());
 }
 
 PyObject* stepIndex(PyObject* self, void*) {
-  PySimulation* sim = simulationOf(self);
+  PySimulation* sim = simulationOrNull(self);
   return sim ? PyLong_FromLong(sim->record().step) : nullptr;
 }
 
 PyObject* time(PyObject* self, void*) {
-  PySimulation* sim = simulationOf(self);
+  PySimulation* sim = simulationOrNull(self);
   return sim ? PyFloat_FromDouble(sim->record().time) : nullptr;
 }
 
 template <py::object (*Read)(PySimulation&)>
 PyObject* view(PyObject* self, void*) {
-  PySimulation* sim = simulationOf(self);
+  PySimulation* sim = simulationOrNull(self);
   if (!sim) return nullptr;
   return guarded([&] { return Read(*sim).release().ptr(); });
 }
@@ -84,18 +90,27 @@ PyMethodDef kStep{"step", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*
 
 }  // namespace
 
+PySimulation& simulationOf(py::handle self) {
+  PySimulation* sim = simulationOrNull(self.ptr());
+  if (!sim) throw py::error_already_set();
+  return *sim;
+}
+
 void addFastMethods(py::class_<PySimulation>& cls) {
   auto* type = reinterpret_cast<PyTypeObject*>(cls.ptr());
+  simulation_type = type;
   static PyGetSetDef getters[] = {
       {"done", &done, nullptr, "True once steps 0..K have all run.", nullptr},
       {"step_index", &stepIndex, nullptr, "k of the last step run.", nullptr},
       {"time", &time, nullptr, "t = k·dt of the last step (s).", nullptr},
       {"uav_states", &view<&uavStatesView>, nullptr,
        "(n_uav, 3) x, y (m), yaw (rad): a read-only view of the last step (the same array every "
-       "step)", nullptr},
+       "step)",
+       nullptr},
       {"target_states", &view<&targetStatesView>, nullptr,
        "(n_target, 4) x, y (m), vx, vy (m/s): a read-only view of the last step (the same array "
-       "every step)", nullptr},
+       "every step)",
+       nullptr},
   };
   for (PyGetSetDef& getter : getters)
     cls.attr(getter.name) = py::reinterpret_steal<py::object>(PyDescr_NewGetSet(type, &getter));

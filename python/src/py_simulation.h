@@ -3,12 +3,12 @@
 // (the initial sensing), so the readers always have a step to show and every step() advances
 // the world by dt; step(commands) replaces the planner's (or path's) command for that one step
 // (Simulation::commandNext), clamped to each UAV's v_max.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
 #include <cstdint>
 #include <memory>
 #include <optional>
-
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
 
 #include "agents/planning/team_planner.h"
 #include "render/canvas.h"
@@ -54,6 +54,11 @@ class PySimulation {
   std::optional<render::Canvas> canvas_;           // GL starts on the first render only
   render::Image image_;
 };
+
+/// The C++ object behind a canopy.Simulation; throws std::runtime_error when its __init__ has
+/// not run (Simulation.__new__ alone leaves pybind11's storage unconstructed), so that every
+/// method checks before it reads (fast_methods.cpp).
+PySimulation& simulationOf(pybind11::handle self);
 
 /// The readers (bind_readers.cpp): numpy views of the truth, copies of the variable-size lists.
 void bindReaders(pybind11::class_<PySimulation>& cls);

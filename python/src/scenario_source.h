@@ -2,12 +2,12 @@
 // A Python Scenario (python/canopy/scenario.py) as the loader takes it: its configuration as
 // JSON text, the file that names it in errors and anchors its relative includes, and the extra
 // folders it may read from.
+#include <pybind11/pybind11.h>
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <pybind11/pybind11.h>
 
 #include "scenarios/loader.h"
 #include "scenarios/spec.h"

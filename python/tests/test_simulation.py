@@ -172,3 +172,20 @@ def test_a_simulation_per_episode_reuses_the_loaded_scenario():
     s["uavs.0.v_max"] = 2.0
     sim = canopy.Simulation(s)
     assert s._spec() is not first and list(sim.v_max) == [2.0, 5.0]
+
+
+@pytest.mark.parametrize("use", [
+    lambda s: s.step(), lambda s: s.step([[0, 0], [0, 0]]), lambda s: s.done, lambda s: s.uav_states,
+    lambda s: s.target_states, lambda s: s.uav_velocities, lambda s: s.tracks(0), lambda s: s.scan(0),
+    lambda s: s.occlusion_map(0), lambda s: s.plan, lambda s: s.v_max, lambda s: s.render(64, 64),
+    lambda s: s.record_line(), lambda s: s.time,
+])
+def test_a_simulation_without_init_raises_instead_of_crashing(use):
+    s = canopy.Simulation.__new__(canopy.Simulation)
+    with pytest.raises(RuntimeError, match="not initialised"):
+        use(s)
+
+
+def test_methods_refuse_other_objects_as_self():
+    with pytest.raises(TypeError, match="expected a canopy.Simulation"):
+        canopy.Simulation.tracks(42, 0)
