@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/frame_view.h"
 #include "app/help.h"
+#include "app/frame_observer.h"
 #include "app/run_report.h"
 #include "core/output_file.h"
 #include "core/printable.h"
@@ -22,36 +23,6 @@ std::string getenvOr(const char* name, const char* fallback) {
   const char* value = std::getenv(name);
   return value ? value : fallback;
 }
-
-render::SceneModel sceneModel(const scenarios::ScenarioSpec& spec, const Aabb& view) {
-  render::SceneModel model;
-  model.view = view;
-  model.plans = spec.planner.algorithm != agents::PlannerAlgorithm::none;
-  model.title = spec.name;
-  model.aoi = spec.aoi;
-  model.trees = spec.trees;
-  for (const scenarios::UavSpec& uav : spec.uavs) {
-    model.sensors.push_back(uav.sensor);
-    model.uav_names.push_back(uav.name);
-  }
-  for (const scenarios::TargetSpec& target : spec.targets)
-    model.target_names.push_back(target.name);
-  return model;
-}
-
-// The frames as one more observer of the run's steps.
-class FrameObserver final : public scenarios::StepObserver {
- public:
-  explicit FrameObserver(render::FrameWriter& writer) : writer_(writer) {}
-  void onStep(const scenarios::StepRecord& record) override {
-    scenarios::truthSnapshot(record, truth_);
-    writer_.onStep(truth_, record.beliefs);
-  }
-
- private:
-  render::FrameWriter& writer_;
-  world::WorldSnapshot truth_;  // the record's truth as the renderer takes it (storage reused)
-};
 
 }  // namespace
 

@@ -207,18 +207,30 @@ fs::path resolveScenario(const std::string& scenario) {
                       "the built-in library (see `canopy list`)");
 }
 
-std::vector<world::TreeDef> loadLayout(const std::string& path) {
-  Json document = internal::readJsonFile(path);
-  Json list =
+namespace {
+
+std::vector<world::TreeDef> readLayout(const Json& document, const std::string& file,
+                                       const internal::LoadContext* context) {
+  const Json list =
       document.is_object() && document.contains("occluders") ? document["occluders"] : document;
   std::vector<world::TreeDef> trees;
   Json effective = Json::array();
-  std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(path)).string()};
+  std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
   const Aabb everywhere{Vec2::Constant(-1e9), Vec2::Constant(1e9)};
-  const internal::LoadContext context = internal::loadContextFor(path, {});
-  internal::readOccluders(Field(list, path, "occluders", nullptr, &context), everywhere, trees,
+  internal::readOccluders(Field(list, file, "occluders", nullptr, context), everywhere, trees,
                           effective, include_stack);
   return trees;
+}
+
+}  // namespace
+
+std::vector<world::TreeDef> loadLayout(const std::string& path) {
+  const internal::LoadContext context = internal::loadContextFor(path, {});
+  return readLayout(internal::readJsonFile(path), path, &context);
+}
+
+std::vector<world::TreeDef> layoutFromText(const std::string& text, const std::string& file) {
+  return readLayout(internal::parseJson(text, file), file, nullptr);
 }
 
 }  // namespace canopy::scenarios

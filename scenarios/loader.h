@@ -46,5 +46,8 @@ std::filesystem::path resolveScenario(const std::string& scenario);
 /// The occluders a layout file describes (the same grammar as a scenario's "occluders" list),
 /// generated: for tools and tests.
 std::vector<world::TreeDef> loadLayout(const std::string& path);
+/// The same from text (a layout document or a bare occluder list); `file` names it in errors.
+/// No includes are read (there is no folder to read them from).
+std::vector<world::TreeDef> layoutFromText(const std::string& text, const std::string& file);
 
 }  // namespace canopy::scenarios

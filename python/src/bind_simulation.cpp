@@ -1,0 +1,185 @@
+// canopy.Simulation: stepping with the scenario's planner or with commands from Python.
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "app/frame_observer.h"
+#include "app/frame_view.h"
+#include "python/src/bindings.h"
+#include "python/src/py_simulation.h"
+#include "python/src/scenario_source.h"
+#include "scenarios/recorder.h"
+
+namespace py = pybind11;
+
+namespace canopy::python {
+namespace {
+
+std::string shapeText(const py::array& a) {
+  std::ostringstream text;
+  text << "(";
+  for (py::ssize_t d = 0; d < a.ndim(); ++d) text << (d ? ", " : "") << a.shape(d);
+  text << (a.ndim() == 1 ? ",)" : ")");
+  return text.str();
+}
+
+}  // namespace
+
+PySimulation::PySimulation(scenarios::ScenarioSpec spec)
+    : sim_(std::make_shared<scenarios::Simulation>(std::move(spec))) {
+  sim_->tick();  // step 0: the initial sensing, no motion
+  keepPlan();
+}
+
+py::object PySimulation::viewOwner() {
+  if (!owner_) {
+    auto* share = new std::shared_ptr<scenarios::Simulation>(sim_);
+    owner_ = py::capsule(
+        share, [](void* p) { delete static_cast<std::shared_ptr<scenarios::Simulation>*>(p); });
+  }
+  return owner_;
+}
+
+void PySimulation::keepPlan() {
+  if (sim_->lastStep().plan) last_plan_ = *sim_->lastStep().plan;
+}
+
+void PySimulation::applyCommands(const py::handle& commands) {
+  using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  const Array a = Array::ensure(commands);
+  const auto n = static_cast<py::ssize_t>(sim_->spec().uavs.size());
+  if (!a) {
+    throw py::type_error("Simulation.step: commands: expected an array of numbers of shape (" +
+                         std::to_string(n) + ", 2) (m/s), got " +
+                         py::str(py::type::of(commands)).cast<std::string>());
+  }
+  if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 2) {
+    throw py::value_error("Simulation.step: commands: expected shape (" + std::to_string(n) +
+                          ", 2) (one velocity per UAV, m/s), got " + shapeText(a));
+  }
+  const auto v = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    if (!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1))) {
+      std::ostringstream text;
+      text << "Simulation.step: commands[" << i << "]: expected a finite velocity (m/s), got ("
+           << v(i, 0) << ", " << v(i, 1) << ")";
+      throw py::value_error(text.str());
+    }
+  }
+  for (py::ssize_t i = 0; i < n; ++i)
+    sim_->commandNext(static_cast<int>(i), Vec2(v(i, 0), v(i, 1)));
+}
+
+void PySimulation::step(const py::handle& commands) {
+  if (sim_->done()) {
+    throw std::runtime_error("Simulation.step: the run is done (it ended at step " +
+                             std::to_string(sim_->spec().steps()) + ")");
+  }
+  if (!commands.is_none()) applyCommands(commands);
+  sim_->tick();
+  keepPlan();
+}
+
+py::array_t<std::uint8_t> PySimulation::render(int width, int height) {
+  if (width < render::kMinImageSide || width > render::kMaxImageSide ||
+      height < render::kMinImageSide || height > render::kMaxImageSide) {
+    throw py::value_error("Simulation.render: expected width and height in [" +
+                          std::to_string(render::kMinImageSide) + ", " +
+                          std::to_string(render::kMaxImageSide) + "] px, got " +
+                          std::to_string(width) + " x " + std::to_string(height));
+  }
+  const render::ImageSize size{width, height};
+  if (!scene_model_) scene_model_ = app::sceneModel(sim_->spec(), app::viewFor("action", sim_->spec()));
+  if (!canvas_ || canvas_->size() != size) canvas_.emplace(size);
+  world::WorldSnapshot truth;
+  scenarios::truthSnapshot(record(), truth);
+  const render::Scene scene =
+      render::buildScene(*scene_model_, truth, record().beliefs, render::TargetTrails{}, size);
+  canvas_->draw(scene, image_);
+  py::array_t<std::uint8_t> out({height, width, 3});
+  std::copy(image_.rgb.begin(), image_.rgb.end(), out.mutable_data());
+  return out;
+}
+
+void bindSimulation(py::module_& m) {
+  py::class_<PySimulation> cls(m, "Simulation", R"(A scenario stepped from Python.
+
+Simulation(scenario, seed=None) runs step 0 (the initial sensing); each step() then advances the
+world by dt with the scenario's planner or script, and step(commands) with an (n_uav, 2) array of
+velocities (m/s, clamped to each UAV's v_max) instead, for that step only. The planner still plans
+on its schedule (its plans are recorded as if flown). The readers show the last step.)");
+  cls.def(py::init([](const py::object& scenario, std::optional<std::uint64_t> seed) {
+            return std::make_unique<PySimulation>(specOf(scenario, seed));
+          }),
+          py::arg("scenario"), py::arg("seed") = py::none())
+      .def(
+          "_step_commands",
+          [](py::handle self, py::handle commands) { simulationOf(self).step(commands); },
+          py::arg("commands"))
+      .def_property_readonly(
+          "steps",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return s.sim().spec().steps();
+          },
+          "K: the last step (states k = 0..K).")
+      .def_property_readonly("dt",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.sim().spec().dt;
+                             })
+      .def_property_readonly("seed",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.sim().spec().seed;
+                             })
+      .def_property_readonly("n_uavs",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.record().uavs.size();
+                             })
+      .def_property_readonly("n_targets",
+                             [](py::handle self) {
+                               const PySimulation& s = simulationOf(self);
+                               return s.record().targets.size();
+                             })
+      .def_property_readonly(
+          "v_max",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            py::array_t<double> out(static_cast<py::ssize_t>(s.record().uavs.size()));
+            for (std::size_t i = 0; i < s.sim().spec().uavs.size(); ++i)
+              out.mutable_at(i) = s.sim().spec().uavs[i].body.v_max;
+            return out;
+          },
+          "Each UAV's speed limit (m/s).")
+      .def_property_readonly(
+          "labels",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return s.sim().spec().labels;
+          },
+          "Label names by id (labels[0] is \"tree\").")
+      .def(
+          "record_line",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            return scenarios::recordLine(s.sim().spec().labels, s.record());
+          },
+          "The last step as the line record.jsonl holds for it (JSON text).")
+      .def(
+          "render",
+          [](py::handle self, int width, int height) {
+            return simulationOf(self).render(width, height);
+          },
+          py::arg("width") = 800, py::arg("height") = 600,
+          "The last step drawn by the CLI's renderer (OSMesa), an (height, width, 3) uint8 array.");
+  bindReaders(cls);
+  addFastMethods(cls);
+}
+
+}  // namespace canopy::python

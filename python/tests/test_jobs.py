@@ -1,0 +1,67 @@
+"""Whole jobs from Python write what the command line writes."""
+import json
+
+import numpy as np
+
+import canopy
+
+
+def _summary_without_wall_times(path):
+    summary = json.loads(path.read_text())
+    summary.pop("timing", None)  # wall times
+    return summary
+
+
+def test_run_writes_the_clis_record(tmp_path, cli):
+    summary = canopy.run("demo", tmp_path / "py", seed=9)
+    cli("run", "demo", "--seed", "9", "--out", tmp_path / "cli")
+    for name in ("record.jsonl",):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
+    assert summary == json.loads((tmp_path / "py" / "summary.json").read_text())
+    assert (_summary_without_wall_times(tmp_path / "py" / "summary.json") ==
+            _summary_without_wall_times(tmp_path / "cli" / "summary.json"))
+    manifest = json.loads((tmp_path / "py" / "manifest.json").read_text())
+    assert manifest["seed"] == 9 and manifest["effective_config"]["seed"] == 9
+
+
+def test_run_writes_frames(tmp_path):
+    s = canopy.load("demo", overrides={"clock.duration": 1.0})  # K = 5
+    canopy.run(s, tmp_path, frames=True, frame_every=2, size=(64, 48))
+    frames = sorted(p.name for p in (tmp_path / "frames").iterdir())
+    assert frames == ["frame_000000.png", "frame_000002.png", "frame_000004.png"]
+
+
+def _sweep_file(tmp_path):
+    path = tmp_path / "sweep.json"
+    path.write_text(json.dumps({
+        "name": "tiny", "scenario": "demo", "trials": 2, "seed": 4,
+        "set": {"clock.duration": 2.0},
+        "axes": [{"path": "uavs.0.v_max", "values": [2, 4]}]}))
+    return path
+
+
+def test_sweep_writes_the_clis_trials(tmp_path, cli):
+    file = _sweep_file(tmp_path)
+    assert canopy.sweep(file, tmp_path / "py", jobs=2) == 4  # 2 configurations × 2 trials
+    assert canopy.sweep(file, tmp_path / "py") == 0          # resumed: nothing left to run
+    cli("sweep", file, "--out", tmp_path / "cli", "--jobs", "1")
+    py_trials = sorted(p.relative_to(tmp_path / "py") for p in (tmp_path / "py" / "trials").rglob("*") if p.is_file())
+    cli_trials = sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli" / "trials").rglob("*") if p.is_file())
+    assert py_trials == cli_trials and len(py_trials) == 4
+    for rel in py_trials:
+        assert (tmp_path / "py" / rel).read_bytes() == (tmp_path / "cli" / rel).read_bytes()
+
+
+def test_analyze_returns_tables_as_arrays(tmp_path):
+    file = _sweep_file(tmp_path)
+    canopy.sweep(file, tmp_path / "s", jobs=2)
+    tables = canopy.analyze(tmp_path / "s")
+    assert {"coverage", "tracking"} <= set(tables)
+    coverage = tables["coverage"]
+    # demo: 3 targets; duration 2 s at dt 0.2 → steps 0..10; 2 configurations.
+    assert len(coverage["step"]) == 2 * 3 * 11
+    assert coverage["mean_coverage"].dtype == np.float64
+    assert set(coverage["config"]) == set(np.unique(coverage["config"])) and len(set(coverage["config"])) == 2
+    tracking = tables["tracking"]
+    np.testing.assert_allclose(np.unique(tracking["t_s"]), np.arange(11) * 0.2, atol=1e-9)
+    assert (tmp_path / "s" / "analysis" / "coverage.csv").exists()

@@ -1,0 +1,123 @@
+"""Scenarios as objects: load with overrides, edit, validate with the CLI's messages, save."""
+import json
+import math
+
+import numpy as np
+import pytest
+
+import canopy
+
+
+def test_load_applies_overrides_and_fills_defaults():
+    s = canopy.load("demo", overrides={"planner.horizon": 1, "uavs.1.v_max": 2.5})
+    assert s["planner.horizon"] == 1
+    assert s.uavs[1]["v_max"] == 2.5
+    # demo.json says nothing of fusion.rounds; the loader's default (5) is filled in.
+    assert s["fusion.rounds"] == 5
+    assert s.name == "demo" and s.file.endswith("scenarios/library/demo.json")
+
+
+def test_unknown_override_raises_naming_the_field():
+    with pytest.raises(canopy.ScenarioError) as e:
+        canopy.load("demo", overrides={"planner.horizonn": 1})
+    assert "planner.horizonn" in str(e.value)
+
+
+def test_validate_error_is_the_clis(tmp_path, cli):
+    s = canopy.load("demo")
+    s["uavs.0.v_max"] = -1.0
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(s.config))
+    bad = canopy.Scenario(json.loads(path.read_text()), file=path)
+    with pytest.raises(canopy.ScenarioError) as e:
+        bad.validate()
+    assert e.value.file == str(path)
+    assert e.value.field == "uavs[0].v_max"
+    done = cli("validate", path, check=False)
+    assert done.returncode == 2
+    assert done.stderr.strip() == f"canopy: {e.value}"
+
+
+def test_wrong_type_names_the_field():
+    s = canopy.load("demo")
+    s["clock.dt"] = "fast"
+    with pytest.raises(canopy.ScenarioError) as e:
+        s.validate()
+    assert e.value.field == "clock.dt"
+
+
+def test_missing_path_is_a_key_error():
+    s = canopy.load("demo")
+    with pytest.raises(KeyError, match="no such field"):
+        s["planner.pso.nothing.here"] = 1
+    with pytest.raises(KeyError, match="no element 7"):
+        s["uavs.7"] = {}
+
+
+def test_saved_file_is_valid_for_the_cli_and_loads_back_equal(tmp_path, cli):
+    s = canopy.load("demo")
+    s.occluders.append(canopy.forest.disc((10, -10), 2.0))
+    s["targets.0.name"] = "walker"
+    path = s.save(tmp_path / "edited.json")
+    cli("validate", path)
+    again = canopy.load(path)
+    assert again.config == s.filled().config
+    assert again.occluders[-1] == {"type": "disc", "centre": [10.0, -10.0], "radius": 2.0}
+
+
+def test_invalid_scenario_is_not_saved(tmp_path):
+    s = canopy.load("demo")
+    s["aoi"] = [0, 0, -1, 1]
+    with pytest.raises(canopy.ScenarioError, match="aoi"):
+        s.save(tmp_path / "x.json")
+    assert not list(tmp_path.iterdir())
+
+
+def test_poisson_equals_the_cli_forest(cli):
+    trees = canopy.forest.poisson((0, 0, 100, 100), 0.01, (1, 2.5), seed=3)
+    printed = json.loads(cli("forest", "--aoi", "0,0,100,100", "--lambda", "0.01", "--radius",
+                             "1,2.5", "--seed", "3").stdout)["occluders"]
+    assert trees == printed
+
+
+def test_poisson_statistics():
+    # λ·A = 0.02 · 200 · 200 = 800 trees expected; a Poisson count has σ = √800 ≈ 28.
+    trees = canopy.forest.poisson((0, 0, 200, 200), 0.02, (1.0, 2.0), seed=11)
+    assert abs(len(trees) - 800) < 4 * math.sqrt(800)
+    c = np.array([t["centre"] for t in trees])
+    r = np.array([t["radius"] for t in trees])
+    assert (c >= 0).all() and (c <= 200).all()
+    assert r.min() >= 1.0 and r.max() <= 2.0
+
+
+def test_poisson_min_gap_keeps_crowns_apart():
+    trees = canopy.forest.poisson((0, 0, 100, 100), 0.02, 1.5, seed=4, min_gap=2.0)
+    c = np.array([t["centre"] for t in trees])
+    d = np.linalg.norm(c[:, None, :] - c[None, :, :], axis=2) + np.eye(len(c)) * 1e9
+    assert d.min() >= 2 * 1.5 + 2.0 - 1e-9
+    # Matérn II for equal radii: (1 − exp(−λπD²)) / (πD²) per m², D = 2r + gap = 5 m.
+    expected = (1 - math.exp(-0.02 * math.pi * 25)) / (math.pi * 25) * 100 * 100
+    assert abs(len(trees) - expected) < 4 * math.sqrt(expected)
+
+
+def test_grid_positions_by_hand():
+    trees = canopy.forest.grid(origin=(1, 2), spacing=(10, 5), rows=2, cols=3, radius=1.5)
+    centres = [t["centre"] for t in trees]
+    expected = [[1 + 10 * c, 2 + 5 * r] for r in range(2) for c in range(3)]
+    assert sorted(centres) == sorted(expected)
+    assert all(t["radius"] == 1.5 for t in trees)
+
+
+def test_cluster_trees_stay_in_the_region():
+    trees = canopy.forest.cluster((0, 0, 300, 300), 1e-4, 8, 5.0, 1.0, seed=2)
+    c = np.array([t["centre"] for t in trees])
+    assert len(trees) > 0 and (c >= 0).all() and (c <= 300).all()
+
+
+def test_generator_errors_name_the_generator_and_field():
+    with pytest.raises(canopy.ScenarioError) as e:
+        canopy.forest.poisson((0, 0, 10, 10), -1, 1)
+    assert e.value.file == "canopy.forest.poisson"
+    assert "lambda" in e.value.field
+    with pytest.raises(canopy.ScenarioError, match="radius"):
+        canopy.forest.grid((0, 0), (1, 1), 2, 2, radius=(3, 1))
