@@ -49,11 +49,17 @@ inline Vec2 unitHeading(double theta) {
   const double nd = static_cast<double>(n);
   const double r = (theta - nd * kHalfPi1) - nd * kHalfPi1t;  // θ − n π/2, |r| ≤ π/4
   const double r2 = r * r;
-  double sin_tail = kSin[0], cos_tail = kCos[0];  // Horner in r²
-  for (std::size_t k = 1; k < std::size(kSin); ++k) sin_tail = kSin[k] + r2 * sin_tail;
-  for (std::size_t k = 1; k < std::size(kCos); ++k) cos_tail = kCos[k] + r2 * cos_tail;
-  const double sin_r = r + r * r2 * sin_tail;
-  const double cos_r = 1.0 + r2 * cos_tail;
+  // Horner in r², both series at once in the two lanes of a pair (each lane the scalar steps in
+  // the same order, so the same bits); cos has one coefficient more, taken first.
+  using Pair = double __attribute__((vector_size(16)));
+  static_assert(std::size(kCos) == std::size(kSin) + 1);
+  Pair tail = {kSin[0], kCos[1] + r2 * kCos[0]};  // (sin tail, cos tail)
+  for (std::size_t k = 1; k < std::size(kSin); ++k) {
+    const Pair coefficient = {kSin[k], kCos[k + 1]};
+    tail = coefficient + r2 * tail;
+  }
+  const double sin_r = r + r * r2 * tail[0];
+  const double cos_r = 1.0 + r2 * tail[1];
   switch (n & 3) {  // θ = r + n π/2
     case 0:
       return {cos_r, sin_r};

@@ -3,10 +3,83 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 namespace canopy::scenarios::internal {
+namespace {
+
+/// Writes the finite `value` at `out` in dump()'s layout and returns the end (at most 32 chars).
+/// The digits are the shortest that read back exactly (std::to_chars, Ryu: the closest such);
+/// the layout is nlohmann's format_buffer with its limits (min_exp = −4, max_exp = 15):
+/// k digits d₁…d_k and decimal point position n (value = 0.d₁…d_k · 10ⁿ) give
+///   "ddd000.0" (k ≤ n ≤ 15), "dd.dd" (0 < n ≤ 15), "0.000dd" (−4 < n ≤ 0), else "d.ddde±XX".
+char* formatDouble(char* out, double value) {
+  if (std::signbit(value)) {
+    *out++ = '-';
+    value = -value;
+  }
+  if (value == 0.0) {  // dump(): 0.0 and -0.0
+    std::memcpy(out, "0.0", 4);
+    return out + 3;
+  }
+  char sci[32];  // "d.ddde±XX" or "d.ddde±XXX"
+  const char* end =
+      std::to_chars(sci, sci + sizeof sci, value, std::chars_format::scientific).ptr;
+  const bool three = end[-4] != 'e';  // a three-digit exponent
+  const char* e = end - (three ? 5 : 4);
+  int exponent = (e[2] - '0') * 10 + (e[3] - '0');  // value = d₁.d₂… · 10^exponent
+  if (three) exponent = exponent * 10 + (e[4] - '0');
+  if (e[1] == '-') exponent = -exponent;
+  // The digits d₁…d_k contiguous: d₁ moves right onto the point.
+  char* digits = sci;
+  int k = 1;
+  if (e != sci + 1) {
+    sci[1] = sci[0];
+    digits = sci + 1;
+    k = static_cast<int>(e - digits);
+  }
+  const int n = exponent + 1;
+  constexpr int kMinExp = -4, kMaxExp = 15;
+  if (0 < n && n <= kMaxExp) {
+    if (k <= n) {  // "ddd000.0"
+      for (int i = 0; i < k; ++i) *out++ = digits[i];
+      for (int i = k; i < n; ++i) *out++ = '0';
+      *out++ = '.';
+      *out++ = '0';
+      return out;
+    }
+    for (int i = 0; i < n; ++i) *out++ = digits[i];  // "dd.dd"
+    *out++ = '.';
+    for (int i = n; i < k; ++i) *out++ = digits[i];
+    return out;
+  }
+  if (kMinExp < n && n <= 0) {  // "0.000dd"
+    *out++ = '0';
+    *out++ = '.';
+    for (int i = n; i < 0; ++i) *out++ = '0';
+    for (int i = 0; i < k; ++i) *out++ = digits[i];
+    return out;
+  }
+  *out++ = digits[0];  // "d.ddde±XX": nlohmann's append_exponent, a sign and ≥ 2 digits
+  if (k > 1) {
+    *out++ = '.';
+    for (int i = 1; i < k; ++i) *out++ = digits[i];
+  }
+  *out++ = 'e';
+  *out++ = exponent < 0 ? '-' : '+';
+  int magnitude = exponent < 0 ? -exponent : exponent;
+  if (magnitude >= 100) {
+    *out++ = static_cast<char>('0' + magnitude / 100);
+    magnitude %= 100;
+  }
+  *out++ = static_cast<char>('0' + magnitude / 10);
+  *out++ = static_cast<char>('0' + magnitude % 10);
+  return out;
+}
+
+}  // namespace
 
 void JsonLine::separate() {
   if (after_key_) {
@@ -47,8 +120,8 @@ void JsonLine::number(double value) {
     out_ += "null";
     return;
   }
-  std::array<char, 64> buffer;  // dump()'s own buffer size
-  char* end = nlohmann::detail::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  std::array<char, 64> buffer;
+  const char* end = formatDouble(buffer.data(), value);
   out_.append(buffer.data(), static_cast<std::size_t>(end - buffer.data()));
 }
 

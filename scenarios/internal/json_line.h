@@ -1,10 +1,11 @@
 #pragma once
 // A JSON text written straight into a string, value by value, without a document object: the
-// record's per-step line (recorder.cpp). Its bytes are those nlohmann::json::dump() gives for the
-// same values (compact, no spaces): doubles through nlohmann's own shortest round-trip formatter
-// (nlohmann::detail::to_chars, what dump() calls), non-finite doubles as null, integers in
-// decimal. Keys are the caller's literals and must be written in dump()'s order (sorted by
-// byte); strings from user files go through dump() itself (JsonLine::escaped).
+// record's per-step line (recorder.cpp). Its format is nlohmann::json::dump()'s (compact, no
+// spaces; numbers laid out as dump() lays them out, non-finite doubles as null, integers in
+// decimal), but a double's digits are the shortest that read back exactly (std::to_chars), where
+// dump()'s Grisu2 sometimes writes one digit more. Keys are the caller's literals and must be
+// written in dump()'s order (sorted by byte); strings from user files go through dump() itself
+// (JsonLine::escaped).
 #include <cstdint>
 #include <string>
 #include <string_view>
