@@ -6,8 +6,8 @@
 #include <sstream>
 #include <vector>
 
-#include "app/cli.h"
 #include "core/printable.h"
+#include "scenarios/error.h"
 #include "sensing/footprint.h"
 
 namespace canopy::app {
@@ -54,7 +54,7 @@ Aabb viewFor(const std::string& text, const scenarios::ScenarioSpec& spec) {
     v.push_back(x);
   }
   if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) {
-    usageError("--view", "expected aoi, action or x0,y0,x1,y1 (m) with x1 > x0 and y1 > y0, got '" +
+    throw scenarios::ScenarioError("command line", "--view", "expected aoi, action or x0,y0,x1,y1 (m) with x1 > x0 and y1 > y0, got '" +
                              printable(text, 100) + "'");
   }
   return {Vec2(v[0], v[1]), Vec2(v[2], v[3])};
