@@ -107,8 +107,8 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
       effective["seed"] = spec.seed;
     }
   });
-  const bool frame_ok =
-      attempt([&] { spec.aoi = readAoi(root); }) & attempt([&] { readClock(root, spec); });
+  const bool aoi_ok = attempt([&] { spec.aoi = readAoi(root); });
+  const bool frame_ok = attempt([&] { readClock(root, spec); }) && aoi_ok;  // both read
   if (!frame_ok) throw ScenarioErrors(std::move(errors));  // everything below needs both
   std::string clutter_label;
   bool bodies_ok = attempt([&] { clutter_label = internal::readSensing(root, spec); });
