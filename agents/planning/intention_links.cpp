@@ -14,16 +14,17 @@ void IntentionLinks::beginEpoch(int epoch, std::span<const UavState> uavs) {
   positions_.resize(uavs.size());
   for (std::size_t i = 0; i < uavs.size(); ++i) positions_[i] = uavs[i].position;
   // Deliver, in the order sent, every message due by now; keep the rest in flight.
-  std::vector<InFlight> still_in_flight;
-  for (InFlight& f : in_flight_) {
-    if (f.arrival_epoch <= epoch) {
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < in_flight_.size(); ++k) {
+    if (in_flight_[k].arrival_epoch <= epoch) {
       ++counts_.late;
-      deliver(f.receiver, f.message);
+      deliver(in_flight_[k].receiver, in_flight_[k].message);
     } else {
-      still_in_flight.push_back(std::move(f));
+      if (kept != k) in_flight_[kept] = std::move(in_flight_[k]);  // never a self-move
+      ++kept;
     }
   }
-  in_flight_ = std::move(still_in_flight);
+  in_flight_.resize(kept);
 }
 
 void IntentionLinks::send(const IntentionMessage& message, int to) {
