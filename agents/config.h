@@ -1,6 +1,8 @@
 #pragma once
 // Settings of the per-UAV stack, as read from a scenario's `tracking`, `fusion` and `planner`
 // sections. Every default is the one algorithms.md states.
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -104,5 +106,10 @@ struct PlannerConfig {
   JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
   int joint_rounds = 2;                           // block coordinate rounds over all UAVs
 };
+
+/// Simulation steps between plan instants: replan_period / dt, rounded, at least 1.
+inline int stepsPerReplan(const PlannerConfig& config, double dt) {
+  return std::max(1, static_cast<int>(std::lround(config.replan_period / dt)));
+}
 
 }  // namespace canopy::agents

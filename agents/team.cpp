@@ -1,7 +1,5 @@
 #include "agents/team.h"
 
-#include <algorithm>
-#include <cmath>
 #include <utility>
 
 namespace canopy::agents {
@@ -12,8 +10,7 @@ Team::Team(const TeamConfig& config)
       planner_(config.planner, config.tracking.sigma_a, config.seed,
                planning::LinkConfig{config.fusion.comm_range, config.fusion.comm_drop,
                                     config.fusion.comm_latency,
-                                    std::max(1, static_cast<int>(std::lround(
-                                                    config.planner.replan_period / config.dt)))}),
+                                    stepsPerReplan(config.planner, config.dt)}),
       a_priori_(config.true_trees),
       uav_states_(config.uavs),
       planned_paths_(config.uavs.size()) {

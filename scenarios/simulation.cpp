@@ -34,7 +34,7 @@ Simulation::Simulation(ScenarioSpec spec)
   commands_.assign(n, Vec2::Zero());
   record_.uavs.resize(n);
   record_.targets.resize(spec_.targets.size());
-  steps_per_plan_ = std::max(1, static_cast<int>(std::lround(spec_.planner.replan_period / spec_.dt)));
+  steps_per_plan_ = agents::stepsPerReplan(spec_.planner, spec_.dt);
   if (spec_.tracking.preseed) {
     // Paper: every OOI starts with a track of the same P₀ at every agent, centred on the truth.
     for (std::size_t t = 0; t < spec_.targets.size(); ++t) {
