@@ -65,8 +65,9 @@ void SummaryBuilder::onStep(const StepRecord& record) {
     for (const agents::TrackEstimate& track : record.beliefs[i].tracks) {
       estimates_.push_back(track.belief.x.head<2>());
     }
-    ospa_[i].push_back(ospa_metric_(truth_positions_, estimates_));
-    gospa_[i].push_back(gospa_metric_(truth_positions_, estimates_));
+    assignment_.solve(truth_positions_, estimates_);  // one assignment for both metrics
+    ospa_[i].push_back(assignment_.ospa());
+    gospa_[i].push_back(assignment_.gospa());
   }
   if (record.plan) {
     for (const auto& report : record.plan->reports)

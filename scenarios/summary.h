@@ -6,7 +6,6 @@
 
 #include "agents/fusion/fusion_diagnostics.h"
 #include "agents/planning/intention_links.h"
-#include "scenarios/gospa.h"
 #include "scenarios/ospa.h"
 #include "scenarios/spec.h"
 #include "scenarios/step_observer.h"
@@ -54,9 +53,8 @@ class SummaryBuilder final : public StepObserver {
   std::vector<Vec2> last_uav_position_;
   std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
   std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
-  Ospa ospa_metric_{50.0, 2.0};
+  CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
   std::vector<std::vector<double>> ospa_;          // [agent][k], m
-  Gospa gospa_metric_{50.0, 2.0};                  // same cut-off and order, α = 2
   std::vector<std::vector<double>> gospa_;         // [agent][k], m
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch

@@ -20,41 +20,32 @@ std::string joinPath(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }
 
-const char* boundText(Bound bound) {
+// How an error names what a bound accepts, and how the schema writes its range.
+struct BoundWords {
+  const char* accepted;
+  const char* range;
+};
+
+BoundWords boundWords(Bound bound) {
   switch (bound) {
     case Bound::any:
-      return "a finite number";
+      return {"a finite number", ""};
     case Bound::positive:
-      return "a positive number";
+      return {"a positive number", "> 0"};
     case Bound::non_negative:
-      return "a number >= 0";
+      return {"a number >= 0", ">= 0"};
     case Bound::probability:
-      return "a probability in [0, 1]";
+      return {"a probability in [0, 1]", "[0, 1]"};
     case Bound::open_probability:
-      return "a probability in (0, 1)";
+      return {"a probability in (0, 1)", "(0, 1)"};
     case Bound::unit_interval:
-      return "a number in (0, 1]";
+      return {"a number in (0, 1]", "(0, 1]"};
   }
-  return "a number";
+  return {"a number", ""};
 }
 
-const char* rangeText(Bound bound) {
-  switch (bound) {
-    case Bound::any:
-      return "";
-    case Bound::positive:
-      return "> 0";
-    case Bound::non_negative:
-      return ">= 0";
-    case Bound::probability:
-      return "[0, 1]";
-    case Bound::open_probability:
-      return "(0, 1)";
-    case Bound::unit_interval:
-      return "(0, 1]";
-  }
-  return "";
-}
+const char* boundText(Bound bound) { return boundWords(bound).accepted; }
+const char* rangeText(Bound bound) { return boundWords(bound).range; }
 
 std::string intRange(int min_value, int max_value) {
   return "[" + std::to_string(min_value) + ", " + std::to_string(max_value) + "]";
