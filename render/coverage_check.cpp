@@ -10,21 +10,6 @@ namespace {
 
 using Rows = std::vector<std::vector<std::string>>;
 
-Rows parseCsv(const std::string& text) {
-  Rows rows;
-  std::stringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    std::vector<std::string>& row = rows.emplace_back();
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) row.push_back(cell);
-  }
-  return rows;
-}
-
 bool isNumber(const std::string& cell, double& x) {
   char* end = nullptr;
   x = std::strtod(cell.c_str(), &end);
@@ -63,6 +48,21 @@ bool isFractionColumn(const std::string& name) {
 }
 
 }  // namespace
+
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    std::vector<std::string>& row = rows.emplace_back();
+    std::stringstream cells(line);
+    std::string cell;
+    while (std::getline(cells, cell, ',')) row.push_back(cell);
+  }
+  return rows;
+}
 
 CoverageComparison compareCoverageCsv(const std::string& expected, const std::string& actual,
                                       double tolerance, int max_listed,

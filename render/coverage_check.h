@@ -20,6 +20,10 @@ struct CoverageComparison {
   bool matches() const { return bad_input.empty() && differing == 0; }
 };
 
+/// A CSV text as rows of cells (blank lines skipped, a trailing '\r' dropped; no quoting: the
+/// coverage CSV has none).
+std::vector<std::vector<std::string>> parseCsv(const std::string& text);
+
 /// Compares `actual` with `expected` (both whole CSV texts); `max_listed` bounds `first`.
 /// `expected_name` and `actual_name` name the texts in bad_input.
 CoverageComparison compareCoverageCsv(const std::string& expected, const std::string& actual,

@@ -11,19 +11,7 @@
 
 namespace canopy::render::testing {
 
-inline std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream lines(text);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.empty()) continue;
-    std::vector<std::string>& row = rows.emplace_back();
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) row.push_back(cell);
-  }
-  return rows;
-}
+using render::parseCsv;  // the parser `canopy coverage --check` uses
 
 /// The file's text, empty when it cannot be read (compareCoverageCsv then reports an empty golden).
 inline std::string readFile(const std::string& path) {
