@@ -4,12 +4,13 @@
 
 namespace canopy::agents {
 
-Agent::Agent(int index, const TrackingConfig& config) : tracker_(index, config) {}
+Agent::Agent(int index, const TrackingConfig& config, const tracking::CameraOcclusion& camera)
+    : tracker_(index, config), camera_(camera) {}
 
 void Agent::trackLocally(double dt, const sensing::Scan& scan,
                          const sensing::Footprint& footprint) {
   tracker_.predict(dt);
-  tracker_.update(scan, footprint, map_);
+  tracker_.update(scan, footprint, map_, camera_);
 }
 
 void Agent::adoptFused(std::vector<tracking::TargetTrack>&& targets,

@@ -14,7 +14,8 @@ namespace canopy::agents {
 
 class Agent {
  public:
-  Agent(int index, const TrackingConfig& config);
+  /// camera: what hides things from this agent's camera, as its tracker expects them.
+  Agent(int index, const TrackingConfig& config, const tracking::CameraOcclusion& camera = {});
 
   /// A confirmed track on a target the scenario pre-seeds (Tracker::preseed).
   void preseed(int target, sensing::LabelId label, const Vec4& state) {
@@ -40,6 +41,7 @@ class Agent {
 
  private:
   tracking::Tracker tracker_;
+  tracking::CameraOcclusion camera_;
   OcclusionMap map_;
   std::vector<TreeEstimate> map_trees_;          // the confirmed tree tracks behind map_
   std::vector<TargetGaussian> planning_tracks_;  // confirmed target tracks' posteriors

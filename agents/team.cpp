@@ -14,8 +14,11 @@ Team::Team(const TeamConfig& config)
       a_priori_(config.true_trees),
       uav_states_(config.uavs),
       planned_paths_(config.uavs.size()) {
-  for (int i = 0; i < static_cast<int>(config.uavs.size()); ++i)
-    agents_.emplace_back(i, config.tracking);
+  for (int i = 0; i < static_cast<int>(config.uavs.size()); ++i) {
+    const planning::UavState& uav = config.uavs[i];
+    agents_.emplace_back(i, config.tracking,
+                         tracking::CameraOcclusion{uav.occlusion, uav.kind == world::AgentKind::ground});
+  }
 }
 
 void Team::preseed(int target, sensing::LabelId label, const Vec4& state) {

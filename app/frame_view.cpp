@@ -21,9 +21,7 @@ Aabb actionBox(const scenarios::ScenarioSpec& spec) {
   const int steps = spec.steps();
   double reach = 0.0;  // m, how far a footprint reaches from its UAV
   for (const scenarios::UavSpec& uav : spec.uavs) {
-    const sensing::FootprintDef& f = uav.sensor.footprint;
-    reach =
-        std::max(reach, f.shape == sensing::FootprintShape::disc ? f.radius : 0.5 * f.size.norm());
+    reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
     grow(uav.body.start);
     if (!uav.path || spec.planner.algorithm != agents::PlannerAlgorithm::none) continue;
     for (int k = 0; k < steps; ++k) grow(uav.path->positionAt(k * spec.dt));

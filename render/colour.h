@@ -22,6 +22,7 @@ inline constexpr Rgba kTreeFill{92, 150, 72, 255};
 inline constexpr Rgba kTreeEdge{46, 92, 38, 255};
 inline constexpr Rgba kTarget{24, 24, 24, 255};
 inline constexpr Rgba kTrail{70, 70, 70, 200};
+inline constexpr Rgba kShadow{60, 60, 60, 70};  // the part of a ground camera's sector crowns hide
 inline constexpr Rgba kText{20, 20, 20, 255};
 inline constexpr Rgba kPanel{250, 250, 246, 255};
 inline constexpr Rgba kPanelEdge{90, 90, 90, 255};

@@ -41,7 +41,10 @@ void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints
   visible_.assign(layers.size(), 0);
   for (std::size_t i = 0; i < footprints.size(); ++i) {
     const sensing::Footprint& f = footprints[i];
-    const bool line_of_sight = model == sensing::OcclusionModel::line_of_sight;
+    // A sector is a ground robot's camera, which sees by line of sight whatever the team's
+    // model (sensing::occlusionModel).
+    const bool line_of_sight = model == sensing::OcclusionModel::line_of_sight ||
+                               f.shape == sensing::FootprintShape::sector;
     // A crown outside the footprint's box can neither hold a point of the footprint nor cross a
     // segment from the footprint's centre (the UAV's ground point) to such a point.
     const Aabb box = f.bounds();

@@ -63,6 +63,12 @@ void addFootprints(const SceneModel& model, const world::WorldSnapshot& truth, c
     const sensing::Footprint f = sensing::footprintOf(truth, static_cast<int>(i), model.sensors[i]);
     if (f.shape == sensing::FootprintShape::disc) {
       add(out, Disc{f.centre, f.radius, withAlpha(colour, 60), colour, 1.5 * z.u});
+    } else if (f.shape == sensing::FootprintShape::sector) {
+      // The sector in shadow, the part the camera sees over it, then the sector's outline.
+      std::vector<Vec2> outline = footprintCorners(f);
+      add(out, Polygon{outline, palette::kShadow});
+      add(out, Polygon{visibleSector(f, model.trees), withAlpha(colour, 60)});
+      add(out, Polyline{std::move(outline), 1.5 * z.u, colour, true});
     } else {
       std::vector<Vec2> corners = footprintCorners(f);
       add(out, Polygon{corners, withAlpha(colour, 60)});
@@ -78,7 +84,13 @@ void addBeliefs(const world::WorldSnapshot& truth, std::span<const agents::Agent
     const Rgba colour = uavColour(static_cast<int>(i));
     for (const agents::TreeEstimate& tree : beliefs[i].trees) {
       const Vec2 centre = tree.belief.x.head<2>();
-      add(out, Ring{centre, std::max(tree.belief.x(2), 0.1), 1.2 * z.u, colour});
+      if (tree.outline.vertices > 0) {  // a polygonal crown or wall: its estimated outline
+        std::vector<Vec2> outline;
+        for (int v = 0; v < tree.outline.vertices; ++v) outline.push_back(centre + tree.outline.offsets[v]);
+        add(out, Polyline{std::move(outline), 1.2 * z.u, colour, true});
+      } else {
+        add(out, Ring{centre, std::max(tree.belief.x(2), 0.1), 1.2 * z.u, colour});
+      }
     }
   }
   for (std::size_t i = 0; i < beliefs.size(); ++i) {
@@ -333,10 +345,41 @@ std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int point
 
 std::vector<Vec2> footprintCorners(const sensing::Footprint& f) {
   if (f.shape == sensing::FootprintShape::disc) return {};
+  if (f.shape == sensing::FootprintShape::sector) {
+    constexpr double kArcStep = std::numbers::pi / 180.0;  // rad, 1°
+    const int arcs = std::max(2, static_cast<int>(std::ceil(2.0 * f.half_angle / kArcStep)));
+    std::vector<Vec2> out{f.centre};
+    for (int k = 0; k <= arcs; ++k) out.push_back(f.sectorPoint(f.half_angle * (2.0 * k / arcs - 1.0)));
+    return out;
+  }
   const Vec2 along = f.half.x() * Vec2(f.cos_yaw, f.sin_yaw);
   const Vec2 across = f.half.y() * Vec2(-f.sin_yaw, f.cos_yaw);
   return {f.centre + along + across, f.centre - along + across, f.centre - along - across,
           f.centre + along - across};
+}
+
+std::vector<Vec2> visibleSector(const sensing::Footprint& sector,
+                                const std::vector<world::TreeDef>& trees) {
+  std::vector<Vec2> out = footprintCorners(sector);
+  if (out.empty()) return out;
+  const Aabb box = sector.bounds();
+  std::vector<const world::TreeDef*> near;
+  for (const world::TreeDef& tree : trees) {
+    const Aabb b = world::bounds(tree);
+    if (b.lo.x() <= box.hi.x() && box.lo.x() <= b.hi.x() && b.lo.y() <= box.hi.y() &&
+        box.lo.y() <= b.hi.y())
+      near.push_back(&tree);
+  }
+  const Vec2 apex = out.front();
+  for (std::size_t k = 1; k < out.size(); ++k) {
+    double first = 1.0;  // the fraction of the ray apex → arc point before any crown
+    for (const world::TreeDef* tree : near) {
+      const double s = world::segmentEntry(*tree, apex, out[k]);
+      if (s >= 0.0 && s < first) first = s;
+    }
+    out[k] = apex + first * (out[k] - apex);
+  }
+  return out;
 }
 
 Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,

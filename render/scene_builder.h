@@ -59,7 +59,13 @@ double scaleBarLength(double width_m);
 /// "20 m", "500 m", "0.5 m", "2 km" for a scale bar.
 std::string scaleBarLabel(double length_m);
 
-/// The corners of a rectangular footprint, or an empty list for a disc.
+/// The corners of a rectangular footprint; for a sector its apex, then points along its arc no
+/// more than 1° apart; an empty list for a disc. Star-shaped from its first point either way.
 std::vector<Vec2> footprintCorners(const sensing::Footprint& footprint);
+
+/// What a ground robot's sector camera sees past the crowns: the sector's outline with each arc
+/// point pulled back along its ray from the apex to where the ray first enters a crown.
+std::vector<Vec2> visibleSector(const sensing::Footprint& sector,
+                                const std::vector<world::TreeDef>& trees);
 
 }  // namespace canopy::render

@@ -13,9 +13,17 @@ agents::TeamConfig teamConfig(const ScenarioSpec& spec) {
   config.fusion = spec.fusion;
   config.planner = spec.planner;
   for (const UavSpec& uav : spec.uavs) {
-    config.uavs.push_back({uav.body.start, uav.body.yaw, uav.body.yaw_mode, uav.body.v_max,
-                           uav.sensor.footprint, uav.sensor.quality,
-                           spec.sensing.occlusion_model});
+    agents::planning::UavState state;
+    state.position = uav.body.start;
+    state.yaw = uav.body.yaw;
+    state.yaw_mode = uav.body.yaw_mode;
+    state.v_max = uav.body.v_max;
+    state.kind = uav.body.kind;
+    state.turn_rate = uav.body.turn_rate;
+    state.footprint = uav.sensor.footprint;
+    state.quality = uav.sensor.quality;
+    state.occlusion = sensing::occlusionModel(uav.sensor, spec.sensing);
+    config.uavs.push_back(state);
   }
   if (spec.planner.occlusion_map == agents::OcclusionMapMode::a_priori)
     config.true_trees = spec.trees;

@@ -13,10 +13,34 @@ Footprint Footprint::place(const FootprintDef& def, const Vec2& centre, double y
   f.sin_yaw = std::sin(yaw);
   f.half = 0.5 * def.size;
   f.radius = def.radius;
+  f.half_angle = 0.5 * def.angle;
+  f.cos_half = std::cos(f.half_angle);
   return f;
 }
 
+Vec2 Footprint::sectorPoint(double offset) const {
+  // The heading rotated by `offset`: (cos(ψ + o), sin(ψ + o)) from cos ψ, sin ψ.
+  const double c = std::cos(offset), s = std::sin(offset);
+  return centre + radius * Vec2(cos_yaw * c - sin_yaw * s, sin_yaw * c + cos_yaw * s);
+}
+
 Aabb Footprint::bounds() const {
+  if (shape == FootprintShape::sector) {
+    // The apex, both ends of the arc, and each axis extreme centre ± r·e whose direction lies
+    // within ±θ/2 of the heading.
+    Aabb box{centre, centre};
+    const auto grow = [&box](const Vec2& p) {
+      box.lo = box.lo.cwiseMin(p);
+      box.hi = box.hi.cwiseMax(p);
+    };
+    grow(sectorPoint(-half_angle));
+    grow(sectorPoint(half_angle));
+    const Vec2 axes[] = {Vec2(1, 0), Vec2(0, 1), Vec2(-1, 0), Vec2(0, -1)};
+    for (const Vec2& e : axes) {
+      if (cos_yaw * e.x() + sin_yaw * e.y() >= cos_half) grow(centre + radius * e);
+    }
+    return box;
+  }
   Vec2 extent;
   if (shape == FootprintShape::disc) {
     extent = Vec2(radius, radius);
@@ -29,8 +53,12 @@ Aabb Footprint::bounds() const {
 }
 
 double Footprint::area() const {
-  return shape == FootprintShape::disc ? std::numbers::pi * radius * radius
-                                       : 4.0 * half.x() * half.y();
+  switch (shape) {
+    case FootprintShape::disc: return std::numbers::pi * radius * radius;
+    case FootprintShape::sector: return half_angle * radius * radius;  // ½ θ r²
+    case FootprintShape::rectangle: break;
+  }
+  return 4.0 * half.x() * half.y();
 }
 
 Vec2 Footprint::pointFromUnitSquare(double u, double v) const {
@@ -38,6 +66,10 @@ Vec2 Footprint::pointFromUnitSquare(double u, double v) const {
     const double r = radius * std::sqrt(u);  // area-uniform radius
     const double theta = 2.0 * std::numbers::pi * v;
     return centre + Vec2(r * std::cos(theta), r * std::sin(theta));
+  }
+  if (shape == FootprintShape::sector) {
+    const double r = std::sqrt(u);  // area-uniform fraction of the range
+    return centre + r * (sectorPoint((2.0 * v - 1.0) * half_angle) - centre);
   }
   const double along = (2.0 * u - 1.0) * half.x();
   const double across = (2.0 * v - 1.0) * half.y();

@@ -1,28 +1,43 @@
 #pragma once
-// Camera footprints φ_i: the ground area a downward camera sees (algorithms.md §3).
+// Camera footprints φ_i: the ground area a downward camera sees (algorithms.md §3), or the sector a
+// ground robot's forward camera sees.
 #include <cmath>
+#include <numbers>
 
 #include "core/types.h"
 
 namespace canopy::sensing {
 
-enum class FootprintShape { rectangle, disc };
+enum class FootprintShape {
+  rectangle,  // a downward camera: centred under the UAV, w along ψ
+  disc,       // a downward camera: centred under the UAV
+  sector,     // a forward camera at ground level: apex at the robot, opening about ψ
+};
 
-/// The camera's footprint relative to the UAV (heterogeneous per UAV).
+/// The camera's footprint relative to the agent (heterogeneous per agent).
 struct FootprintDef {
   FootprintShape shape = FootprintShape::rectangle;
   Vec2 size = Vec2(20.0, 20.0);  // m, rectangle [w, h]: w along the heading ψ, h across
-  double radius = 10.0;          // m, disc only
+  double radius = 10.0;          // m, disc; for a sector its range
+  double angle = 0.5 * std::numbers::pi;  // rad, sector only: the field of view's full angle (0, 2π]
 };
 
-/// A footprint placed on the ground: centred under the UAV and rotated by its yaw. A closed set.
+/// The largest distance from the agent's ground point to a point of its footprint (m).
+inline double circumradius(const FootprintDef& def) {
+  return def.shape == FootprintShape::rectangle ? 0.5 * def.size.norm() : def.radius;
+}
+
+/// A footprint placed on the ground: centred under the UAV (a sector: its apex at the robot) and
+/// rotated by its yaw. A closed set.
 struct Footprint {
   FootprintShape shape = FootprintShape::rectangle;
-  Vec2 centre = Vec2::Zero();    // m
+  Vec2 centre = Vec2::Zero();    // m; a sector's apex
   double cos_yaw = 1.0;          // cos ψ
   double sin_yaw = 0.0;          // sin ψ
   Vec2 half = Vec2(10.0, 10.0);  // m, rectangle half-extents
-  double radius = 10.0;          // m, disc
+  double radius = 10.0;          // m, disc; a sector's range
+  double half_angle = 0.25 * std::numbers::pi;  // rad, sector: half the field of view, θ/2
+  double cos_half = 0.5 * std::numbers::sqrt2;  // cos(θ/2), sector
 
   static Footprint place(const FootprintDef& def, const Vec2& centre, double yaw);
 
@@ -33,6 +48,8 @@ struct Footprint {
   double area() const;  // m²
   /// Maps (u, v) uniform on [0,1)² to a point uniform over the footprint.
   Vec2 pointFromUnitSquare(double u, double v) const;
+  /// Sector: the point of its arc at angle `offset` (rad) from the heading.
+  Vec2 sectorPoint(double offset) const;
 };
 
 /// Tolerance of the closed-set test (m).
@@ -41,9 +58,15 @@ inline constexpr double kFootprintSlack = 1e-9;
 // Inline: the planner's cost asks it for every target at every sample of every candidate plan.
 inline bool Footprint::contains(const Vec2& p) const {
   const Vec2 d = p - centre;
-  if (shape == FootprintShape::disc) {
+  if (shape != FootprintShape::rectangle) {
     const double r = radius + kFootprintSlack;
-    return d.squaredNorm() <= r * r;
+    const double d2 = d.squaredNorm();
+    if (d2 > r * r) return false;
+    if (shape == FootprintShape::disc) return true;
+    // Sector: the angle between d and the heading is at most θ/2, i.e. d·ĥ ≥ |d| cos(θ/2) (the
+    // apex itself included); 1 nm of slack on the projection, as elsewhere.
+    const double along = cos_yaw * d.x() + sin_yaw * d.y();
+    return along + kFootprintSlack >= std::sqrt(d2) * cos_half;
   }
   // Into the footprint's frame: rotate d by −ψ.
   const double along = cos_yaw * d.x() + sin_yaw * d.y();

@@ -19,6 +19,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
   const Vec2 p_i = truth.uavs[uav].position;
   out.sensor_position = p_i;
   const Footprint footprint = footprintOf(truth, uav, sensor);
+  const OcclusionModel model = occlusionModel(sensor, config);
 
   scratch.candidates.clear();
   world.queryAabb(footprint.bounds(), scratch.candidates);  // sorted: UAVs, targets, trees
@@ -29,7 +30,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const Vec2& chi = truth.targets[ref.index].position;
     if (!footprint.contains(chi)) continue;
     out.in_footprint.push_back(ref.index);
-    if (isOccluded(world, p_i, chi, config.occlusion_model)) continue;
+    if (isOccluded(world, p_i, chi, model)) continue;
     out.visible.push_back(ref.index);
     if (!rng.bernoulli(config.p_detect)) continue;
     const Mat2 R_truth = rangeBearingCovariance(chi, p_i, sensor.quality);
@@ -48,12 +49,14 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
         {config.clutter_label, z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0, -1, {}});
   }
 
-  // Trees (SOO): observed when the crown's centre is in φ_i; exempt from occlusion.
+  // Trees (SOO): observed when the crown's centre is in φ_i; from above exempt from occlusion, at
+  // ground level hidden by any other crown nearer on the line of sight to the centre.
   const double radius_variance = config.tree_radius_sigma * config.tree_radius_sigma;
   for (const world::BodyRef& ref : scratch.candidates) {
     if (ref.kind != world::BodyKind::tree) continue;
     const world::TreeDef& tree = world.trees()[ref.index];
     if (!footprint.contains(tree.centre)) continue;
+    if (sensor.ground_level && world.firstOccluderOnSegment(p_i, tree.centre) != ref.index) continue;
     const Mat2 R_truth = rangeBearingCovariance(tree.centre, p_i, sensor.quality);
     const Vec2 z = tree.centre + rng.gaussian(config.truth_noise_scale * R_truth);
     const double radius =

@@ -23,11 +23,18 @@ struct SensingConfig {
   double tree_radius_sigma = 0.1;  // m, σ of the measured crown radius
 };
 
-/// One UAV's camera.
+/// One agent's camera.
 struct SensorDef {
   FootprintDef footprint;
   SensorQuality quality;
+  bool ground_level = false;  // a ground robot's forward camera: see occlusionModel()
 };
+
+/// What hides a target from this camera: the team's model for a UAV's downward camera; always
+/// line of sight for a camera at ground level, where every crown and wall blocks the view.
+inline OcclusionModel occlusionModel(const SensorDef& sensor, const SensingConfig& config) {
+  return sensor.ground_level ? OcclusionModel::line_of_sight : config.occlusion_model;
+}
 
 /// Buffers reused from scan to scan so that sensing does not allocate in steady state.
 struct SenseScratch {
@@ -35,6 +42,9 @@ struct SenseScratch {
 };
 
 /// Scans for UAV `uav` at the snapshot's step and writes the result into `out` (cleared first).
+/// Targets are hidden under occlusionModel(sensor, config). Trees are observed when their centre
+/// is in the footprint; a camera at ground level sees a tree only when no other crown stands
+/// first on the segment from the robot to its centre.
 /// target_labels[t] is target t's label. All draws come from `rng` (the UAV's sensing stream),
 /// in a fixed order: per visible target (ascending) detection then noise; clutter; per tree.
 void sense(const world::World& world, const world::WorldSnapshot& truth, int uav,

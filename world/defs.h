@@ -3,6 +3,7 @@
 // loader before they get here.
 #include <vector>
 
+#include "core/enum_names.h"
 #include "core/types.h"
 #include "world/path.h"
 #include "world/tree.h"
@@ -14,12 +15,24 @@ enum class YawMode {
   velocity,  // ψ follows the direction of the velocity (kept while hovering)
 };
 
-/// A UAV: a kinematic body at fixed altitude, commanded by horizontal velocity.
+/// What kind of agent a body is: how it moves and where its camera sits.
+enum class AgentKind {
+  uav,     // flies at a fixed altitude, holonomic: any velocity up to v_max, camera looking down
+  ground,  // drives on the ground as a unicycle (world/unicycle.h), camera looking forward
+};
+inline constexpr EnumNames<AgentKind, 2> kAgentKindNames{{
+    {AgentKind::uav, "uav"},
+    {AgentKind::ground, "ground"},
+}};
+
+/// An agent (a UAV or a ground robot): a kinematic body commanded by horizontal velocity.
 struct UavDef {
   Vec2 start = Vec2::Zero();  // m
   double yaw = 0.0;           // rad, initial heading ψ
-  YawMode yaw_mode = YawMode::fixed;
-  double v_max = 5.0;  // m/s, |commanded velocity| is clamped to this
+  YawMode yaw_mode = YawMode::fixed;  // ground robots: always velocity (the heading is the body's)
+  double v_max = 5.0;      // m/s, |commanded velocity| is clamped to this
+  double turn_rate = 1.0;  // rad/s, ground robots only: |ψ̇| ≤ ω_max
+  AgentKind kind = AgentKind::uav;
 };
 
 /// A target (OOI): a kinematic body driven by velocity along a scripted path.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/angles.h"
+#include "world/unicycle.h"
 
 namespace canopy::world {
 namespace {
@@ -194,14 +195,21 @@ void World::step(double dt) {
 
   for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
     b2Body* body = b2_->uavs[i];
-    const Vec2& v = commands_[i];
-    body->SetLinearVelocity(toB2(v));
-    uav_velocity_[i] = v;
+    const UavDef& agent = def_.uavs[i];
+    Vec2 v = commands_[i];
     double omega = 0.0;  // rad/s
-    if (def_.uavs[i].yaw_mode == YawMode::velocity && v.squaredNorm() > 1e-12) {
+    if (agent.kind == AgentKind::ground) {
+      // The unicycle's pose at t + dt from where the body actually is (world/unicycle.h).
+      const Pose2 now{fromB2(body->GetPosition()), body->GetAngle()};
+      const Pose2 next = unicycleMove(now, v, agent.turn_rate, dt);
+      v = (next.position - now.position) / dt;
+      omega = wrapAngle(next.heading - now.heading) / dt;
+    } else if (agent.yaw_mode == YawMode::velocity && v.squaredNorm() > 1e-12) {
       const double heading = std::atan2(v.y(), v.x());
       omega = wrapAngle(heading - body->GetAngle()) / dt;
     }
+    body->SetLinearVelocity(toB2(v));
+    uav_velocity_[i] = v;
     body->SetAngularVelocity(static_cast<float>(omega));
     max_translation = std::max(max_translation, v.norm() * dt);
     max_rotation = std::max(max_rotation, std::abs(omega) * dt);

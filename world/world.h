@@ -30,12 +30,13 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Sets UAV uav's velocity command for the next steps, clamped to |v| ≤ v_max (m/s).
+  /// Sets UAV uav's velocity command for the next steps, clamped to |v| ≤ v_max (m/s). A ground
+  /// robot follows it as a unicycle (world/unicycle.h): turning toward it, then driving along it.
   void commandUav(int uav, const Vec2& velocity);
   const Vec2& commandedVelocity(int uav) const { return commands_[uav]; }
 
   /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
-  /// commanded velocity. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits.
+  /// commanded velocity, ground robots by unicycleMove over dt. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits.
   void step(double dt);
 
   WorldSnapshot snapshot() const;

@@ -10,6 +10,7 @@
 
 #include "agents/tracking/motion_model.h"
 #include "sensing/noise.h"
+#include "world/unicycle.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -27,12 +28,9 @@ sensing::Footprint placeFootprint(const sensing::FootprintDef& def, const Vec2& 
   f.sin_yaw = s;
   f.half = 0.5 * def.size;
   f.radius = def.radius;
+  f.half_angle = 0.5 * def.angle;
+  f.cos_half = std::cos(f.half_angle);
   return f;
-}
-
-/// The largest distance from the UAV's ground point to a point of its footprint (m).
-double circumradius(const sensing::FootprintDef& def) {
-  return def.shape == sensing::FootprintShape::disc ? def.radius : 0.5 * def.size.norm();
 }
 
 }  // namespace
@@ -52,6 +50,10 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
 
 void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
                       sensing::Footprint* footprints) const {
+  if (uav.ground) {
+    driveUnicycle(uav, actions, positions, footprints);
+    return;
+  }
   Vec2 p = uav.position;
   double c = uav.cos_yaw, s = uav.sin_yaw;
   const double v_max_sq = uav.v_max * uav.v_max;
@@ -74,6 +76,25 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
       *positions++ = p;
       *footprints++ = placeFootprint(uav.footprint, p, c, s);
     }
+  }
+}
+
+void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions,
+                                Vec2* positions, sensing::Footprint* footprints) const {
+  world::Pose2 pose{robot.position, robot.yaw};
+  const double tau = period_ / substeps_;  // s, between samples
+  for (int m = 0; m < horizon_; ++m) {
+    Vec2 a = actions[m];
+    const double speed = a.norm();
+    if (speed > robot.v_max) a *= robot.v_max / speed;  // the world clamps |a| to v_max
+    world::Pose2 at;
+    for (int sample = 1; sample <= substeps_; ++sample) {
+      at = world::unicycleMove(pose, a, robot.turn_rate, sample * tau);  // the world's motion
+      *positions++ = at.position;
+      *footprints++ =
+          placeFootprint(robot.footprint, at.position, std::cos(at.heading), std::sin(at.heading));
+    }
+    pose = at;
   }
 }
 
@@ -115,9 +136,17 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   };
   auto moverOf = [&](const UavState& u) {
     const bool follows = u.yaw_mode == world::YawMode::velocity;
-    return Mover{u.position, std::cos(u.yaw), std::sin(u.yaw),         follows,
-                 u.v_max,    u.footprint,     sampleQuality(u.quality),
-                 u.occlusion == sensing::OcclusionModel::line_of_sight};
+    return Mover{u.position,
+                 std::cos(u.yaw),
+                 std::sin(u.yaw),
+                 follows,
+                 u.v_max,
+                 u.footprint,
+                 sampleQuality(u.quality),
+                 u.occlusion == sensing::OcclusionModel::line_of_sight,
+                 u.kind == world::AgentKind::ground,
+                 u.yaw,
+                 u.turn_rate};
   };
   map_ = problem.map;
   std::vector<char> is_free(n_uavs, 0);
@@ -185,7 +214,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
           // |p_f − p_{f,0}| ≤ (t + 1)·v_max·τ, and a footprint holds points within its
           // circumradius.
-          const double reach = (t + 1) * free_[f].v_max * tau + circumradius(free_[f].footprint);
+          const double reach = (t + 1) * free_[f].v_max * tau + sensing::circumradius(free_[f].footprint);
           if ((z - free_[f].position).norm() <= reach + kReachSlack) reach_[k] |= 1ULL << f;
         }
       }

@@ -60,7 +60,8 @@ struct PlanningProblem {
 /// Precomputed per call: nominal trajectories z_{j,m} = H F(Δ)^m ξ_j, occlusion flags, the fixed
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
 /// track's recursion up to the first step a free UAV could see it. A commanded speed above v_max
-/// is clamped, as the world does.
+/// is clamped, as the world does; a ground robot follows each action as the world's unicycle
+/// (world/unicycle.h: turn toward it, then drive), its sector turning with it.
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
@@ -85,15 +86,21 @@ class NominalCost {
     sensing::FootprintDef footprint;  // φ relative to the UAV (m)
     sensing::SensorQuality quality;   // α·S, r0 (m): R of one of an action's S samples
     bool line_of_sight;               // a map tree on the segment p → z hides z from it
+    bool ground;                      // a ground robot: moves as world/unicycle.h
+    double yaw;                       // rad, ψ now (the unicycle's heading)
+    double turn_rate;                 // rad/s, ω_max of a ground robot
   };
   // Whether `uav` at p sees the nominal position z that its footprint holds and no crown covers:
   // under line of sight, when no tree of the map lies on the segment p → z.
   bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
     return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
   }
-  // Moves a UAV through H actions: fills H positions (m) and footprints.
+  // Moves a UAV through H actions: fills H·S positions (m) and footprints.
   void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
            sensing::Footprint* footprints) const;
+  // fly() for a ground robot: each action as the world's unicycle moves it.
+  void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
+                     sensing::Footprint* footprints) const;
   double stageTrace(const SymmetricCov4& P) const;
 
   int horizon_ = 0;               // H

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "world/unicycle.h"
+
 namespace canopy::agents::planning {
 
 Vec2 Plan::action(int m) const {
@@ -36,12 +38,16 @@ Plan hoverPlan(int horizon) {
 std::vector<Vec2> plannedPath(const UavState& uav, const Plan& plan, double period) {
   std::vector<Vec2> path;
   path.reserve(plan.velocities.size());
-  Vec2 p = uav.position;
+  world::Pose2 pose{uav.position, uav.yaw};
   for (Vec2 a : plan.velocities) {
     const double speed = a.norm();
     if (speed > uav.v_max) a *= uav.v_max / speed;  // |a| ≤ v_max
-    p += a * period;                                // p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
-    path.push_back(p);
+    if (uav.kind == world::AgentKind::ground) {
+      pose = world::unicycleMove(pose, a, uav.turn_rate, period);  // turn, then drive
+    } else {
+      pose.position += a * period;  // p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
+    }
+    path.push_back(pose.position);
   }
   return path;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// What the planner knows of one UAV at a planning epoch: where it is, how it may move and what its
+// What the planner knows of one agent (a UAV or a ground robot) at a planning epoch: where it is, how it may move and what its
 // camera sees. UAVs are heterogeneous (footprint, sensor quality, speed limit).
 #include "core/types.h"
 #include "sensing/footprint.h"
@@ -14,6 +14,8 @@ struct UavState {
   double yaw = 0.0;                                 // rad, ψ now
   world::YawMode yaw_mode = world::YawMode::fixed;  // velocity: ψ follows the planned heading
   double v_max = 5.0;                               // m/s, |a_{i,m}| ≤ v_max
+  world::AgentKind kind = world::AgentKind::uav;    // ground: moves as world/unicycle.h
+  double turn_rate = 1.0;                           // rad/s, ground robots' ω_max
   sensing::FootprintDef footprint;                  // φ_i relative to the UAV (m)
   sensing::SensorQuality quality;                   // α_i (dimensionless) and r0 (m) of R_i
   // What hides a target from its camera: the same model its sensor uses (sensing/visibility.h).

@@ -11,17 +11,28 @@ namespace {
 // Σ_j β_tj from which a scan counts as a hit for confirmation.
 constexpr double kHitProbability = 0.5;
 
-// Expected visible: the predicted position lies in the own footprint and, for targets, is not
-// under a crown of the own occlusion map. A tree's centre lies inside its own crown, and sensing
-// exempts trees from occlusion, so trees only need the footprint.
+// Expected visible: the predicted position lies in the own footprint and is not hidden from the
+// own camera by the own occlusion map — for targets under a crown (from above) or behind one
+// (line of sight from the sensor). A tree's centre lies inside its own crown and a camera from
+// above sees every crown, so there trees only need the footprint; at ground level a tree is
+// hidden when a crown of the map stands on the segment to the point of its crown nearest the
+// sensor (its own crown is only touched there, which does not count).
 template <int N>
 bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
-                     const OcclusionMap& map) {
+                     const OcclusionMap& map, const CameraOcclusion& camera,
+                     const Vec2& sensor) {
   const Vec2 position = track.prior.x.template head<2>();
   if (!footprint.contains(position)) return false;
   if constexpr (N == 3) {
-    return true;
+    if (!camera.ground_level) return true;
+    const Vec2 offset = position - sensor;
+    const double distance = offset.norm();
+    const double radius = std::max(track.prior.x(2), 0.0);
+    if (distance <= radius) return true;  // the sensor under the crown: it fills the view
+    return !map.blocksSegment(sensor, position - (radius / distance) * offset);
   } else {
+    if (camera.targets == sensing::OcclusionModel::line_of_sight)
+      return !map.blocksSegment(sensor, position);
     return !map.occludes(position);
   }
 }
@@ -53,7 +64,7 @@ void Tracker::predict(double dt) {
 }
 
 void Tracker::update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
-                     const OcclusionMap& own_map) {
+                     const OcclusionMap& own_map, const CameraOcclusion& camera) {
   labels_.clear();
   for (const TargetTrack& track : targets_) {
     if (track.label != sensing::kTreeLabel) labels_.push_back(track.label);
@@ -64,9 +75,9 @@ void Tracker::update(const sensing::Scan& scan, const sensing::Footprint& own_fo
   std::sort(labels_.begin(), labels_.end());
   labels_.erase(std::unique(labels_.begin(), labels_.end()), labels_.end());
   for (const sensing::LabelId label : labels_) {
-    updateLabel(targets_, label, scan, own_footprint, own_map);
+    updateLabel(targets_, label, scan, own_footprint, own_map, camera);
   }
-  updateLabel(trees_, sensing::kTreeLabel, scan, own_footprint, own_map);
+  updateLabel(trees_, sensing::kTreeLabel, scan, own_footprint, own_map, camera);
   confirmOrDrop(targets_);
   confirmOrDrop(trees_);
 }
@@ -74,7 +85,7 @@ void Tracker::update(const sensing::Scan& scan, const sensing::Footprint& own_fo
 template <int N>
 void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
                           const sensing::Scan& scan, const sensing::Footprint& own_footprint,
-                          const OcclusionMap& own_map) {
+                          const OcclusionMap& own_map, const CameraOcclusion& camera) {
   using Model = MeasurementModel<N>;
   track_ids_.clear();
   for (int k = 0; k < static_cast<int>(tracks.size()); ++k) {
@@ -102,7 +113,7 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     }
     if (track.detected) {
       track.expected_misses = 0;
-    } else if (expectedVisible(track, own_footprint, own_map)) {
+    } else if (expectedVisible(track, own_footprint, own_map, camera, scan.sensor_position)) {
       ++track.expected_misses;
     }
   }

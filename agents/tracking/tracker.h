@@ -12,8 +12,15 @@
 #include "agents/tracking/track.h"
 #include "sensing/footprint.h"
 #include "sensing/observation.h"
+#include "sensing/visibility.h"
 
 namespace canopy::agents::tracking {
+
+/// What hides things from an agent's own camera (sensing/sensor.h's occlusionModel).
+struct CameraOcclusion {
+  sensing::OcclusionModel targets = sensing::OcclusionModel::canopy;
+  bool ground_level = false;  // trees hide trees too
+};
 
 class Tracker {
  public:
@@ -39,8 +46,12 @@ class Tracker {
   /// β_tj ≥ ½, i.e. it more likely than not received a measurement — within its first
   /// confirm_window scans, and dropped as soon as it can no longer be. Observations with non-finite
   /// values or a covariance that is not positive definite are ignored.
+  /// `camera` says how the own camera is hidden: targets under a crown of own_map (from above),
+  /// or behind one on the segment from scan.sensor_position (line of sight); at ground level a
+  /// tree too is expected visible only when no map crown stands on the segment to the point of
+  /// its crown nearest the sensor.
   void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
-              const OcclusionMap& own_map);
+              const OcclusionMap& own_map, const CameraOcclusion& camera = {});
 
   /// Deletes tracks with tr(P_pos) > delete_trace (or a non-finite posterior) and, when
   /// delete_misses > 0, tracks missed that many consecutive scans while expected visible.
@@ -63,7 +74,8 @@ class Tracker {
  private:
   template <int N>
   void updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label, const sensing::Scan& scan,
-                   const sensing::Footprint& own_footprint, const OcclusionMap& own_map);
+                   const sensing::Footprint& own_footprint, const OcclusionMap& own_map,
+                   const CameraOcclusion& camera);
   template <int N>
   void confirmOrDrop(std::vector<Track<N>>& tracks);
   template <int N>

@@ -3,6 +3,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/angles.h"
 #include "scenarios/internal/referenced_file.h"
 #include "scenarios/internal/sections.h"
 #include "scenarios/track_csv.h"
@@ -110,6 +111,25 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
   return path;
 }
 
+// A ground robot's forward camera: {"range": r, "angle": θ}, a sector of radius r opening θ about
+// the heading.
+void readSector(ObjectReader& robot, sensing::FootprintDef& footprint) {
+  footprint.shape = sensing::FootprintShape::sector;
+  footprint.radius = 25.0;  // m, default range
+  footprint.angle = 0.5 * kPi;  // rad, default field of view (90°)
+  auto fov_field = robot.optional("fov");
+  if (!fov_field) {
+    (*robot.field().out())["fov"] = Json{{"range", footprint.radius}, {"angle", footprint.angle}};
+    return;
+  }
+  ObjectReader fov = fov_field->object();
+  footprint.radius = fov.number("range", footprint.radius, Bound::positive);
+  if (footprint.radius > 1e7) fov.required("range").fail("expected at most 1e7 m");
+  footprint.angle = fov.number("angle", footprint.angle, Bound::positive);
+  if (footprint.angle > kTwoPi) fov.required("angle").fail("expected at most 2π rad (a full turn)");
+  fov.finish();
+}
+
 void readUavs(ObjectReader& root, ScenarioSpec& spec) {
   const Field list = root.required("uavs");
   std::set<std::string> names;
@@ -121,6 +141,8 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     if (!names.insert(uav.name).second) {
       reader.required("name").fail("expected a unique UAV name, got \"" + uav.name + "\" twice");
     }
+    uav.body.kind = reader.enumeration("kind", world::kAgentKindNames, uav.body.kind);
+    const bool ground = uav.body.kind == world::AgentKind::ground;
     if (auto path = reader.optional("path"))
       uav.path = readPath(*path, spec.aoi, spec.duration, true);
     if (auto start = reader.optional("start")) {
@@ -139,9 +161,16 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     } else {
       reader.number("yaw", 0.0);
     }
+    if (ground) {  // its heading is its body's: it always faces the way it drives
+      uav.body.yaw_mode = world::YawMode::velocity;
+      uav.body.turn_rate = reader.number("turn_rate", uav.body.turn_rate, Bound::positive);
+    }
     uav.body.v_max = reader.number("v_max", uav.body.v_max, Bound::positive);
 
-    if (auto fov_field = reader.optional("fov")) {
+    uav.sensor.ground_level = ground;
+    if (ground) {
+      readSector(reader, uav.sensor.footprint);
+    } else if (auto fov_field = reader.optional("fov")) {
       ObjectReader fov = fov_field->object();
       const std::string kind = fov.oneOf({"size", "radius"});
       if (kind == "radius") {
