@@ -45,8 +45,8 @@ struct FusionConfig {
   int rounds = 5;                                               // L consensus rounds per step
   double comm_range = std::numeric_limits<double>::infinity();  // m, neighbours within this range
   double comm_drop = 0.0;          // probability that a message is lost
-  // Simulation steps a message is in flight. Applies to intention messages (SMA-NBO's plans, the
-  // centralised leader's orders); consensus exchanges are not delayed (docs/design-notes.md).
+  // Simulation steps a message is in flight: intention messages (SMA-NBO's plans, the centralised
+  // leader's orders) and consensus messages alike (docs/design-notes.md).
   int comm_latency = 0;
   double association_gate = 9.21;  // χ²₂ (99 %) gate on the position Mahalanobis distance
 };

@@ -6,7 +6,8 @@ namespace canopy::agents {
 
 Team::Team(const TeamConfig& config)
     : config_(config),
-      fusion_(config.fusion, static_cast<int>(config.uavs.size()), config.seed),
+      fusion_(config.fusion, static_cast<int>(config.uavs.size()), config.seed, config.dt,
+              config.tracking.sigma_a),
       planner_(config.planner, config.tracking.sigma_a, config.seed,
                planning::LinkConfig{config.fusion.comm_range, config.fusion.comm_drop,
                                     config.fusion.comm_latency,

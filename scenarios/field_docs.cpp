@@ -114,8 +114,8 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"fusion.comm_range", "m", "agents within this distance exchange messages; null: unlimited"},
       {"fusion.comm_drop", "", "probability that a message is lost"},
       {"fusion.comm_latency", "steps",
-       "simulation steps an intention message (plan or order) is in flight; consensus is not "
-       "delayed"},
+       "simulation steps every message is in flight: consensus messages (a receiver fuses what "
+       "its neighbours held that many steps ago, predicted to now) and intentions (plans, orders)"},
       {"fusion.association_gate", "",
        "χ²₂ gate on the position Mahalanobis distance when matching tracks across agents"},
       {"planner", "", "nominal belief planning"},

@@ -151,10 +151,10 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                                      {"rekeys", d.rekeys},
                                      {"numerical_failures", d.numerical_failures}};
     // Per kind, on links within comm_range: sent, of which lost, and of those that arrived, late
-    // (read at a later step than sent; consensus exchanges are not delayed).
+    // (read at a later step than sent: fusion.comm_latency > 0).
     const agents::planning::MessageCounts& p = intentions_at_end_;
     summary["messages"] = {
-        {"consensus", {{"sent", d.messages}, {"lost", d.lost_messages}, {"late", 0}}},
+        {"consensus", {{"sent", d.messages}, {"lost", d.lost_messages}, {"late", d.late_messages}}},
         {"intentions", {{"sent", p.sent}, {"lost", p.lost}, {"late", p.late}}}};
   }
   summary["timing"] = {{"wall_seconds", wall_seconds}, {"planning", plan_timing}};

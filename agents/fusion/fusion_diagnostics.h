@@ -8,6 +8,7 @@ struct FusionDiagnostics {
   long steps = 0;               // fuse() calls
   long messages = 0;            // consensus messages sent (exchanges × directed links)
   long lost_messages = 0;       // of which lost (comm_drop)
+  long late_messages = 0;       // of those that arrived, read comm_latency steps after sent
   long remembered_matches = 0;  // neighbour pairs kept together because they share a key
   long new_matches = 0;         // neighbour pairs joined by the gated Hungarian assignment
   long refused_matches = 0;     // assigned pairs refused: one agent would hold two of a cluster

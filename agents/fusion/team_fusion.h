@@ -54,6 +54,15 @@ struct FusedTracks {
 ///    with the most measurements (shareOutlines). Track::prior, status and the counters are left alone, except that
 ///    adopted copies are confirmed, with detected = false.
 ///
+/// 4. Latency: with config.comm_latency = k > 0 a consensus message reaches its receiver k steps
+///    after it was sent. Receiver i then fuses its own lists of this step with the lists each
+///    neighbour held k steps before (targets predicted over k·dt by the NCV model with σ_a,
+///    trees static), nothing from a neighbour during the first k steps. Each receiver's view
+///    differs, so steps 2–3 run once per receiver on its view and it keeps its own fused lists;
+///    the graph (current positions) and the losses are drawn once per step, and messages are
+///    counted when due (sent, lost, late). The association and consensus counters add up over
+///    the receivers' runs.
+///
 /// Postconditions: within one connected part of the network no two clusters share a key, so no
 /// fused list holds two tracks with one key; tracks never change label, and a fused list holds
 /// its agent's tracks in their order, then the adopted ones (fusion deletes nothing: deletion
@@ -68,8 +77,10 @@ struct FusedTracks {
 class TeamFusion {
  public:
   /// config: validated at load time (rounds ≥ 0, comm_range > 0, comm_drop in [0, 1],
-  /// association_gate > 0 and finite). agents: team size N ≥ 0. seed: the trial's seed.
-  TeamFusion(const FusionConfig& config, int agents, std::uint64_t seed);
+  /// comm_latency ≥ 0, association_gate > 0 and finite). agents: team size N ≥ 0. seed: the
+  /// trial's seed. dt (s) and sigma_a (m/s², the trackers' NCV intensity) predict late messages.
+  TeamFusion(const FusionConfig& config, int agents, std::uint64_t seed, double dt = 0.2,
+             double sigma_a = 1.0);
 
   /// Runs one fusion step on the agents' lists and writes the result into `fused` (resized to
   /// the team; its lists' capacity is reused). agents.size() must equal the team size (checked:
@@ -83,7 +94,14 @@ class TeamFusion {
   const FusionConfig& config() const { return config_; }
 
  private:
+  // Steps 2–3 (association, consensus, outlines) on `fused`, every agent's lists at once.
+  void associateAndAgree(FusedTracks& fused);
+  // fuse() with comm_latency > 0 (point 4 above).
+  void fuseLate(std::span<const AgentTracks> agents, FusedTracks& fused);
+
   FusionConfig config_;
+  double dt_ = 0.2;       // s
+  double sigma_a_ = 1.0;  // m/s²
   int agents_ = 0;
   std::vector<RandomStream> loss_streams_;  // per agent: losses of the messages it receives
   KeyMint mint_;
@@ -97,6 +115,10 @@ class TeamFusion {
   Clusters target_clusters_;
   Clusters tree_clusters_;
   std::vector<tracking::TreeOutline> outline_scratch_;
+  // Latency: the lists each agent sent at the last k + 1 steps, [step % (k + 1)][agent].
+  std::vector<FusedTracks> sent_;
+  FusedTracks view_;  // one receiver's view: its own lists and its neighbours' late ones
+  long step_ = 0;     // fuse() calls so far
 };
 
 }  // namespace canopy::agents::fusion
