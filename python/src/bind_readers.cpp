@@ -187,7 +187,20 @@ py::dict tracks(py::handle self, std::size_t agent) {
 py::dict occlusionMap(py::handle self, std::size_t agent) {
   const PySimulation& s = simulationOf(self);
   checkIndex(agent, s.record().beliefs.size(), "agent");
-  return gaussians<3>(s.record().beliefs[agent].trees);  // means (m, 3) cx, cy, r (m)
+  const auto& trees = s.record().beliefs[agent].trees;
+  py::dict out = gaussians<3>(trees);  // means (m, 3) cx, cy, r (m)
+  // Per tree, its estimated outline's vertices (k, 2) in m, centre + offsets; (0, 2) for a disc.
+  py::list outlines;
+  for (const agents::TreeEstimate& tree : trees) {
+    const Vec2 centre = tree.belief.x.head<2>();
+    outlines.append(copyRows(static_cast<std::size_t>(tree.outline.vertices), 2,
+                             [&](std::size_t v, double* o) {
+                               const Vec2 p = centre + tree.outline.offsets[v];
+                               o[0] = p.x(), o[1] = p.y();
+                             }));
+  }
+  out["outlines"] = outlines;
+  return out;
 }
 
 py::array_t<double> vec2Rows(const std::vector<Vec2>& points) {
@@ -241,7 +254,8 @@ void bindReaders(py::class_<PySimulation>& cls) {
            "Agent's fused target tracks: keys (m, 2), labels, confirmed, means (m, 4), "
            "covariances (m, 4, 4)")
       .def("occlusion_map", &occlusionMap, py::arg("agent"),
-           "Agent's occlusion map: keys (m, 2), means (m, 3) cx, cy, r, covariances (m, 3, 3)")
+           "Agent's occlusion map: keys (m, 2), means (m, 3) cx, cy, r, covariances (m, 3, 3), "
+           "outlines: per tree its polygon's vertices (k, 2), (0, 2) for a disc")
       .def(
           "planned_path",
           [](py::handle self, std::size_t agent) {

@@ -141,6 +141,20 @@ def test_occlusion_map_holds_seen_trees():
     tree = sim.occlusion_map(0)
     assert tree["means"].shape == (1, 3) and tree["covariances"].shape == (1, 3, 3)
     np.testing.assert_allclose(tree["means"][0], [-6.6, 1.6, 2.0], atol=0.5)
+    assert len(tree["outlines"]) == 1 and tree["outlines"][0].shape == (0, 2)  # a disc
+
+
+def test_occlusion_map_holds_a_walls_outline():
+    s = canopy.load("occlusion_sharing")
+    # A 6 × 1 m wall inside UAV1's footprint: mapped as its four corners, in the file's order.
+    corners = [[-12, 0], [-6, 0], [-6, 1], [-12, 1]]
+    s.config["occluders"] = [{"type": "polygon", "vertices": corners}]
+    sim = canopy.Simulation(s, seed=1)
+    for _ in range(10):
+        sim.step(np.zeros((2, 2)))
+    outlines = sim.occlusion_map(0)["outlines"]
+    assert len(outlines) == 1 and outlines[0].shape == (4, 2)
+    np.testing.assert_allclose(outlines[0], corners, atol=0.5)
 
 
 def test_render_equals_the_clis_first_frame(tmp_path, cli):
