@@ -1,6 +1,8 @@
 // The NBO cost under the line-of-sight model against the canopy model (issue "Walls, faulty links
 // and ground robots": at most 2× with a 1 000-tree map). One joint evaluation of 3 UAVs, 4 targets,
-// H = 5, in a 200 × 200 m forest of 1 000 crowns (radius 0.5–1.5 m, about 8 % cover).
+// H = 5, in a 200 × 200 m forest of 1 000 crowns (radius 0.5–1.5 m, about 8 % cover). Argument:
+// 0 canopy model, 1 line of sight, 2 three ground robots instead (unicycles with 30 m, 90° sector
+// cameras, line of sight).
 //
 //   build/release/bench/bench_line_of_sight --benchmark_repetitions=10 --benchmark_report_aggregates_only
 //   valgrind --tool=callgrind build/release/bench/bench_line_of_sight --benchmark_min_time=0.2
@@ -32,6 +34,7 @@ OcclusionMap forest() {
 void BM_CostEvaluation1000Trees(benchmark::State& state) {
   const auto model = state.range(0) == 0 ? sensing::OcclusionModel::canopy
                                          : sensing::OcclusionModel::line_of_sight;
+  const bool ground = state.range(0) == 2;
   const OcclusionMap map = forest();
   std::vector<TargetGaussian> targets;
   const Vec2 starts[] = {{80, 80}, {90, 85}, {120, 110}, {70, 130}};
@@ -49,6 +52,15 @@ void BM_CostEvaluation1000Trees(benchmark::State& state) {
     u.position = p;
     u.footprint.size = Vec2(20, 20);
     u.occlusion = model;
+    if (ground) {
+      u.kind = world::AgentKind::ground;
+      u.yaw_mode = world::YawMode::velocity;
+      u.v_max = 2.0;
+      u.turn_rate = 1.0;
+      u.footprint.shape = sensing::FootprintShape::sector;
+      u.footprint.radius = 30.0;
+      u.footprint.angle = 0.5 * kPi;
+    }
     uavs.push_back(u);
   }
   PlannerConfig config;
@@ -70,7 +82,7 @@ void BM_CostEvaluation1000Trees(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(cost.evaluate(plans[k++ & 1023]));
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_CostEvaluation1000Trees)->ArgName("line_of_sight")->Arg(0)->Arg(1);
+BENCHMARK(BM_CostEvaluation1000Trees)->ArgName("line_of_sight")->Arg(0)->Arg(1)->Arg(2);
 
 }  // namespace
 }  // namespace canopy::agents::planning

@@ -19,17 +19,14 @@ constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is 
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in reach_
 
-sensing::Footprint placeFootprint(const sensing::FootprintDef& def, const Vec2& centre, double c,
+// Footprint::place with cos ψ, sin ψ already known: the footprint's constant part (shape, sizes,
+// the sector's cos(θ/2)) comes placed at the origin, computed once per UAV.
+sensing::Footprint placeFootprint(const sensing::Footprint& at_origin, const Vec2& centre, double c,
                                   double s) {
-  sensing::Footprint f;  // Footprint::place with cos ψ, sin ψ already known
-  f.shape = def.shape;
+  sensing::Footprint f = at_origin;
   f.centre = centre;
   f.cos_yaw = c;
   f.sin_yaw = s;
-  f.half = 0.5 * def.size;
-  f.radius = def.radius;
-  f.half_angle = 0.5 * def.angle;
-  f.cos_half = std::cos(f.half_angle);
   return f;
 }
 
@@ -74,7 +71,7 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
     for (int sample = 0; sample < substeps_; ++sample) {
       p += step;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
       *positions++ = p;
-      *footprints++ = placeFootprint(uav.footprint, p, c, s);
+      *footprints++ = placeFootprint(uav.at_origin, p, c, s);
     }
   }
 }
@@ -92,7 +89,7 @@ void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> action
       at = world::unicycleMove(pose, a, robot.turn_rate, sample * tau);  // the world's motion
       *positions++ = at.position;
       *footprints++ =
-          placeFootprint(robot.footprint, at.position, std::cos(at.heading), std::sin(at.heading));
+          placeFootprint(robot.at_origin, at.position, std::cos(at.heading), std::sin(at.heading));
     }
     pose = at;
   }
@@ -142,6 +139,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
                  follows,
                  u.v_max,
                  u.footprint,
+                 sensing::Footprint::place(u.footprint, Vec2::Zero(), 0.0),
                  sampleQuality(u.quality),
                  u.occlusion == sensing::OcclusionModel::line_of_sight,
                  u.kind == world::AgentKind::ground,

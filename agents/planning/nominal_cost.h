@@ -84,6 +84,7 @@ class NominalCost {
     bool yaw_follows;                 // ψ follows the direction of a_{i,m} (kept while hovering)
     double v_max;                     // m/s
     sensing::FootprintDef footprint;  // φ relative to the UAV (m)
+    sensing::Footprint at_origin;     // φ placed at the origin with ψ = 0 (its constant part)
     sensing::SensorQuality quality;   // α·S, r0 (m): R of one of an action's S samples
     bool line_of_sight;               // a map tree on the segment p → z hides z from it
     bool ground;                      // a ground robot: moves as world/unicycle.h
