@@ -17,8 +17,9 @@ Team::Team(const TeamConfig& config)
       planned_paths_(config.uavs.size()) {
   for (int i = 0; i < static_cast<int>(config.uavs.size()); ++i) {
     const planning::UavState& uav = config.uavs[i];
-    agents_.emplace_back(i, config.tracking,
-                         tracking::CameraOcclusion{uav.occlusion, uav.kind == world::AgentKind::ground});
+    agents_.emplace_back(
+        i, config.tracking,
+        tracking::CameraOcclusion{uav.occlusion, uav.kind == world::AgentKind::ground});
   }
 }
 

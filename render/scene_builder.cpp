@@ -86,7 +86,8 @@ void addBeliefs(const world::WorldSnapshot& truth, std::span<const agents::Agent
       const Vec2 centre = tree.belief.x.head<2>();
       if (tree.outline.vertices > 0) {  // a polygonal crown or wall: its estimated outline
         std::vector<Vec2> outline;
-        for (int v = 0; v < tree.outline.vertices; ++v) outline.push_back(centre + tree.outline.offsets[v]);
+        for (int v = 0; v < tree.outline.vertices; ++v)
+          outline.push_back(centre + tree.outline.offsets[v]);
         add(out, Polyline{std::move(outline), 1.2 * z.u, colour, true});
       } else {
         add(out, Ring{centre, std::max(tree.belief.x(2), 0.1), 1.2 * z.u, colour});
@@ -349,7 +350,8 @@ std::vector<Vec2> footprintCorners(const sensing::Footprint& f) {
     constexpr double kArcStep = std::numbers::pi / 180.0;  // rad, 1°
     const int arcs = std::max(2, static_cast<int>(std::ceil(2.0 * f.half_angle / kArcStep)));
     std::vector<Vec2> out{f.centre};
-    for (int k = 0; k <= arcs; ++k) out.push_back(f.sectorPoint(f.half_angle * (2.0 * k / arcs - 1.0)));
+    for (int k = 0; k <= arcs; ++k)
+      out.push_back(f.sectorPoint(f.half_angle * (2.0 * k / arcs - 1.0)));
     return out;
   }
   const Vec2 along = f.half.x() * Vec2(f.cos_yaw, f.sin_yaw);

@@ -54,9 +54,12 @@ Aabb Footprint::bounds() const {
 
 double Footprint::area() const {
   switch (shape) {
-    case FootprintShape::disc: return std::numbers::pi * radius * radius;
-    case FootprintShape::sector: return half_angle * radius * radius;  // ½ θ r²
-    case FootprintShape::rectangle: break;
+    case FootprintShape::disc:
+      return std::numbers::pi * radius * radius;
+    case FootprintShape::sector:
+      return half_angle * radius * radius;  // ½ θ r²
+    case FootprintShape::rectangle:
+      break;
   }
   return 4.0 * half.x() * half.y();
 }

@@ -19,7 +19,8 @@ struct FootprintDef {
   FootprintShape shape = FootprintShape::rectangle;
   Vec2 size = Vec2(20.0, 20.0);  // m, rectangle [w, h]: w along the heading ψ, h across
   double radius = 10.0;          // m, disc; for a sector its range
-  double angle = 0.5 * std::numbers::pi;  // rad, sector only: the field of view's full angle (0, 2π]
+  double angle =
+      0.5 * std::numbers::pi;  // rad, sector only: the field of view's full angle (0, 2π]
 };
 
 /// The largest distance from the agent's ground point to a point of its footprint (m).
@@ -31,11 +32,11 @@ inline double circumradius(const FootprintDef& def) {
 /// rotated by its yaw. A closed set.
 struct Footprint {
   FootprintShape shape = FootprintShape::rectangle;
-  Vec2 centre = Vec2::Zero();    // m; a sector's apex
-  double cos_yaw = 1.0;          // cos ψ
-  double sin_yaw = 0.0;          // sin ψ
-  Vec2 half = Vec2(10.0, 10.0);  // m, rectangle half-extents
-  double radius = 10.0;          // m, disc; a sector's range
+  Vec2 centre = Vec2::Zero();                   // m; a sector's apex
+  double cos_yaw = 1.0;                         // cos ψ
+  double sin_yaw = 0.0;                         // sin ψ
+  Vec2 half = Vec2(10.0, 10.0);                 // m, rectangle half-extents
+  double radius = 10.0;                         // m, disc; a sector's range
   double half_angle = 0.25 * std::numbers::pi;  // rad, sector: half the field of view, θ/2
   double cos_half = 0.5 * std::numbers::sqrt2;  // cos(θ/2), sector
 

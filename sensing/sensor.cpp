@@ -56,7 +56,8 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     if (ref.kind != world::BodyKind::tree) continue;
     const world::TreeDef& tree = world.trees()[ref.index];
     if (!footprint.contains(tree.centre)) continue;
-    if (sensor.ground_level && world.firstOccluderOnSegment(p_i, tree.centre) != ref.index) continue;
+    if (sensor.ground_level && world.firstOccluderOnSegment(p_i, tree.centre) != ref.index)
+      continue;
     const Mat2 R_truth = rangeBearingCovariance(tree.centre, p_i, sensor.quality);
     const Vec2 z = tree.centre + rng.gaussian(config.truth_noise_scale * R_truth);
     const double radius =

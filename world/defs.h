@@ -27,11 +27,11 @@ inline constexpr EnumNames<AgentKind, 2> kAgentKindNames{{
 
 /// An agent (a UAV or a ground robot): a kinematic body commanded by horizontal velocity.
 struct UavDef {
-  Vec2 start = Vec2::Zero();  // m
-  double yaw = 0.0;           // rad, initial heading ψ
+  Vec2 start = Vec2::Zero();          // m
+  double yaw = 0.0;                   // rad, initial heading ψ
   YawMode yaw_mode = YawMode::fixed;  // ground robots: always velocity (the heading is the body's)
-  double v_max = 5.0;      // m/s, |commanded velocity| is clamped to this
-  double turn_rate = 1.0;  // rad/s, ground robots only: |ψ̇| ≤ ω_max
+  double v_max = 5.0;                 // m/s, |commanded velocity| is clamped to this
+  double turn_rate = 1.0;             // rad/s, ground robots only: |ψ̇| ≤ ω_max
   AgentKind kind = AgentKind::uav;
 };
 

@@ -36,7 +36,8 @@ class World {
   const Vec2& commandedVelocity(int uav) const { return commands_[uav]; }
 
   /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
-  /// commanded velocity, ground robots by unicycleMove over dt. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits.
+  /// commanded velocity, ground robots by unicycleMove over dt. Sub-steps Box2D so that no body
+  /// exceeds Box2D's per-step motion limits.
   void step(double dt);
 
   WorldSnapshot snapshot() const;

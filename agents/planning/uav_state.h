@@ -1,6 +1,7 @@
 #pragma once
-// What the planner knows of one agent (a UAV or a ground robot) at a planning epoch: where it is, how it may move and what its
-// camera sees. UAVs are heterogeneous (footprint, sensor quality, speed limit).
+// What the planner knows of one agent (a UAV or a ground robot) at a planning epoch: where it is,
+// how it may move and what its camera sees. UAVs are heterogeneous (footprint, sensor quality,
+// speed limit).
 #include "core/types.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"

@@ -16,11 +16,11 @@ constexpr double kHitProbability = 0.5;
 // (line of sight from the sensor). A tree's centre lies inside its own crown and a camera from
 // above sees every crown, so there trees only need the footprint; at ground level a tree is
 // hidden when a crown of the map stands on the segment to the point of its crown nearest the
-// sensor (its own crown is only touched there, which does not count).
+// sensor (its own crown is only touched there, which does not count; a polygon's crown is taken
+// as its disc of equal area, the track's radius).
 template <int N>
 bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
-                     const OcclusionMap& map, const CameraOcclusion& camera,
-                     const Vec2& sensor) {
+                     const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor) {
   const Vec2 position = track.prior.x.template head<2>();
   if (!footprint.contains(position)) return false;
   if constexpr (N == 3) {

@@ -193,11 +193,11 @@ py::dict occlusionMap(py::handle self, std::size_t agent) {
   py::list outlines;
   for (const agents::TreeEstimate& tree : trees) {
     const Vec2 centre = tree.belief.x.head<2>();
-    outlines.append(copyRows(static_cast<std::size_t>(tree.outline.vertices), 2,
-                             [&](std::size_t v, double* o) {
-                               const Vec2 p = centre + tree.outline.offsets[v];
-                               o[0] = p.x(), o[1] = p.y();
-                             }));
+    outlines.append(
+        copyRows(static_cast<std::size_t>(tree.outline.vertices), 2, [&](std::size_t v, double* o) {
+          const Vec2 p = centre + tree.outline.offsets[v];
+          o[0] = p.x(), o[1] = p.y();
+        }));
   }
   out["outlines"] = outlines;
   return out;

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "core/angles.h"
-
 #include "scenarios/loader.h"
 #include "scenarios/simulation.h"
 

@@ -70,7 +70,7 @@ constexpr const char* kWall = R"({
 const Polygon kTrueWall{{-10, 4}, {30, 4}, {30, 6}, {-10, 6}};
 
 struct MappedWall {
-  Polygon polygon;  // vertices of the map's crown (centre + mean offsets), in outline order
+  Polygon polygon;          // vertices of the map's crown (centre + mean offsets), in outline order
   double vertex_rms = 0.0;  // m, √(mean over vertices of |v̂ − v|²)
 };
 

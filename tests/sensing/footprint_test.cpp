@@ -71,7 +71,6 @@ TEST(Footprint, PointsFromTheUnitSquareFallInside) {
   }
 }
 
-
 FootprintDef sector(double range, double angle) {
   FootprintDef def;
   def.shape = FootprintShape::sector;
@@ -85,8 +84,8 @@ TEST(Footprint, SectorHoldsWhatLiesWithinRangeAndHalfTheAngleOfTheHeading) {
   // Apex (2, 1), heading north, 90° wide, 10 m: the quarter disc between the bearings 45° and
   // 135° from the x axis.
   const Footprint f = Footprint::place(sector(10, kPi / 2), Vec2(2, 1), kPi / 2);
-  EXPECT_TRUE(f.contains(Vec2(2, 1)));       // the apex
-  EXPECT_TRUE(f.contains(Vec2(2, 11)));      // straight ahead at the range
+  EXPECT_TRUE(f.contains(Vec2(2, 1)));   // the apex
+  EXPECT_TRUE(f.contains(Vec2(2, 11)));  // straight ahead at the range
   EXPECT_FALSE(f.contains(Vec2(2, 11.001)));
   EXPECT_TRUE(f.contains(Vec2(5, 4)));       // on the 45° edge
   EXPECT_FALSE(f.contains(Vec2(5.01, 4)));   // just outside it

@@ -27,7 +27,8 @@ TEST(Unicycle, TurnsInPlaceAtItsRateThenDrivesAlongTheCommand) {
   EXPECT_NEAR(at3.position.x(), 3.0, 1e-15);
   EXPECT_DOUBLE_EQ(at3.position.y(), 4.0 + 2.0 * (3.0 - kPi / 2));  // |c| (t − t_r)
   // The short way round: from ψ = 3 rad toward −3 rad is 2π − 6 ≈ 0.283 rad counter-clockwise.
-  const Pose2 wrap = unicycleMove({Vec2::Zero(), 3.0}, Vec2(std::cos(-3.0), std::sin(-3.0)), 0.1, 1.0);
+  const Pose2 wrap =
+      unicycleMove({Vec2::Zero(), 3.0}, Vec2(std::cos(-3.0), std::sin(-3.0)), 0.1, 1.0);
   EXPECT_NEAR(wrap.heading, 3.1, 1e-12);
   // Already aligned: drives the whole time; no command: holds its pose.
   const Pose2 aligned = unicycleMove({Vec2::Zero(), 0.0}, Vec2(1.5, 0), 1.0, 2.0);
