@@ -76,6 +76,29 @@ TEST(FootprintCorners, AreTheRotatedRectanglesCorners) {
   EXPECT_TRUE(footprintCorners(sensing::Footprint::place(def, Vec2(0, 0), 0.0)).empty());
 }
 
+TEST(FootprintCorners, ASectorIsItsApexThenItsArcAndCrownsCutWhatItSees) {
+  sensing::FootprintDef def;
+  def.shape = sensing::FootprintShape::sector;
+  def.radius = 10.0;
+  def.angle = std::numbers::pi / 2;
+  const sensing::Footprint f = sensing::Footprint::place(def, Vec2(0, 0), 0.0);
+  const std::vector<Vec2> outline = footprintCorners(f);
+  // The apex, then 91 arc points 1° apart from −45° to +45°.
+  ASSERT_EQ(outline.size(), 92u);
+  EXPECT_EQ(outline.front(), Vec2(0, 0));
+  EXPECT_TRUE(outline[1].isApprox(10.0 / std::sqrt(2.0) * Vec2(1, -1)));
+  EXPECT_TRUE(outline[46].isApprox(Vec2(10, 0)));
+  for (const Vec2& p : outline) EXPECT_TRUE(f.contains(p));
+  // A crown of radius 1 at (5, 0): the ray along the heading stops where it enters it, at x = 4;
+  // the ray at 20° passes 5 sin 20° = 1.71 m from its centre and is not cut.
+  const std::vector<world::TreeDef> trees{world::TreeDef::disc({5, 0}, 1.0)};
+  const std::vector<Vec2> seen = visibleSector(f, trees);
+  ASSERT_EQ(seen.size(), outline.size());
+  EXPECT_TRUE(seen[46].isApprox(Vec2(4, 0)));
+  EXPECT_TRUE(seen[66].isApprox(outline[66]));
+  EXPECT_EQ(seen.front(), outline.front());
+}
+
 TEST(TargetTrails, KeepTheLastSecondsOnly) {
   TargetTrails trails(1.0);
   for (int k = 0; k <= 10; ++k) {
