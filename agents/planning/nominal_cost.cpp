@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is kept (as the world)
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
-constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in reach_
+constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in a reach mask
 
 // Footprint::place with cos ψ, sin ψ already known: the footprint's constant part (shape, sizes,
 // the sector's cos(θ/2)) comes placed at the origin, computed once per UAV.
@@ -174,9 +174,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
   z_.resize(cells);
   occluded_.assign(cells, 0);
-  fixed_seen_.assign(cells, 0);
-  fixed_R_.assign(cells, Mat2::Zero());
-  reach_.assign(cells, 0);
+  std::vector<std::uint8_t> fixed_seen(cells, 0);  // some fixed UAV's footprint holds z_{j,m}
+  std::vector<Mat2> fixed_R(cells, Mat2::Identity());  // m², R_fix at (j, m) when fixed_seen
+  std::vector<std::uint64_t> reach(cells, 0);  // bit f: free UAV f can reach a footprint over z
+  std::vector<SymmetricCov4> fixed_path(cells);  // P_{j,t} with the fixed UAVs' updates only
+  std::vector<SymmetricCov4> initial(n_targets);  // P_{j,0}
   start_.assign(n_targets, T);
   P_start_.resize(n_targets);
   cost_start_.assign(n_targets, 0.0);
@@ -186,7 +188,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     Vec4 x = problem.targets[j].x;
     const Mat4& P0 = problem.targets[j].P;
     // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
-    SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
+    SymmetricCov4 P = initial[j] = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
     double cost = 0.0;
     bool started = false;
     for (int t = 0; t < T; ++t) {
@@ -204,33 +206,76 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           if (!fixed_fp[im].contains(z) || !sightClear(fixed_movers[i], fixed_pos[im], z)) continue;
           const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
                                                          sampleQuality(problem.uavs[i].quality));
-          if (seen++ == 0) fixed_R_[k] = R;
+          if (seen++ == 0) fixed_R[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
-        if (seen > 1) fixed_R_[k] = information.llt().solve(Mat2::Identity());  // R_fix
-        fixed_seen_[k] = seen > 0;
+        if (seen > 1) fixed_R[k] = information.llt().solve(Mat2::Identity());  // R_fix
+        fixed_seen[k] = seen > 0;
         for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
           // |p_f − p_{f,0}| ≤ (t + 1)·v_max·τ, and a footprint holds points within its
           // circumradius.
-          const double reach = (t + 1) * free_[f].v_max * tau + sensing::circumradius(free_[f].footprint);
-          if ((z - free_[f].position).norm() <= reach + kReachSlack) reach_[k] |= 1ULL << f;
+          const double radius =
+              (t + 1) * free_[f].v_max * tau + sensing::circumradius(free_[f].footprint);
+          if ((z - free_[f].position).norm() <= radius + kReachSlack) reach[k] |= 1ULL << f;
         }
       }
-      if (!started && reach_[k] != 0) {
+      if (!started && reach[k] != 0) {
         started = true;
         start_[j] = t;
         P_start_[j] = P;
         cost_start_[j] = cost;
       }
-      if (started) continue;
       predictCovariance(P, tau, Q_);
-      if (fixed_seen_[k]) updatePosition(P, fixed_R_[k]);
+      if (fixed_seen[k]) updatePosition(P, fixed_R[k]);
+      fixed_path[k] = P;
+      if (started) continue;
       if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
-      if (t == T - 1) seen_final_[j] = fixed_seen_[k];
+      if (t == T - 1) seen_final_[j] = fixed_seen[k];
     }
     if (!started) {
       P_start_[j] = P;
       cost_start_[j] = cost;
+    }
+  }
+
+  // The tracks in pairs. A lane past the last track is never seen: its P is I and its R too
+  // (positive definite, as updatePosition asks of every lane).
+  const int n_pairs = (n_targets + 1) / 2;
+  const SymmetricCov4 unit = SymmetricCov4::fromUpper(Mat4::Identity());
+  pair_samples_.resize(static_cast<std::size_t>(n_pairs) * T);
+  pair_start_.assign(n_pairs, T);
+  P_pair_start_.resize(n_pairs);
+  for (int q = 0; q < n_pairs; ++q) {
+    const int lanes[2] = {2 * q, 2 * q + 1};
+    for (const int j : lanes) {
+      if (j < n_targets) pair_start_[q] = std::min(pair_start_[q], start_[j]);
+    }
+    SymmetricCov4 before[2] = {unit, unit};  // each lane's P at pair_start_ − 1
+    for (int lane = 0; lane < 2; ++lane) {
+      const int j = lanes[lane];
+      if (j >= n_targets) continue;
+      before[lane] = pair_start_[q] == 0
+                         ? initial[j]
+                         : fixed_path[static_cast<std::size_t>(j) * T + pair_start_[q] - 1];
+    }
+    P_pair_start_[q] = CovariancePair::of(before[0], before[1]);
+    for (int t = 0; t < T; ++t) {
+      PairSample& sample = pair_samples_[static_cast<std::size_t>(q) * T + t];
+      Mat2 R[2] = {Mat2::Identity(), Mat2::Identity()};  // I in a lane that does not see
+      sample.fixed_seen = LaneMask{0, 0};
+      for (int lane = 0; lane < 2; ++lane) {
+        const int j = lanes[lane];
+        sample.z[lane] = Vec2::Zero();
+        sample.reach[lane] = 0;
+        if (j >= n_targets) continue;
+        const std::size_t k = static_cast<std::size_t>(j) * T + t;
+        sample.z[lane] = z_[k];
+        sample.reach[lane] = reach[k];
+        if (!fixed_seen[k]) continue;
+        R[lane] = fixed_R[k];
+        sample.fixed_seen[lane] = -1;
+      }
+      sample.fixed_R = NoisePair::of(R[0], R[1]);
     }
   }
 
@@ -239,6 +284,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   trace_final_.assign(n_targets, 0.0);
   in_view_final_.assign(n_targets, 0);
   uncovered_.assign(n_targets, 0);
+  stage_terms_.resize(H);
   charged_.assign(n_uavs, 0.0);
 }
 
@@ -252,40 +298,58 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   const double tau = period_ / S;
   double J = 0.0;
   const int n_targets = static_cast<int>(start_.size());
-  for (int j = 0; j < n_targets; ++j) {
-    SymmetricCov4 P = P_start_[j];
-    J += cost_start_[j];
-    bool seen_final = seen_final_[j];
-    int m = start_[j] / S;         // the action (0-based) of the first sample
-    int left = S - start_[j] % S;  // samples of it still to come, the first included
-    for (int t = start_[j]; t < T; ++t) {
-      const std::size_t k = static_cast<std::size_t>(j) * T + t;
+  const int n_pairs = static_cast<int>(pair_start_.size());
+  for (int q = 0; q < n_pairs; ++q) {
+    const int lanes = std::min(2, n_targets - 2 * q);  // the lanes that hold a track
+    const int first = pair_start_[q];
+    CovariancePair P = P_pair_start_[q];
+    LaneMask seen_final = {0, 0};
+    int m = first / S;         // the action (0-based) of the first sample
+    int left = S - first % S;  // samples of it still to come, the first included
+    for (int t = first; t < T; ++t) {
+      const PairSample& sample = pair_samples_[static_cast<std::size_t>(q) * T + t];
       predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
-      bool seen = false;
       // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
-      // tree on the segment p_{i,m} → z_{j,m}}
-      if (!occluded_[k]) {
-        if (fixed_seen_[k]) {
-          updatePosition(P, fixed_R_[k]);
-          seen = true;
+      // tree on the segment p_{i,m} → z_{j,m}}; the fixed UAVs' part is fused in R_fix.
+      LaneMask seen = sample.fixed_seen;
+      if (anyLane(seen)) updatePosition(P, sample.fixed_R, seen);
+      for (std::uint64_t bits = sample.reach[0] | sample.reach[1]; bits != 0; bits &= bits - 1) {
+        const int f = std::countr_zero(bits);
+        const std::size_t fq = static_cast<std::size_t>(f) * T + t;
+        Mat2 R[2] = {Mat2::Identity(), Mat2::Identity()};  // I in a lane that does not see
+        LaneMask sees = {0, 0};
+        for (int lane = 0; lane < 2; ++lane) {
+          const Vec2& z = sample.z[lane];
+          if ((sample.reach[lane] >> f & 1) == 0 || !free_fp_[fq].contains(z) ||
+              !sightClear(free_[f], free_pos_[fq], z)) {
+            continue;
+          }
+          R[lane] = sensing::rangeBearingCovariance(z, free_pos_[fq], free_[f].quality);  // S·R
+          sees[lane] = -1;
         }
-        for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
-          const int f = std::countr_zero(bits);
-          const std::size_t fq = static_cast<std::size_t>(f) * T + t;
-          if (!free_fp_[fq].contains(z_[k]) || !sightClear(free_[f], free_pos_[fq], z_[k])) continue;
-          const Mat2 R = sensing::rangeBearingCovariance(z_[k], free_pos_[fq], free_[f].quality);
-          updatePosition(P, R);  // S·R
-          seen = true;
-        }
+        if (!anyLane(sees)) continue;
+        updatePosition(P, NoisePair::of(R[0], R[1]), sees);
+        seen |= sees;
       }
-      if (--left == 0) {                      // the plan instant t_m ends the action
-        J += discount_[m++] * stageTrace(P);  // γ^{m−1} tr(P_{j,m})
+      if (--left == 0) {  // the plan instant t_m ends the action
+        stage_terms_[m] = discount_[m] * (full_trace_ ? P.trace() : P.positionTrace());
+        ++m;
         left = S;
       }
       if (t == T - 1) seen_final = seen;
     }
-    trace_final_[j] = P.positionTrace();  // tr(P_{j,H}[pos])
-    in_view_final_[j] = seen_final;
+    for (int lane = 0; lane < lanes; ++lane) {
+      const int j = 2 * q + lane;
+      J += cost_start_[j];
+      for (int k = start_[j] / S; k < H; ++k) J += stage_terms_[k][lane];  // γ^{m−1} tr(P_{j,m})
+      if (first < T) {
+        trace_final_[j] = P.positionTrace()[lane];  // tr(P_{j,H}[pos])
+        in_view_final_[j] = seen_final[lane] != 0;
+      } else {
+        trace_final_[j] = P_start_[j].positionTrace();
+        in_view_final_[j] = seen_final_[j];
+      }
+    }
   }
   if (!terminal_ || charged_.empty()) return J;
 

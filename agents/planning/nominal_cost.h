@@ -9,6 +9,7 @@
 #include "agents/config.h"
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
+#include "agents/planning/covariance_pair.h"
 #include "agents/planning/plan.h"
 #include "agents/planning/symmetric_covariance.h"
 #include "agents/planning/uav_state.h"
@@ -59,7 +60,9 @@ struct PlanningProblem {
 ///
 /// Precomputed per call: nominal trajectories z_{j,m} = H F(Δ)^m ξ_j, occlusion flags, the fixed
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
-/// track's recursion up to the first step a free UAV could see it. A commanded speed above v_max
+/// track's recursion up to the first step a free UAV could see it. evaluate() then runs the
+/// tracks two at a time, one per lane of SSE2 pairs (covariance_pair.h), with the bits of one at
+/// a time. A commanded speed above v_max
 /// is clamped, as the world does; a ground robot follows each action as the world's unicycle
 /// (world/unicycle.h: turn toward it, then drive), its sector turning with it.
 class NominalCost {
@@ -118,11 +121,8 @@ class NominalCost {
   std::vector<int> free_index_;   // UAV index of each free UAV
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
-  std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
-  std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown (hidden from all)
-  std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}
-  std::vector<Mat2> fixed_R_;             // m², R_fix at (j, m) when fixed_seen_
-  std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
+  std::vector<Vec2> z_;                 // m, nominal position H F^m ξ_j
+  std::vector<std::uint8_t> occluded_;  // z_{j,m} strictly inside a crown (hidden from all)
 
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;                // first such sample t (H·S: none)
@@ -130,12 +130,25 @@ class NominalCost {
   std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
   std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
 
+  // evaluate() runs the tracks two at a time, track 2q in lane 0 and 2q + 1 in lane 1 of pair q
+  // (an odd last track pairs with a lane that is never seen and never counted).
+  struct PairSample {          // what prepare() knows of pair q at sample t, at [q·H·S + t]
+    Vec2 z[2];                 // m, each lane's z_{j,m}
+    NoisePair fixed_R;         // m², R_fix where a fixed UAV sees the lane (else I)
+    LaneMask fixed_seen;       // some fixed UAV's footprint holds z_{j,m} and it is not hidden
+    std::uint64_t reach[2];    // bit f: free UAV f can reach a footprint over the lane's z_{j,m}
+  };
+  std::vector<PairSample> pair_samples_;
+  std::vector<int> pair_start_;            // the earlier start_ of the pair's two tracks
+  std::vector<CovariancePair> P_pair_start_;  // both lanes' P at pair_start_ − 1
+
   // Scratch reused by evaluate().
   std::vector<Vec2> free_pos_;               // m, p_{f,m}, free-major
   std::vector<sensing::Footprint> free_fp_;  // φ_f(p_{f,m}), free-major
   std::vector<double> trace_final_;          // m², tr(P_{j,H}[pos])
   std::vector<std::uint8_t> in_view_final_;  // some footprint holds z_{j,H} (not occluded)
   std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
+  std::vector<Lanes> stage_terms_;           // m², γ^{m−1} tr(P_{j,m}) of a pair, m = 1..H
   std::vector<double> charged_;              // m, D_i
 };
 
