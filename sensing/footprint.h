@@ -43,7 +43,10 @@ struct Footprint {
   static Footprint place(const FootprintDef& def, const Vec2& centre, double yaw);
 
   /// True when p lies in the closed footprint (1 nm of slack absorbs rotation rounding).
-  bool contains(const Vec2& p) const;
+  bool contains(const Vec2& p) const { return containsFrom(centre, cos_yaw, sin_yaw, p); }
+  /// contains(p) of this footprint moved to `at` with heading (cos ψ, sin ψ) = (c, s): for the
+  /// planner, which places one footprint at many poses.
+  bool containsFrom(const Vec2& at, double c, double s, const Vec2& p) const;
   /// The smallest axis-aligned box holding the footprint.
   Aabb bounds() const;
   double area() const;  // m²
@@ -57,8 +60,8 @@ struct Footprint {
 inline constexpr double kFootprintSlack = 1e-9;
 
 // Inline: the planner's cost asks it for every target at every sample of every candidate plan.
-inline bool Footprint::contains(const Vec2& p) const {
-  const Vec2 d = p - centre;
+inline bool Footprint::containsFrom(const Vec2& at, double c, double s, const Vec2& p) const {
+  const Vec2 d = p - at;
   if (shape != FootprintShape::rectangle) {
     const double r = radius + kFootprintSlack;
     const double d2 = d.squaredNorm();
@@ -66,12 +69,12 @@ inline bool Footprint::contains(const Vec2& p) const {
     if (shape == FootprintShape::disc) return true;
     // Sector: the angle between d and the heading is at most θ/2, i.e. d·ĥ ≥ |d| cos(θ/2) (the
     // apex itself included); 1 nm of slack on the projection, as elsewhere.
-    const double along = cos_yaw * d.x() + sin_yaw * d.y();
+    const double along = c * d.x() + s * d.y();
     return along + kFootprintSlack >= std::sqrt(d2) * cos_half;
   }
   // Into the footprint's frame: rotate d by −ψ.
-  const double along = cos_yaw * d.x() + sin_yaw * d.y();
-  const double across = -sin_yaw * d.x() + cos_yaw * d.y();
+  const double along = c * d.x() + s * d.y();
+  const double across = -s * d.x() + c * d.y();
   return std::abs(along) <= half.x() + kFootprintSlack &&
          std::abs(across) <= half.y() + kFootprintSlack;
 }

@@ -19,15 +19,11 @@ constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is 
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in a reach mask
 
-// Footprint::place with cos ψ, sin ψ already known: the footprint's constant part (shape, sizes,
-// the sector's cos(θ/2)) comes placed at the origin, computed once per UAV.
-sensing::Footprint placeFootprint(const sensing::Footprint& at_origin, const Vec2& centre, double c,
-                                  double s) {
-  sensing::Footprint f = at_origin;
-  f.centre = centre;
-  f.cos_yaw = c;
-  f.sin_yaw = s;
-  return f;
+// Whether the footprint at p with heading (cos ψ, sin ψ) holds z: its constant part (shape, sizes,
+// the sector's cos(θ/2)) is placed at the origin once per UAV.
+bool footprintHolds(const sensing::Footprint& at_origin, const Vec2& p, const Vec2& heading,
+                    const Vec2& z) {
+  return at_origin.containsFrom(p, heading.x(), heading.y(), z);
 }
 
 }  // namespace
@@ -46,9 +42,9 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
 }
 
 void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
-                      sensing::Footprint* footprints) const {
+                      Vec2* headings) const {
   if (uav.ground) {
-    driveUnicycle(uav, actions, positions, footprints);
+    driveUnicycle(uav, actions, positions, headings);
     return;
   }
   Vec2 p = uav.position;
@@ -71,13 +67,13 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
     for (int sample = 0; sample < substeps_; ++sample) {
       p += step;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
       *positions++ = p;
-      *footprints++ = placeFootprint(uav.at_origin, p, c, s);
+      *headings++ = Vec2(c, s);
     }
   }
 }
 
 void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions,
-                                Vec2* positions, sensing::Footprint* footprints) const {
+                                Vec2* positions, Vec2* headings) const {
   world::Pose2 pose{robot.position, robot.yaw};
   const double tau = period_ / substeps_;  // s, between samples
   for (int m = 0; m < horizon_; ++m) {
@@ -88,8 +84,7 @@ void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> action
     for (int sample = 1; sample <= substeps_; ++sample) {
       at = world::unicycleMove(pose, a, robot.turn_rate, sample * tau);  // the world's motion
       *positions++ = at.position;
-      *footprints++ =
-          placeFootprint(robot.at_origin, at.position, std::cos(at.heading), std::sin(at.heading));
+      *headings++ = Vec2(std::cos(at.heading), std::sin(at.heading));
     }
     pose = at;
   }
@@ -160,14 +155,14 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   std::vector<int> fixed;
   std::vector<Mover> fixed_movers(n_uavs);
   std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
-  std::vector<sensing::Footprint> fixed_fp(fixed_pos.size());
+  std::vector<Vec2> fixed_heading(fixed_pos.size());
   std::vector<Vec2> actions(H);
   for (int i = 0; i < n_uavs; ++i) {
     if (is_free[i]) continue;
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
     fixed_movers[i] = moverOf(problem.uavs[i]);
-    fly(fixed_movers[i], actions, &fixed_pos[i * T], &fixed_fp[i * T]);
+    fly(fixed_movers[i], actions, &fixed_pos[i * T], &fixed_heading[i * T]);
     all_final_[i] = fixed_pos[i * T + T - 1];
   }
 
@@ -203,7 +198,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         int seen = 0;
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
-          if (!fixed_fp[im].contains(z) || !sightClear(fixed_movers[i], fixed_pos[im], z)) continue;
+          if (!footprintHolds(fixed_movers[i].at_origin, fixed_pos[im], fixed_heading[im], z) ||
+              !sightClear(fixed_movers[i], fixed_pos[im], z)) {
+            continue;
+          }
           const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
                                                          sampleQuality(problem.uavs[i].quality));
           if (seen++ == 0) fixed_R[k] = R;
@@ -280,7 +278,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   }
 
   free_pos_.resize(free_.size() * T);
-  free_fp_.resize(free_.size() * T);
+  free_heading_.resize(free_.size() * T);
   trace_final_.assign(n_targets, 0.0);
   in_view_final_.assign(n_targets, 0);
   uncovered_.assign(n_targets, 0);
@@ -291,7 +289,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 double NominalCost::evaluate(std::span<const Vec2> actions) {
   const int H = horizon_, S = substeps_, T = H * S;
   for (std::size_t f = 0; f < free_.size(); ++f) {
-    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * T], &free_fp_[f * T]);
+    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * T], &free_heading_[f * T]);
     all_final_[free_index_[f]] = free_pos_[f * T + T - 1];
   }
 
@@ -320,7 +318,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         LaneMask sees = {0, 0};
         for (int lane = 0; lane < 2; ++lane) {
           const Vec2& z = sample.z[lane];
-          if ((sample.reach[lane] >> f & 1) == 0 || !free_fp_[fq].contains(z) ||
+          if ((sample.reach[lane] >> f & 1) == 0 ||
+              !footprintHolds(free_[f].at_origin, free_pos_[fq], free_heading_[fq], z) ||
               !sightClear(free_[f], free_pos_[fq], z)) {
             continue;
           }

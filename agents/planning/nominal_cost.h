@@ -99,12 +99,12 @@ class NominalCost {
   bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
     return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
   }
-  // Moves a UAV through H actions: fills H·S positions (m) and footprints.
+  // Moves a UAV through H actions: fills H·S positions (m) and headings (cos ψ, sin ψ).
   void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
-           sensing::Footprint* footprints) const;
+           Vec2* headings) const;
   // fly() for a ground robot: each action as the world's unicycle moves it.
   void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
-                     sensing::Footprint* footprints) const;
+                     Vec2* headings) const;
   double stageTrace(const SymmetricCov4& P) const;
 
   int horizon_ = 0;               // H
@@ -144,7 +144,7 @@ class NominalCost {
 
   // Scratch reused by evaluate().
   std::vector<Vec2> free_pos_;               // m, p_{f,m}, free-major
-  std::vector<sensing::Footprint> free_fp_;  // φ_f(p_{f,m}), free-major
+  std::vector<Vec2> free_heading_;           // (cos ψ, sin ψ) of φ_f at p_{f,m}, free-major
   std::vector<double> trace_final_;          // m², tr(P_{j,H}[pos])
   std::vector<std::uint8_t> in_view_final_;  // some footprint holds z_{j,H} (not occluded)
   std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
