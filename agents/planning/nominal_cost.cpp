@@ -279,8 +279,13 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 
   free_pos_.resize(free_.size() * T);
   free_heading_.resize(free_.size() * T);
-  trace_final_.assign(n_targets, 0.0);
-  in_view_final_.assign(n_targets, 0);
+  // A track no free UAV can see ends as the fixed UAVs leave it (evaluate() overwrites the others).
+  trace_final_.resize(n_targets);
+  in_view_final_.resize(n_targets);
+  for (int j = 0; j < n_targets; ++j) {
+    trace_final_[j] = P_start_[j].positionTrace();  // P_start_ = P_{j,H} when start_[j] = H·S
+    in_view_final_[j] = seen_final_[j];
+  }
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(H);
   charged_.assign(n_uavs, 0.0);
@@ -300,6 +305,10 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   for (int q = 0; q < n_pairs; ++q) {
     const int lanes = std::min(2, n_targets - 2 * q);  // the lanes that hold a track
     const int first = pair_start_[q];
+    if (first == T) {  // no free UAV can see either track: prepare() ran their recursions
+      for (int lane = 0; lane < lanes; ++lane) J += cost_start_[2 * q + lane];
+      continue;
+    }
     CovariancePair P = P_pair_start_[q];
     LaneMask seen_final = {0, 0};
     int m = first / S;         // the action (0-based) of the first sample
@@ -341,13 +350,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
       const int j = 2 * q + lane;
       J += cost_start_[j];
       for (int k = start_[j] / S; k < H; ++k) J += stage_terms_[k][lane];  // γ^{m−1} tr(P_{j,m})
-      if (first < T) {
-        trace_final_[j] = P.positionTrace()[lane];  // tr(P_{j,H}[pos])
-        in_view_final_[j] = seen_final[lane] != 0;
-      } else {
-        trace_final_[j] = P_start_[j].positionTrace();
-        in_view_final_[j] = seen_final_[j];
-      }
+      trace_final_[j] = P.positionTrace()[lane];  // tr(P_{j,H}[pos])
+      in_view_final_[j] = seen_final[lane] != 0;
     }
   }
   if (!terminal_ || charged_.empty()) return J;
