@@ -236,22 +236,29 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     }
   }
 
-  // The tracks in pairs. A lane past the last track is never seen: its P is I and its R too
-  // (positive definite, as updatePosition asks of every lane).
-  const int n_pairs = (n_targets + 1) / 2;
+  // The tracks a free UAV can reach, in pairs, by their first reachable sample (so that the lanes
+  // of a pair start together). A lane past the last holds the slot n_targets: P = R = I (positive
+  // definite, as updatePosition asks of every lane), never seen, never counted.
+  std::vector<int> reachable;
+  for (int j = 0; j < n_targets; ++j) {
+    if (start_[j] < T) reachable.push_back(j);
+  }
+  std::stable_sort(reachable.begin(), reachable.end(),
+                   [&](int a, int b) { return start_[a] < start_[b]; });
+  const int n_pairs = static_cast<int>(reachable.size() + 1) / 2;
+  pair_lane_.assign(2 * n_pairs, n_targets);
+  std::copy(reachable.begin(), reachable.end(), pair_lane_.begin());
   const SymmetricCov4 unit = SymmetricCov4::fromUpper(Mat4::Identity());
   pair_samples_.resize(static_cast<std::size_t>(n_pairs) * T);
-  pair_start_.assign(n_pairs, T);
+  pair_start_.resize(n_pairs);
   P_pair_start_.resize(n_pairs);
   for (int q = 0; q < n_pairs; ++q) {
-    const int lanes[2] = {2 * q, 2 * q + 1};
-    for (const int j : lanes) {
-      if (j < n_targets) pair_start_[q] = std::min(pair_start_[q], start_[j]);
-    }
+    const int lanes[2] = {pair_lane_[2 * q], pair_lane_[2 * q + 1]};
+    pair_start_[q] = start_[lanes[0]];  // the earlier of the two
     SymmetricCov4 before[2] = {unit, unit};  // each lane's P at pair_start_ − 1
     for (int lane = 0; lane < 2; ++lane) {
       const int j = lanes[lane];
-      if (j >= n_targets) continue;
+      if (j == n_targets) continue;
       before[lane] = pair_start_[q] == 0
                          ? initial[j]
                          : fixed_path[static_cast<std::size_t>(j) * T + pair_start_[q] - 1];
@@ -265,7 +272,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         const int j = lanes[lane];
         sample.z[lane] = Vec2::Zero();
         sample.reach[lane] = 0;
-        if (j >= n_targets) continue;
+        if (j == n_targets) continue;
         const std::size_t k = static_cast<std::size_t>(j) * T + t;
         sample.z[lane] = z_[k];
         sample.reach[lane] = reach[k];
@@ -280,14 +287,15 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   free_pos_.resize(free_.size() * T);
   free_heading_.resize(free_.size() * T);
   // A track no free UAV can see ends as the fixed UAVs leave it (evaluate() overwrites the others).
-  trace_final_.resize(n_targets);
-  in_view_final_.resize(n_targets);
+  // Slot n_targets: a pair's empty lane.
+  trace_final_.resize(n_targets + 1);
+  in_view_final_.resize(n_targets + 1);
   for (int j = 0; j < n_targets; ++j) {
     trace_final_[j] = P_start_[j].positionTrace();  // P_start_ = P_{j,H} when start_[j] = H·S
     in_view_final_[j] = seen_final_[j];
   }
   uncovered_.assign(n_targets, 0);
-  stage_terms_.resize(H);
+  stage_terms_.resize(static_cast<std::size_t>(n_targets + 1) * H);
   charged_.assign(n_uavs, 0.0);
 }
 
@@ -303,12 +311,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   const int n_targets = static_cast<int>(start_.size());
   const int n_pairs = static_cast<int>(pair_start_.size());
   for (int q = 0; q < n_pairs; ++q) {
-    const int lanes = std::min(2, n_targets - 2 * q);  // the lanes that hold a track
+    const int ja = pair_lane_[2 * q], jb = pair_lane_[2 * q + 1];  // the lanes' tracks
     const int first = pair_start_[q];
-    if (first == T) {  // no free UAV can see either track: prepare() ran their recursions
-      for (int lane = 0; lane < lanes; ++lane) J += cost_start_[2 * q + lane];
-      continue;
-    }
     CovariancePair P = P_pair_start_[q];
     LaneMask seen_final = {0, 0};
     int m = first / S;         // the action (0-based) of the first sample
@@ -339,20 +343,25 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         updatePosition(P, NoisePair::of(R[0], R[1]), sees);
         seen |= sees;
       }
-      if (--left == 0) {  // the plan instant t_m ends the action
-        stage_terms_[m] = discount_[m] * (full_trace_ ? P.trace() : P.positionTrace());
+      if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
+        const Lanes term = discount_[m] * (full_trace_ ? P.trace() : P.positionTrace());
+        stage_terms_[static_cast<std::size_t>(ja) * H + m] = term[0];
+        stage_terms_[static_cast<std::size_t>(jb) * H + m] = term[1];
         ++m;
         left = S;
       }
       if (t == T - 1) seen_final = seen;
     }
-    for (int lane = 0; lane < lanes; ++lane) {
-      const int j = 2 * q + lane;
-      J += cost_start_[j];
-      for (int k = start_[j] / S; k < H; ++k) J += stage_terms_[k][lane];  // γ^{m−1} tr(P_{j,m})
-      trace_final_[j] = P.positionTrace()[lane];  // tr(P_{j,H}[pos])
-      in_view_final_[j] = seen_final[lane] != 0;
-    }
+    const Lanes trace = P.positionTrace();  // tr(P_{j,H}[pos])
+    trace_final_[ja] = trace[0];
+    trace_final_[jb] = trace[1];
+    in_view_final_[ja] = seen_final[0] != 0;
+    in_view_final_[jb] = seen_final[1] != 0;
+  }
+  // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
+  for (int j = 0; j < n_targets; ++j) {
+    J += cost_start_[j];
+    for (int k = start_[j] / S; k < H; ++k) J += stage_terms_[static_cast<std::size_t>(j) * H + k];
   }
   if (!terminal_ || charged_.empty()) return J;
 

@@ -130,8 +130,7 @@ class NominalCost {
   std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
   std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
 
-  // evaluate() runs the tracks two at a time, track 2q in lane 0 and 2q + 1 in lane 1 of pair q
-  // (an odd last track pairs with a lane that is never seen and never counted).
+  // evaluate() runs the tracks that a free UAV can reach two at a time, one per lane of pair q.
   struct PairSample {          // what prepare() knows of pair q at sample t, at [q·H·S + t]
     Vec2 z[2];                 // m, each lane's z_{j,m}
     NoisePair fixed_R;         // m², R_fix where a fixed UAV sees the lane (else I)
@@ -139,6 +138,7 @@ class NominalCost {
     std::uint64_t reach[2];    // bit f: free UAV f can reach a footprint over the lane's z_{j,m}
   };
   std::vector<PairSample> pair_samples_;
+  std::vector<int> pair_lane_;             // the track of lane l of pair q at [2q + l]
   std::vector<int> pair_start_;            // the earlier start_ of the pair's two tracks
   std::vector<CovariancePair> P_pair_start_;  // both lanes' P at pair_start_ − 1
 
@@ -148,7 +148,7 @@ class NominalCost {
   std::vector<double> trace_final_;          // m², tr(P_{j,H}[pos])
   std::vector<std::uint8_t> in_view_final_;  // some footprint holds z_{j,H} (not occluded)
   std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
-  std::vector<Lanes> stage_terms_;           // m², γ^{m−1} tr(P_{j,m}) of a pair, m = 1..H
+  std::vector<double> stage_terms_;          // m², γ^{m−1} tr(P_{j,m}) at [j·H + m − 1]
   std::vector<double> charged_;              // m, D_i
 };
 
