@@ -11,10 +11,12 @@
 
 namespace canopy::agents::planning {
 
-using Lanes = double __attribute__((vector_size(16)));             // (track a, track b)
-using LaneMask = std::int64_t __attribute__((vector_size(16)));    // per lane: −1 true, 0 false
+using Lanes = double __attribute__((vector_size(16)));           // (track a, track b)
+using LaneMask = std::int64_t __attribute__((vector_size(16)));  // per lane: −1 true, 0 false
 
-inline bool anyLane(LaneMask mask) { return (mask[0] | mask[1]) != 0; }
+inline bool anyLane(LaneMask mask) {
+  return (mask[0] | mask[1]) != 0;
+}
 
 /// The upper triangle of two covariances, entry by entry (units as SymmetricCov4).
 struct CovariancePair {
@@ -64,9 +66,9 @@ inline void predictCovariance(CovariancePair& P, double tau, const NcvNoise& Q) 
 /// A lane that does not see keeps its P exactly: its 1/d0 and 1/d1 are zeroed, so it subtracts
 /// +0. Its R must still be positive definite (any will do) so that nothing there overflows.
 inline void updatePosition(CovariancePair& P, const NoisePair& R, LaneMask seen) {
-  const Lanes c0[4] = {P.p00, P.p01, P.p02, P.p03};  // P(:, 0)
-  const Lanes d0 = P.p00 + R.r00;                    // S₀₀
-  const Lanes l = (P.p01 + R.r10) / d0;              // S₁₀ / d0
+  const Lanes c0[4] = {P.p00, P.p01, P.p02, P.p03};      // P(:, 0)
+  const Lanes d0 = P.p00 + R.r00;                        // S₀₀
+  const Lanes l = (P.p01 + R.r10) / d0;                  // S₁₀ / d0
   const Lanes d1 = P.p11 + R.r11 - l * (P.p01 + R.r01);  // S₁₁ − l S₀₁
   const Lanes g[4] = {P.p01 - l * c0[0], P.p11 - l * c0[1], P.p12 - l * c0[2],
                       P.p13 - l * c0[3]};  // c1 − l c0, c1 = P(:, 1)

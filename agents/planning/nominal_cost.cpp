@@ -41,8 +41,9 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   return s;
 }
 
-void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
-                      Vec2* headings) const {
+__attribute__((always_inline)) inline void NominalCost::fly(const Mover& uav,
+                                                            std::span<const Vec2> actions,
+                                                            Vec2* positions, Vec2* headings) const {
   if (uav.ground) {
     driveUnicycle(uav, actions, positions, headings);
     return;
@@ -72,8 +73,8 @@ void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions, Vec2* pos
   }
 }
 
-void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions,
-                                Vec2* positions, Vec2* headings) const {
+void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
+                                Vec2* headings) const {
   world::Pose2 pose{robot.position, robot.yaw};
   const double tau = period_ / substeps_;  // s, between samples
   for (int m = 0; m < horizon_; ++m) {
@@ -169,10 +170,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
   z_.resize(cells);
   occluded_.assign(cells, 0);
-  std::vector<std::uint8_t> fixed_seen(cells, 0);  // some fixed UAV's footprint holds z_{j,m}
+  std::vector<std::uint8_t> fixed_seen(cells, 0);      // some fixed UAV's footprint holds z_{j,m}
   std::vector<Mat2> fixed_R(cells, Mat2::Identity());  // m², R_fix at (j, m) when fixed_seen
-  std::vector<std::uint64_t> reach(cells, 0);  // bit f: free UAV f can reach a footprint over z
-  std::vector<SymmetricCov4> fixed_path(cells);  // P_{j,t} with the fixed UAVs' updates only
+  std::vector<std::uint64_t> reach(cells, 0);     // bit f: free UAV f can reach a footprint over z
+  std::vector<SymmetricCov4> fixed_path(cells);   // P_{j,t} with the fixed UAVs' updates only
   std::vector<SymmetricCov4> initial(n_targets);  // P_{j,0}
   start_.assign(n_targets, T);
   P_start_.resize(n_targets);
@@ -254,7 +255,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   P_pair_start_.resize(n_pairs);
   for (int q = 0; q < n_pairs; ++q) {
     const int lanes[2] = {pair_lane_[2 * q], pair_lane_[2 * q + 1]};
-    pair_start_[q] = start_[lanes[0]];  // the earlier of the two
+    pair_start_[q] = start_[lanes[0]];       // the earlier of the two
     SymmetricCov4 before[2] = {unit, unit};  // each lane's P at pair_start_ − 1
     for (int lane = 0; lane < 2; ++lane) {
       const int j = lanes[lane];
@@ -299,7 +300,38 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   charged_.assign(n_uavs, 0.0);
 }
 
-double NominalCost::evaluate(std::span<const Vec2> actions) {
+#if defined(__x86_64__)
+NominalCost::InstructionSet NominalCost::instructionSet() {
+  static const InstructionSet set = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx") ? InstructionSet::avx : InstructionSet::sse2;
+  }();
+  return set;
+}
+
+__attribute__((target("avx"))) double NominalCost::evaluateAvx(std::span<const Vec2> actions) {
+  return evaluateBody(actions);
+}
+#else  // elsewhere the baseline build only ("sse2" names it)
+NominalCost::InstructionSet NominalCost::instructionSet() {
+  return InstructionSet::sse2;
+}
+
+double NominalCost::evaluateAvx(std::span<const Vec2> actions) {
+  return evaluateBody(actions);
+}
+#endif
+
+double NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions) {
+  return set == InstructionSet::avx ? evaluateAvx(actions) : evaluateSse2(actions);
+}
+
+double NominalCost::evaluateSse2(std::span<const Vec2> actions) {
+  return evaluateBody(actions);
+}
+
+__attribute__((always_inline)) inline double NominalCost::evaluateBody(
+    std::span<const Vec2> actions) {
   const int H = horizon_, S = substeps_, T = H * S;
   for (std::size_t f = 0; f < free_.size(); ++f) {
     fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * T], &free_heading_[f * T]);

@@ -75,7 +75,16 @@ class NominalCost {
 
   /// actions: a_{f,m} for each free UAV f (in prepare's order) and m = 1..H, agent-major
   /// (size = free count · H), m/s. Returns J (m², or mixed units with full_trace).
-  double evaluate(std::span<const Vec2> actions);
+  double evaluate(std::span<const Vec2> actions) { return evaluateWith(instructionSet(), actions); }
+
+  /// The instruction sets evaluate() runs with. Both perform the same IEEE operations in the same
+  /// order, so they return the same bits: AVX changes only their encoding (three operands, so no
+  /// register copies; no FMA, which would round differently). About 15 % fewer instructions.
+  enum class InstructionSet { sse2, avx };
+  /// What evaluate() uses: AVX where this CPU has it, SSE2 (every x86-64) otherwise.
+  static InstructionSet instructionSet();
+  /// evaluate() with the given instruction set (avx only where instructionSet() is avx).
+  double evaluateWith(InstructionSet set, std::span<const Vec2> actions);
 
   int horizon() const { return horizon_; }
   int freeCount() const { return static_cast<int>(free_.size()); }
@@ -100,25 +109,28 @@ class NominalCost {
     return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
   }
   // Moves a UAV through H actions: fills H·S positions (m) and headings (cos ψ, sin ψ).
-  void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions,
-           Vec2* headings) const;
+  void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions, Vec2* headings) const;
   // fly() for a ground robot: each action as the world's unicycle moves it.
   void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
                      Vec2* headings) const;
   double stageTrace(const SymmetricCov4& P) const;
+  // evaluate()'s body, compiled once per instruction set.
+  double evaluateSse2(std::span<const Vec2> actions);
+  double evaluateAvx(std::span<const Vec2> actions);
+  inline double evaluateBody(std::span<const Vec2> actions);
 
-  int horizon_ = 0;               // H
-  int substeps_ = 1;              // S samples per action
-  double period_ = 1.0;           // s, Δ
-  bool full_trace_ = false;       // stage cost on tr(P) rather than tr(P_pos)
-  bool terminal_ = true;          // add the terminal penalty
-  double weight_ = 0.5;           // 1/m, w
-  NcvNoise Q_;                    // Q(τ) of the NCV model, τ = Δ/S
-  std::vector<double> discount_;  // γ^{m−1}, m = 1..H
+  int horizon_ = 0;                    // H
+  int substeps_ = 1;                   // S samples per action
+  double period_ = 1.0;                // s, Δ
+  bool full_trace_ = false;            // stage cost on tr(P) rather than tr(P_pos)
+  bool terminal_ = true;               // add the terminal penalty
+  double weight_ = 0.5;                // 1/m, w
+  NcvNoise Q_;                         // Q(τ) of the NCV model, τ = Δ/S
+  std::vector<double> discount_;       // γ^{m−1}, m = 1..H
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
-  std::vector<Mover> free_;       // the free UAVs, in prepare's order
-  std::vector<Vec2> all_final_;   // m, p_{i,H} of every UAV (free ones filled per call)
-  std::vector<int> free_index_;   // UAV index of each free UAV
+  std::vector<Mover> free_;            // the free UAVs, in prepare's order
+  std::vector<Vec2> all_final_;        // m, p_{i,H} of every UAV (free ones filled per call)
+  std::vector<int> free_index_;        // UAV index of each free UAV
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                 // m, nominal position H F^m ξ_j
@@ -131,15 +143,15 @@ class NominalCost {
   std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
 
   // evaluate() runs the tracks that a free UAV can reach two at a time, one per lane of pair q.
-  struct PairSample {          // what prepare() knows of pair q at sample t, at [q·H·S + t]
-    Vec2 z[2];                 // m, each lane's z_{j,m}
-    NoisePair fixed_R;         // m², R_fix where a fixed UAV sees the lane (else I)
-    LaneMask fixed_seen;       // some fixed UAV's footprint holds z_{j,m} and it is not hidden
-    std::uint64_t reach[2];    // bit f: free UAV f can reach a footprint over the lane's z_{j,m}
+  struct PairSample {        // what prepare() knows of pair q at sample t, at [q·H·S + t]
+    Vec2 z[2];               // m, each lane's z_{j,m}
+    NoisePair fixed_R;       // m², R_fix where a fixed UAV sees the lane (else I)
+    LaneMask fixed_seen;     // some fixed UAV's footprint holds z_{j,m} and it is not hidden
+    std::uint64_t reach[2];  // bit f: free UAV f can reach a footprint over the lane's z_{j,m}
   };
   std::vector<PairSample> pair_samples_;
-  std::vector<int> pair_lane_;             // the track of lane l of pair q at [2q + l]
-  std::vector<int> pair_start_;            // the earlier start_ of the pair's two tracks
+  std::vector<int> pair_lane_;                // the track of lane l of pair q at [2q + l]
+  std::vector<int> pair_start_;               // the earlier start_ of the pair's two tracks
   std::vector<CovariancePair> P_pair_start_;  // both lanes' P at pair_start_ − 1
 
   // Scratch reused by evaluate().

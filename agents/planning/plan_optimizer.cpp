@@ -9,9 +9,13 @@
 namespace canopy::agents::planning {
 
 void PlanOptimizer::decode(std::span<const double> x) {
-  for (std::size_t k = 0; k < actions_.size(); ++k) {
+  // Locals: a store through actions_[k] could alias the vector's own pointers as far as the
+  // compiler knows, so it would reload them for every action.
+  Vec2* actions = actions_.data();
+  const std::size_t count = actions_.size();
+  for (std::size_t k = 0; k < count; ++k) {
     const double speed = x[2 * k], heading = x[2 * k + 1];
-    actions_[k] = speed * unitHeading(heading);  // a = s (cos θ, sin θ)
+    actions[k] = speed * unitHeading(heading);  // a = s (cos θ, sin θ)
   }
 }
 

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
+#include "core/random.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"
 
@@ -326,6 +329,69 @@ TEST(NominalCost, MatchesLiteralInformationFormAndPartialPreparation) {
   s.full_trace = true;
   EXPECT_NEAR(nominalCost(PlanningProblem{targets, uavs, &map, s}, plans),
               literalCost(targets, uavs, plans, s, map), 1e-9 * expected);
+}
+
+// evaluate() under AVX returns the bits of SSE2 (the same operations, only encoded differently),
+// over random scenes: UAVs and a ground robot, both occlusion models, an odd number of tracks,
+// one and several free agents, S = 1 and 3. Skipped where the CPU has no AVX.
+TEST(NominalCost, InstructionSetsGiveTheSameBits) {
+  if (NominalCost::instructionSet() != NominalCost::InstructionSet::avx) {
+    GTEST_SKIP() << "no AVX on this CPU";
+  }
+  RandomStream rng(21, "instruction-set-test");
+  std::vector<world::TreeDef> trees;
+  for (int k = 0; k < 30; ++k) {
+    trees.push_back(world::TreeDef::disc(Vec2(rng.uniform(-40, 40), rng.uniform(-40, 40)),
+                                         rng.uniform(0.5, 3.0)));
+  }
+  const OcclusionMap map(std::move(trees));
+  int compared = 0;
+  for (int scene = 0; scene < 24; ++scene) {
+    std::vector<UavState> uavs(4);
+    for (int i = 0; i < 4; ++i) {
+      uavs[i].position = Vec2(rng.uniform(-30, 30), rng.uniform(-30, 30));
+      uavs[i].yaw = rng.uniform(-kPi, kPi);
+      uavs[i].yaw_mode = i % 2 == 0 ? world::YawMode::velocity : world::YawMode::fixed;
+      uavs[i].footprint.size = Vec2(rng.uniform(10, 30), rng.uniform(10, 30));
+      if (scene % 2 == 1) uavs[i].occlusion = sensing::OcclusionModel::line_of_sight;
+    }
+    uavs[3].kind = world::AgentKind::ground;
+    uavs[3].footprint.shape = sensing::FootprintShape::sector;
+    uavs[3].footprint.radius = 25;
+    uavs[3].occlusion = sensing::OcclusionModel::line_of_sight;
+    std::vector<TargetGaussian> targets;
+    for (int j = 0; j < 5; ++j) {
+      targets.push_back(target(Vec2(rng.uniform(-30, 30), rng.uniform(-30, 30)),
+                               Vec2(rng.uniform(-2, 2), rng.uniform(-2, 2)),
+                               rng.uniform(0.2, 5.0)));
+    }
+    CostSettings s = settings(4, true);
+    s.substeps = scene % 3 == 2 ? 3 : 1;
+    const PlanningProblem problem{targets, uavs, &map, s};
+    std::vector<Plan> plans(4);
+    for (Plan& plan : plans) {
+      for (int m = 0; m < s.horizon; ++m) {
+        plan.velocities.push_back(Vec2(rng.uniform(-5, 5), rng.uniform(-5, 5)));
+      }
+    }
+    const std::vector<int> free_agents =
+        scene % 4 < 2 ? std::vector<int>{1} : std::vector<int>{0, 3, 2};
+    NominalCost cost;
+    cost.prepare(problem, free_agents, plans);
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<Vec2> actions;
+      for (std::size_t k = 0; k < free_agents.size() * s.horizon; ++k) {
+        actions.push_back(Vec2(rng.uniform(-6, 6), rng.uniform(-6, 6)));
+      }
+      const double sse2 = cost.evaluateWith(NominalCost::InstructionSet::sse2, actions);
+      const double avx = cost.evaluateWith(NominalCost::InstructionSet::avx, actions);
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(sse2), std::bit_cast<std::uint64_t>(avx))
+          << "scene " << scene << ", trial " << trial;
+      ASSERT_EQ(cost.evaluate(actions), avx);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 480);
 }
 
 }  // namespace
