@@ -77,6 +77,7 @@ class RecordLineWriter {
 
   std::vector<std::string> names_;                  // the scenario's labels, by LabelId
   std::vector<std::optional<std::string>> labels_;  // escaped, once written
+  internal::DoubleTextCache numbers_;               // the text of recent doubles
 };
 
 void RecordLineWriter::belief(JsonLine& j, const agents::AgentBelief& belief) {
@@ -192,7 +193,7 @@ void plan(JsonLine& j, const agents::planning::TeamPlan& plan) {
 }  // namespace
 
 void RecordLineWriter::write(const StepRecord& record, std::string& out) {
-  JsonLine j(out);
+  JsonLine j(out, &numbers_);
   j.beginObject();
   j.key("agents");
   j.beginArray();

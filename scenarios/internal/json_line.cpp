@@ -1,6 +1,7 @@
 #include "scenarios/internal/json_line.h"
 
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -10,7 +11,7 @@
 namespace canopy::scenarios::internal {
 namespace {
 
-/// Writes the finite `value` at `out` in dump()'s layout and returns the end (at most 32 chars).
+/// Writes the finite `value` at `out` in dump()'s layout and returns the end (at most 25 chars).
 /// The digits are the shortest that read back exactly (std::to_chars, Ryu: the closest such);
 /// the layout is nlohmann's format_buffer with its limits (min_exp = −4, max_exp = 15):
 /// k digits d₁…d_k and decimal point position n (value = 0.d₁…d_k · 10ⁿ) give
@@ -25,8 +26,7 @@ char* formatDouble(char* out, double value) {
     return out + 3;
   }
   char sci[32];  // "d.ddde±XX" or "d.ddde±XXX"
-  const char* end =
-      std::to_chars(sci, sci + sizeof sci, value, std::chars_format::scientific).ptr;
+  const char* end = std::to_chars(sci, sci + sizeof sci, value, std::chars_format::scientific).ptr;
   const bool three = end[-4] != 'e';  // a three-digit exponent
   const char* e = end - (three ? 5 : 4);
   int exponent = (e[2] - '0') * 10 + (e[3] - '0');  // value = d₁.d₂… · 10^exponent
@@ -79,7 +79,27 @@ char* formatDouble(char* out, double value) {
   return out;
 }
 
+constexpr std::uint64_t kNoDouble = 0x7ff8'0000'0000'0001;  // a NaN: never looked up
+
 }  // namespace
+
+DoubleTextCache::DoubleTextCache() {
+  for (Slot& slot : slots_) {
+    slot.bits = kNoDouble;
+    slot.length = 0;
+  }
+}
+
+std::string_view DoubleTextCache::text(double value) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(value);
+  // Fibonacci hashing: the top bits of bits · 2⁶⁴/φ.
+  Slot& slot = slots_[(bits * 0x9e3779b97f4a7c15ULL) >> (64 - kSlotBits)];
+  if (slot.bits != bits) {
+    slot.bits = bits;
+    slot.length = static_cast<std::uint8_t>(formatDouble(slot.chars, value) - slot.chars);
+  }
+  return {slot.chars, slot.length};
+}
 
 void JsonLine::separate() {
   if (after_key_) {
@@ -118,6 +138,10 @@ void JsonLine::number(double value) {
   separate();
   if (!std::isfinite(value)) {  // dump() writes NaN and ±inf as null
     out_ += "null";
+    return;
+  }
+  if (cache_ != nullptr) {
+    out_ += cache_->text(value);
     return;
   }
   std::array<char, 64> buffer;

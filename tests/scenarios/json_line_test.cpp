@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -123,6 +124,36 @@ TEST(JsonLine, DoublesAreShortestInDumpsLayoutAndReadBackExactly) {
     ASSERT_TRUE(isShortest(text.substr(1, text.size() - 2), x)) << text;
   }
   EXPECT_LT(differ, 200) << "of 42 030 doubles, Grisu2 not the shortest";  // measured: 39
+}
+
+// With a cache of recent doubles' text the line is the same, byte for byte: every hostile double
+// three times (a repeat is a hit, unless a value in between took its slot), in one line and
+// across lines that share the cache, so that slots are evicted and reused many times over.
+TEST(JsonLine, TheDoubleTextCacheChangesNoByte) {
+  const std::vector<double> values = hostileDoubles();
+  DoubleTextCache cache;
+  std::string cached_lines, plain_lines;
+  for (std::size_t start = 0; start < values.size(); start += 500) {
+    std::string cached, plain;
+    JsonLine with(cached, &cache), without(plain);
+    with.beginArray();
+    without.beginArray();
+    const std::size_t end = std::min(values.size(), start + 500);
+    for (int pass = 0; pass < 3; ++pass) {
+      for (std::size_t k = start; k < end; ++k) {
+        const double x = pass == 1 ? values[end - 1 - (k - start)] : values[k];
+        with.number(x);
+        without.number(x);
+      }
+    }
+    with.endArray();
+    without.endArray();
+    ASSERT_EQ(cached, plain) << "values from " << start;
+    cached_lines += cached;
+    plain_lines += plain;
+  }
+  EXPECT_EQ(cached_lines, plain_lines);
+  EXPECT_GT(plain_lines.size(), 3 * values.size());
 }
 
 TEST(JsonLine, NonFiniteDoublesAreNullAsInDump) {
