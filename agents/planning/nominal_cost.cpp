@@ -176,9 +176,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   std::vector<SymmetricCov4> fixed_path(cells);   // P_{j,t} with the fixed UAVs' updates only
   std::vector<SymmetricCov4> initial(n_targets);  // P_{j,0}
   start_.assign(n_targets, T);
-  P_start_.resize(n_targets);
   cost_start_.assign(n_targets, 0.0);
-  seen_final_.assign(n_targets, 0);
 
   for (int j = 0; j < n_targets; ++j) {
     Vec4 x = problem.targets[j].x;
@@ -221,7 +219,6 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       if (!started && reach[k] != 0) {
         started = true;
         start_[j] = t;
-        P_start_[j] = P;
         cost_start_[j] = cost;
       }
       predictCovariance(P, tau, Q_);
@@ -229,12 +226,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       fixed_path[k] = P;
       if (started) continue;
       if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
-      if (t == T - 1) seen_final_[j] = fixed_seen[k];
     }
-    if (!started) {
-      P_start_[j] = P;
-      cost_start_[j] = cost;
-    }
+    if (!started) cost_start_[j] = cost;
   }
 
   // The tracks a free UAV can reach, in pairs, by their first reachable sample (so that the lanes
@@ -292,8 +285,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   trace_final_.resize(n_targets + 1);
   in_view_final_.resize(n_targets + 1);
   for (int j = 0; j < n_targets; ++j) {
-    trace_final_[j] = P_start_[j].positionTrace();  // P_start_ = P_{j,H} when start_[j] = H·S
-    in_view_final_[j] = seen_final_[j];
+    const std::size_t last = static_cast<std::size_t>(j) * T + T - 1;
+    trace_final_[j] = fixed_path[last].positionTrace();  // tr(P_{j,H}[pos])
+    in_view_final_[j] = fixed_seen[last];
   }
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(n_targets + 1) * H);

@@ -137,10 +137,8 @@ class NominalCost {
   std::vector<std::uint8_t> occluded_;  // z_{j,m} strictly inside a crown (hidden from all)
 
   // Per track: the recursion before the first step a free UAV could see it.
-  std::vector<int> start_;                // first such sample t (H·S: none)
-  std::vector<SymmetricCov4> P_start_;    // P_{j,start−1}
-  std::vector<double> cost_start_;        // Σ_{m<start} γ^{m−1} tr(P_{j,m})
-  std::vector<std::uint8_t> seen_final_;  // a fixed UAV sees z_{j,H} (used when start > H)
+  std::vector<int> start_;          // first such sample t (H·S: none)
+  std::vector<double> cost_start_;  // Σ_{m<start} γ^{m−1} tr(P_{j,m})
 
   // evaluate() runs the tracks that a free UAV can reach two at a time, one per lane of pair q.
   struct PairSample {        // what prepare() knows of pair q at sample t, at [q·H·S + t]
