@@ -62,9 +62,9 @@ struct PlanningProblem {
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
 /// track's recursion up to the first step a free UAV could see it. evaluate() then runs the
 /// tracks two at a time, one per lane of SSE2 pairs (covariance_pair.h), with the bits of one at
-/// a time. A commanded speed above v_max
-/// is clamped, as the world does; a ground robot follows each action as the world's unicycle
-/// (world/unicycle.h: turn toward it, then drive), its sector turning with it.
+/// a time. A commanded speed above v_max is clamped, as the world does; a ground robot follows
+/// each action as the world's unicycle (world/unicycle.h: turn toward it, then drive), its sector
+/// turning with it.
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
