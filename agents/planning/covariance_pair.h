@@ -4,7 +4,9 @@
 // Each lane performs the scalar operations of symmetric_covariance.h in the same order, so a
 // lane's bits are those of the scalar recursion (tests/agents/planning/covariance_pair_test.cpp).
 // The NBO cost runs its tracks two at a time this way (agents/planning/nominal_cost.cpp): the
-// scalar form spent most of its instructions moving entries in and out of pairs.
+// scalar form spent most of its instructions moving entries in and out of pairs. The prediction
+// is symmetric_covariance.h's template itself; the update below repeats the scalar update's
+// operations on whole lanes, with a mask.
 #include <cstdint>
 
 #include "agents/planning/symmetric_covariance.h"
@@ -45,21 +47,6 @@ struct NoisePair {
             Lanes{a(1, 1), b(1, 1)}};
   }
 };
-
-/// predictCovariance of symmetric_covariance.h in both lanes:
-///   A ← A + τ(B + Bᵀ) + τ² C + Q_pp,  B ← B + τ C + Q_pv,  C ← C + Q_vv.
-inline void predictCovariance(CovariancePair& P, double tau, const NcvNoise& Q) {
-  const double tau2 = tau * tau;
-  P.p00 = (P.p00 + (tau * (P.p02 + P.p02) + tau2 * P.p22)) + Q.pp;
-  P.p01 = P.p01 + (tau * (P.p03 + P.p12) + tau2 * P.p23);  // Q_pp is diagonal
-  P.p11 = (P.p11 + (tau * (P.p13 + P.p13) + tau2 * P.p33)) + Q.pp;
-  P.p02 = (P.p02 + tau * P.p22) + Q.pv;
-  P.p03 = P.p03 + tau * P.p23;  // Q_pv is diagonal too
-  P.p12 = P.p12 + tau * P.p23;
-  P.p13 = (P.p13 + tau * P.p33) + Q.pv;
-  P.p22 += Q.vv;
-  P.p33 += Q.vv;
-}
 
 /// updatePosition of symmetric_covariance.h in the lanes where `seen` holds:
 ///   P ← P − c0 c0ᵀ/d0 − g gᵀ/d1,  d0 = S₀₀, l = S₁₀/d0, d1 = S₁₁ − l S₀₁, g = c1 − l c0.

@@ -34,7 +34,8 @@ struct SymmetricCov4 {
   double trace() const { return p00 + p11 + p22 + p33; }  // tr(P), mixed units
 };
 // updatePosition reads and writes neighbouring entries in pairs.
-static_assert(std::is_standard_layout_v<SymmetricCov4> && sizeof(SymmetricCov4) == 10 * sizeof(double));
+static_assert(std::is_standard_layout_v<SymmetricCov4> &&
+              sizeof(SymmetricCov4) == 10 * sizeof(double));
 
 /// The NCV process noise Q(τ) by its three distinct values (each 2x2 block is a multiple of I).
 struct NcvNoise {
@@ -48,8 +49,10 @@ struct NcvNoise {
 
 /// P⁻ = F P Fᵀ + Q with F = [[I, τ I], [0, I]], by 2x2 blocks [[A, B], [Bᵀ, C]]:
 ///   A ← A + τ(B + Bᵀ) + τ² C + Q_pp,  B ← B + τ C + Q_pv,  C ← C + Q_vv.
-/// B is not symmetric: B = [[p02, p03], [p12, p13]].
-inline void predictCovariance(SymmetricCov4& P, double tau, const NcvNoise& Q) {
+/// B is not symmetric: B = [[p02, p03], [p12, p13]]. Cov: SymmetricCov4, or any struct with its
+/// ten entries by the same names whose entries take + and · by a double (covariance_pair.h).
+template <class Cov>
+inline void predictCovariance(Cov& P, double tau, const NcvNoise& Q) {
   const double tau2 = tau * tau;
   P.p00 = (P.p00 + (tau * (P.p02 + P.p02) + tau2 * P.p22)) + Q.pp;
   P.p01 = P.p01 + (tau * (P.p03 + P.p12) + tau2 * P.p23);  // Q_pp is diagonal
