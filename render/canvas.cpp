@@ -1,17 +1,12 @@
 #include "render/canvas.h"
 
-// GL 2.0 entry points (shaders, buffers) are exported by libOSMesa itself.
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-#include <GL/osmesa.h>
-
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
 #include <string>
 
 #include "render/internal/font.h"
+#include "render/internal/gl_api.h"
 #include "render/internal/tessellate.h"
 
 namespace canopy::render {
@@ -79,36 +74,36 @@ void main() {
 // Attribute locations, bound before linking, shared by both programs.
 constexpr GLuint kPosition = 0, kShape = 1, kScale = 2, kColour = 3, kEdgeColour = 4;
 
-GLuint compile(GLenum kind, const char* source) {
-  const GLuint shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
+GLuint compile(const internal::GlApi& gl, GLenum kind, const char* source) {
+  const GLuint shader = gl.CreateShader(kind);
+  gl.ShaderSource(shader, 1, &source, nullptr);
+  gl.CompileShader(shader);
   GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
     char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    gl.GetShaderInfoLog(shader, sizeof log, nullptr, log);
     throw std::runtime_error(std::string("OSMesa: shader does not compile: ") + log);
   }
   return shader;
 }
 
-GLuint link(const char* fragment_source) {
-  const GLuint program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER, fragment_source);
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  glBindAttribLocation(program, kPosition, "a_position");
-  glBindAttribLocation(program, kShape, "a_shape");
-  glBindAttribLocation(program, kScale, "a_scale");
-  glBindAttribLocation(program, kColour, "a_colour");
-  glBindAttribLocation(program, kEdgeColour, "a_edge_colour");
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+GLuint link(const internal::GlApi& gl, const char* fragment_source) {
+  const GLuint program = gl.CreateProgram();
+  const GLuint vs = compile(gl, GL_VERTEX_SHADER, kVertexShader);
+  const GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment_source);
+  gl.AttachShader(program, vs);
+  gl.AttachShader(program, fs);
+  gl.BindAttribLocation(program, kPosition, "a_position");
+  gl.BindAttribLocation(program, kShape, "a_shape");
+  gl.BindAttribLocation(program, kScale, "a_scale");
+  gl.BindAttribLocation(program, kColour, "a_colour");
+  gl.BindAttribLocation(program, kEdgeColour, "a_edge_colour");
+  gl.LinkProgram(program);
+  gl.DeleteShader(vs);
+  gl.DeleteShader(fs);
   GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) throw std::runtime_error("OSMesa: shader program does not link");
   return program;
 }
@@ -122,6 +117,7 @@ int glContextsCreated() {
 }
 
 struct Canvas::Gl {
+  const internal::GlApi& gl = internal::glApi();  // loads OSMesa on the first canvas that draws
   OSMesaContext context = nullptr;
   ImageSize size;
   std::vector<std::uint8_t> buffer;  // OSMesa's: RGBA, rows from the bottom
@@ -132,43 +128,44 @@ struct Canvas::Gl {
 
   explicit Gl(ImageSize image) : size(image) {
     buffer.assign(static_cast<std::size_t>(size.width) * size.height * 4, 0);
-    context = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
+    context = gl.OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
     if (!context) throw std::runtime_error("OSMesa: cannot create a GL context");
     ++contexts_created;
     makeCurrent();
-    solid = link(kSolidShader);
-    round = link(kRoundShader);
+    solid = link(gl, kSolidShader);
+    round = link(gl, kRoundShader);
     for (const GLuint program : {solid, round}) {
-      glUseProgram(program);
-      glUniform2f(glGetUniformLocation(program, "u_size"), static_cast<float>(size.width),
-                  static_cast<float>(size.height));
+      gl.UseProgram(program);
+      gl.Uniform2f(gl.GetUniformLocation(program, "u_size"), static_cast<float>(size.width),
+                   static_cast<float>(size.height));
     }
-    smooth_uniform = glGetUniformLocation(round, "u_smooth");
-    glGenBuffers(1, &vbo);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    smooth_uniform = gl.GetUniformLocation(round, "u_smooth");
+    gl.GenBuffers(1, &vbo);
+    gl.BindBuffer(GL_ARRAY_BUFFER, vbo);
     const auto stride = static_cast<GLsizei>(sizeof(internal::Vertex));
     const auto at = [](std::size_t offset) { return reinterpret_cast<const void*>(offset); };
     for (const GLuint a : {kPosition, kShape, kScale, kColour, kEdgeColour})
-      glEnableVertexAttribArray(a);
-    glVertexAttribPointer(kPosition, 2, GL_FLOAT, GL_FALSE, stride,
-                          at(offsetof(internal::Vertex, x)));
-    glVertexAttribPointer(kShape, 4, GL_FLOAT, GL_FALSE, stride, at(offsetof(internal::Vertex, u)));
-    glVertexAttribPointer(kScale, 1, GL_FLOAT, GL_FALSE, stride,
-                          at(offsetof(internal::Vertex, scale)));
-    glVertexAttribPointer(kColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                          at(offsetof(internal::Vertex, rgba)));
-    glVertexAttribPointer(kEdgeColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                          at(offsetof(internal::Vertex, edge_rgba)));
-    glViewport(0, 0, size.width, size.height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_DITHER);
+      gl.EnableVertexAttribArray(a);
+    gl.VertexAttribPointer(kPosition, 2, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(internal::Vertex, x)));
+    gl.VertexAttribPointer(kShape, 4, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(internal::Vertex, u)));
+    gl.VertexAttribPointer(kScale, 1, GL_FLOAT, GL_FALSE, stride,
+                           at(offsetof(internal::Vertex, scale)));
+    gl.VertexAttribPointer(kColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                           at(offsetof(internal::Vertex, rgba)));
+    gl.VertexAttribPointer(kEdgeColour, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                           at(offsetof(internal::Vertex, edge_rgba)));
+    gl.Viewport(0, 0, size.width, size.height);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_DITHER);
   }
 
-  ~Gl() { OSMesaDestroyContext(context); }
+  ~Gl() { gl.OSMesaDestroyContext(context); }
 
   void makeCurrent() {
-    if (OSMesaGetCurrentContext() == context) return;
-    if (!OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, size.width, size.height)) {
+    if (gl.OSMesaGetCurrentContext() == context) return;
+    if (!gl.OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, size.width, size.height)) {
       throw std::runtime_error("OSMesa: cannot make the GL context current");
     }
   }
@@ -177,33 +174,34 @@ struct Canvas::Gl {
   // needs it and not where it is opaque (the same result, faster); a mask adds every fragment.
   void drawMesh(const Rgba& clear, Pass pass) {
     makeCurrent();
-    glClearColor(clear.r / 255.0f, clear.g / 255.0f, clear.b / 255.0f, clear.a / 255.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    gl.ClearColor(clear.r / 255.0f, clear.g / 255.0f, clear.b / 255.0f, clear.a / 255.0f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
     if (!mesh.vertices.empty()) {
       // Refill the same storage: a new buffer each frame would page-fault its memory anew.
       const std::size_t bytes = mesh.vertices.size() * sizeof(internal::Vertex);
       if (bytes > vbo_bytes) {
         vbo_bytes = std::max(bytes, 2 * vbo_bytes);
-        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vbo_bytes), nullptr, GL_DYNAMIC_DRAW);
+        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vbo_bytes), nullptr,
+                      GL_DYNAMIC_DRAW);
       }
-      glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), mesh.vertices.data());
+      gl.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), mesh.vertices.data());
     }
-    glUseProgram(round);
-    glUniform1f(smooth_uniform, pass == Pass::frame ? 1.0f : 0.0f);
+    gl.UseProgram(round);
+    gl.Uniform1f(smooth_uniform, pass == Pass::frame ? 1.0f : 0.0f);
     if (pass == Pass::mask) {
-      glEnable(GL_BLEND);
-      glBlendFunc(GL_ONE, GL_ONE);
+      gl.Enable(GL_BLEND);
+      gl.BlendFunc(GL_ONE, GL_ONE);
     } else {
-      glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+      gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     }
     GLuint current = round;
     for (const internal::Batch& batch : mesh.batches) {
-      if (pass == Pass::frame) batch.blend ? glEnable(GL_BLEND) : glDisable(GL_BLEND);
+      if (pass == Pass::frame) batch.blend ? gl.Enable(GL_BLEND) : gl.Disable(GL_BLEND);
       const GLuint wanted = batch.round ? round : solid;
-      if (wanted != current) glUseProgram(current = wanted);
-      glDrawArrays(GL_TRIANGLES, batch.first, batch.count);
+      if (wanted != current) gl.UseProgram(current = wanted);
+      gl.DrawArrays(GL_TRIANGLES, batch.first, batch.count);
     }
-    glFinish();
+    gl.Finish();
   }
 };
 
