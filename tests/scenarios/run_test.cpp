@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
+#include "core/random.h"
 #include "core/text_file.h"
 #include "scenarios/loader.h"
 #include "scenarios/simulation.h"
@@ -23,6 +26,35 @@ std::string runAndRead(const std::string& scenario, std::uint64_t seed, const st
   EXPECT_TRUE(fs::exists(dir / "manifest.json"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
   return readTextFile(dir / "record.jsonl").value();
+}
+
+// The manifest splices the effective configuration's text in; the same bytes as parsing it and
+// dumping the whole manifest (the way it was written before), for every library scenario and
+// command lines that try to look like the spliced key or are not UTF-8.
+TEST(Run, ManifestEqualsTheParsedAndDumpedConfiguration) {
+  using Json = nlohmann::json;
+  const std::vector<std::string> commands = {
+      "canopy run demo", "say \"effective_config\": \"effective_config goes here\"",
+      "two\n  \"effective_config\": lines", std::string("bytes \xff\xfe not UTF-8"), ""};
+  int compared = 0;
+  for (const std::string& name : libraryScenarios()) {
+    const ScenarioSpec spec = loadScenario(name);
+    for (const std::string& command : commands) {
+      char hash[17];
+      std::snprintf(hash, sizeof hash, "%016llx",
+                    static_cast<unsigned long long>(fnv1a64(spec.effective_config)));
+      Json manifest = Json::parse(manifestJson(spec, command));
+      EXPECT_EQ(manifest.at("config_hash_fnv1a64").get<std::string>(), std::string(hash));
+      Json expected = manifest;
+      expected["effective_config"] = Json::parse(spec.effective_config);
+      // Re-dumped from the parsed manifest the two agree, and the text itself is that dump.
+      EXPECT_EQ(manifestJson(spec, command),
+                expected.dump(2, ' ', false, Json::error_handler_t::replace))
+          << name << " / " << command;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 5 * 10);
 }
 
 TEST(Run, SameSeedGivesByteIdenticalRecords) {
