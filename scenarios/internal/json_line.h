@@ -24,7 +24,7 @@ class DoubleTextCache {
   std::string_view text(double value);
 
  private:
-  static constexpr int kSlotBits = 10;
+  static constexpr int kSlotBits = 12;
   struct Slot {
     std::uint64_t bits;  // the double's bit pattern (initially a NaN no finite value has)
     std::uint8_t length;
