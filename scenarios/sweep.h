@@ -106,7 +106,8 @@ struct PreparedSweep {
 /// effective scenario) differs throws, unless it holds no finished trial yet (then the new sweep
 /// replaces the old) and `strict` is off — shards run strict, so that shards of two different
 /// sweeps never mix in one directory. With `write`, writes both files (atomically, identical
-/// bytes from every run of the same sweep) and clears temporaries a killed run left. Lists the
+/// bytes from every run of the same sweep) and, unless `strict`, clears temporaries a killed run
+/// left (a shard must not: a shard running at the same time may be writing one). Lists the
 /// trials with no regular file yet.
 PreparedSweep prepareSweep(const SweepSpec& sweep, const std::filesystem::path& out_dir,
                            bool strict = false, bool write = true);

@@ -89,7 +89,10 @@ PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool
   const int per_config = sweep.trials;
   prepared.total = static_cast<int>(prepared.configs.size()) * per_config;
   for (int c = 0; c < static_cast<int>(prepared.configs.size()); ++c) {
-    if (write) clearTemporaries(trialPath(out_dir, prepared.configs[c].id, 0).parent_path());
+    // Not in a strict (shard or MPI) run: shards run at once, and another shard's temporary is
+    // in flight, not left over. The whole run that finishes the sweep clears them.
+    if (write && !strict)
+      clearTemporaries(trialPath(out_dir, prepared.configs[c].id, 0).parent_path());
     for (int t = 0; t < per_config; ++t) {
       if (!finished(trialPath(out_dir, prepared.configs[c].id, t)))
         prepared.todo.push_back(c * per_config + t);
@@ -145,8 +148,7 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
       options.shard.index >= options.shard.count) {
     throw ScenarioError("--shard", "", "expected I/N with 0 <= I < N");
   }
-  const PreparedSweep prepared =
-      prepareSweep(sweep, options.out_dir, !options.shard.whole(), true);
+  const PreparedSweep prepared = prepareSweep(sweep, options.out_dir, !options.shard.whole(), true);
   std::vector<std::size_t> mine;  // indices into todo that this shard owns
   for (std::size_t j = 0; j < prepared.todo.size(); ++j) {
     if (options.shard.owns(prepared.todo[j])) mine.push_back(j);

@@ -175,6 +175,23 @@ TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
   EXPECT_EQ(runSweep(sweep, {resumed, 2, {}, {}}), 0);  // nothing left to do
 }
 
+// Shards run at once: a shard that starts while another writes a trial must not take that
+// trial's temporary for a killed run's leftover (it once deleted it, and the writer failed).
+// Shards leave temporaries alone; the whole run that finishes the sweep clears them.
+TEST(Sweep, OnlyTheFinishingRunClearsTemporaries) {
+  const SweepSpec sweep = loadSweepText(kSweep, "small.json");
+  const fs::path dir = freshDir("temporaries");
+  runSweep(sweep, {dir, 1, {}, Shard{0, 3}});
+  const fs::path config = trialPath(dir, configurations(sweep)[0].id, 1).parent_path();
+  const fs::path in_flight = config / "trial_0001.json.4242-0.tmp";  // as AtomicFile names them
+  std::ofstream(in_flight) << "{\"scenario\": \"dem";
+  runSweep(sweep, {dir, 1, {}, Shard{1, 3}});
+  EXPECT_TRUE(fs::exists(in_flight)) << "a shard removed another run's temporary";
+  runSweep(sweep, {dir, 1, {}, {}});
+  EXPECT_FALSE(fs::exists(in_flight)) << "the finishing run left a temporary";
+  EXPECT_EQ(trialFiles(dir).size(), 12u);
+}
+
 TEST(Sweep, RefusesADirectoryHoldingAnotherSweep) {
   const fs::path dir = freshDir("other");
   runSweep(loadSweepText(kSweep, "small.json"), {dir, 1, {}, {}});
