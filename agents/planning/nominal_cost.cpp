@@ -91,10 +91,6 @@ void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> action
   }
 }
 
-double NominalCost::stageTrace(const SymmetricCov4& P) const {
-  return full_trace_ ? P.trace() : P.positionTrace();  // tr(P) or tr(P_pos)
-}
-
 void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> free_agents,
                           std::span<const Plan> assumed) {
   const CostSettings& s = problem.settings;
@@ -170,11 +166,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
   z_.resize(cells);
   occluded_.assign(cells, 0);
-  std::vector<std::uint8_t> fixed_seen(cells, 0);      // some fixed UAV's footprint holds z_{j,m}
-  std::vector<Mat2> fixed_R(cells, Mat2::Identity());  // m², R_fix at (j, m) when fixed_seen
-  std::vector<std::uint64_t> reach(cells, 0);     // bit f: free UAV f can reach a footprint over z
-  std::vector<SymmetricCov4> fixed_path(cells);   // P_{j,t} with the fixed UAVs' updates only
-  std::vector<SymmetricCov4> initial(n_targets);  // P_{j,0}
+  fixed_seen_.assign(cells, 0);
+  fixed_R_.assign(cells, Mat2::Identity());
+  reach_.assign(cells, 0);
+  fixed_path_.resize(static_cast<std::size_t>(n_targets) * (T + 1));  // t = 0..T per track
   start_.assign(n_targets, T);
   cost_start_.assign(n_targets, 0.0);
 
@@ -182,7 +177,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     Vec4 x = problem.targets[j].x;
     const Mat4& P0 = problem.targets[j].P;
     // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
-    SymmetricCov4 P = initial[j] = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
+    SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
+    SymmetricCov4* path = &fixed_path_[static_cast<std::size_t>(j) * (T + 1)];
+    path[0] = P;
     double cost = 0.0;
     bool started = false;
     for (int t = 0; t < T; ++t) {
@@ -203,27 +200,27 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           }
           const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
                                                          sampleQuality(problem.uavs[i].quality));
-          if (seen++ == 0) fixed_R[k] = R;
+          if (seen++ == 0) fixed_R_[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
-        if (seen > 1) fixed_R[k] = information.llt().solve(Mat2::Identity());  // R_fix
-        fixed_seen[k] = seen > 0;
+        if (seen > 1) fixed_R_[k] = information.llt().solve(Mat2::Identity());  // R_fix
+        fixed_seen_[k] = seen > 0;
         for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
           // |p_f − p_{f,0}| ≤ (t + 1)·v_max·τ, and a footprint holds points within its
           // circumradius.
           const double radius =
               (t + 1) * free_[f].v_max * tau + sensing::circumradius(free_[f].footprint);
-          if ((z - free_[f].position).norm() <= radius + kReachSlack) reach[k] |= 1ULL << f;
+          if ((z - free_[f].position).norm() <= radius + kReachSlack) reach_[k] |= 1ULL << f;
         }
       }
-      if (!started && reach[k] != 0) {
+      if (!started && reach_[k] != 0) {
         started = true;
         start_[j] = t;
         cost_start_[j] = cost;
       }
       predictCovariance(P, tau, Q_);
-      if (fixed_seen[k]) updatePosition(P, fixed_R[k]);
-      fixed_path[k] = P;
+      if (fixed_seen_[k]) updatePosition(P, fixed_R_[k]);
+      path[t + 1] = P;
       if (started) continue;
       if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
     }
@@ -249,13 +246,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   for (int q = 0; q < n_pairs; ++q) {
     const int lanes[2] = {pair_lane_[2 * q], pair_lane_[2 * q + 1]};
     pair_start_[q] = start_[lanes[0]];       // the earlier of the two
-    SymmetricCov4 before[2] = {unit, unit};  // each lane's P at pair_start_ − 1
+    SymmetricCov4 before[2] = {unit, unit};  // each lane's P after pair_start_ samples
     for (int lane = 0; lane < 2; ++lane) {
       const int j = lanes[lane];
-      if (j == n_targets) continue;
-      before[lane] = pair_start_[q] == 0
-                         ? initial[j]
-                         : fixed_path[static_cast<std::size_t>(j) * T + pair_start_[q] - 1];
+      if (j != n_targets)
+        before[lane] = fixed_path_[static_cast<std::size_t>(j) * (T + 1) + pair_start_[q]];
     }
     P_pair_start_[q] = CovariancePair::of(before[0], before[1]);
     for (int t = 0; t < T; ++t) {
@@ -269,9 +264,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         if (j == n_targets) continue;
         const std::size_t k = static_cast<std::size_t>(j) * T + t;
         sample.z[lane] = z_[k];
-        sample.reach[lane] = reach[k];
-        if (!fixed_seen[k]) continue;
-        R[lane] = fixed_R[k];
+        sample.reach[lane] = reach_[k];
+        if (!fixed_seen_[k]) continue;
+        R[lane] = fixed_R_[k];
         sample.fixed_seen[lane] = -1;
       }
       sample.fixed_R = NoisePair::of(R[0], R[1]);
@@ -285,9 +280,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   trace_final_.resize(n_targets + 1);
   in_view_final_.resize(n_targets + 1);
   for (int j = 0; j < n_targets; ++j) {
-    const std::size_t last = static_cast<std::size_t>(j) * T + T - 1;
-    trace_final_[j] = fixed_path[last].positionTrace();  // tr(P_{j,H}[pos])
-    in_view_final_[j] = fixed_seen[last];
+    trace_final_[j] = fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
+    in_view_final_[j] = fixed_seen_[static_cast<std::size_t>(j) * T + T - 1];
   }
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(n_targets + 1) * H);
@@ -370,7 +364,7 @@ __attribute__((always_inline)) inline double NominalCost::evaluateBody(
         seen |= sees;
       }
       if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
-        const Lanes term = discount_[m] * (full_trace_ ? P.trace() : P.positionTrace());
+        const Lanes term = discount_[m] * stageTrace(P);
         stage_terms_[static_cast<std::size_t>(ja) * H + m] = term[0];
         stage_terms_[static_cast<std::size_t>(jb) * H + m] = term[1];
         ++m;

@@ -113,7 +113,11 @@ class NominalCost {
   // fly() for a ground robot: each action as the world's unicycle moves it.
   void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
                      Vec2* headings) const;
-  double stageTrace(const SymmetricCov4& P) const;
+  // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovariancePair.
+  template <class Cov>
+  auto stageTrace(const Cov& P) const {
+    return full_trace_ ? P.trace() : P.positionTrace();
+  }
   // evaluate()'s body, compiled once per instruction set.
   double evaluateSse2(std::span<const Vec2> actions);
   double evaluateAvx(std::span<const Vec2> actions);
@@ -151,6 +155,12 @@ class NominalCost {
   std::vector<int> pair_lane_;                // the track of lane l of pair q at [2q + l]
   std::vector<int> pair_start_;               // the earlier start_ of the pair's two tracks
   std::vector<CovariancePair> P_pair_start_;  // both lanes' P at pair_start_ − 1
+
+  // prepare()'s working arrays per track j and sample, kept to reuse their memory.
+  std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV sees z_{j,m}, at [j·H·S + t]
+  std::vector<Mat2> fixed_R_;             // m², R_fix there when fixed_seen_ (else I)
+  std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
+  std::vector<SymmetricCov4> fixed_path_;  // P after t samples, fixed UAVs only, at [j·(H·S+1) + t]
 
   // Scratch reused by evaluate().
   std::vector<Vec2> free_pos_;               // m, p_{f,m}, free-major
