@@ -30,22 +30,22 @@ std::string manifestJson(const ScenarioSpec& spec, const std::string& command_li
   manifest["command"] = command_line;
   manifest["labels"] = spec.labels;
   manifest["trees"] = spec.trees.size();
-  // The effective configuration is already dump(2)'s text: spliced in, one level deeper, rather
-  // than parsed again (which cost 9·10⁶ instructions for a 70 kB scenario). Inside a dumped
-  // string every quote is escaped, so the key line below occurs once, where the key is.
-  constexpr const char* kPlaceholder = "effective_config goes here";
-  manifest["effective_config"] = kPlaceholder;
+  // The effective configuration is already dump(2)'s text: it is spliced in one level deeper
+  // rather than parsed again (9·10⁶ instructions for a 70 kB scenario). The key first holds a
+  // marker string; inside any dumped string every quote is escaped, so the line "key": "marker"
+  // occurs once, where the key is.
+  constexpr const char* kSpliceMark = "spliced: the effective configuration";
+  manifest["effective_config"] = kSpliceMark;
   // The command line and the file's path are the user's bytes, not necessarily UTF-8: invalid
   // bytes are recorded as U+FFFD instead of failing the run.
   std::string text = manifest.dump(2, ' ', false, Json::error_handler_t::replace);
-  const std::string line = std::string("\n  \"effective_config\": \"") + kPlaceholder + "\"";
-  const std::size_t at = text.find(line);
+  const std::string marked = std::string("\n  \"effective_config\": \"") + kSpliceMark + "\"";
   std::string nested = "\n  \"effective_config\": ";
   for (const char c : spec.effective_config) {
     nested += c;
     if (c == '\n') nested += "  ";  // dump(2) indents each level by two spaces
   }
-  text.replace(at, line.size(), nested);
+  text.replace(text.find(marked), marked.size(), nested);
   return text;
 }
 

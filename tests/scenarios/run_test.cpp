@@ -34,7 +34,7 @@ std::string runAndRead(const std::string& scenario, std::uint64_t seed, const st
 TEST(Run, ManifestEqualsTheParsedAndDumpedConfiguration) {
   using Json = nlohmann::json;
   const std::vector<std::string> commands = {
-      "canopy run demo", "say \"effective_config\": \"effective_config goes here\"",
+      "canopy run demo", "say \"effective_config\": \"spliced: the effective configuration\"",
       "two\n  \"effective_config\": lines", std::string("bytes \xff\xfe not UTF-8"), ""};
   int compared = 0;
   for (const std::string& name : libraryScenarios()) {
