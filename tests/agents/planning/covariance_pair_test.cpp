@@ -4,25 +4,19 @@
 
 #include "agents/tracking/motion_model.h"
 #include "core/random.h"
+#include "tests/agents/planning/random_covariance.h"
 
 namespace canopy::agents::planning {
 namespace {
 
-// A random symmetric positive definite P = A Aᵀ + 0.1 I with entries of A in [−2, 2).
 SymmetricCov4 randomCovariance(RandomStream& rng) {
-  Mat4 A;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) A(r, c) = rng.uniform(-2.0, 2.0);
-  }
-  return SymmetricCov4::fromUpper(A * A.transpose() + 0.1 * Mat4::Identity());
+  return SymmetricCov4::fromUpper(test_support::randomCovariance(rng));
 }
 
 // Positive definite, and not exactly symmetric in its last bits (as a fused R_fix may be), so
 // that a lane that swapped R(0, 1) and R(1, 0) would show.
 Mat2 randomNoise(RandomStream& rng) {
-  Mat2 B;
-  B << rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1);
-  Mat2 R = B * B.transpose() + 0.05 * Mat2::Identity();
+  Mat2 R = test_support::randomNoise(rng);
   R(1, 0) *= 1.0 + 1e-15;
   return R;
 }

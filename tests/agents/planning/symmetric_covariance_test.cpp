@@ -6,24 +6,13 @@
 
 #include "agents/tracking/motion_model.h"
 #include "core/random.h"
+#include "tests/agents/planning/random_covariance.h"
 
 namespace canopy::agents::planning {
 namespace {
 
-// A random symmetric positive definite P = A Aᵀ + 0.1 I with entries of A in [−2, 2).
-Mat4 randomCovariance(RandomStream& rng) {
-  Mat4 A;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) A(r, c) = rng.uniform(-2.0, 2.0);
-  }
-  return A * A.transpose() + 0.1 * Mat4::Identity();
-}
-
-Mat2 randomNoise(RandomStream& rng) {
-  Mat2 B;
-  B << rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1);
-  return B * B.transpose() + 0.05 * Mat2::Identity();
-}
+using test_support::randomCovariance;
+using test_support::randomNoise;
 
 TEST(SymmetricCov4, RoundTripsTheUpperTriangle) {
   RandomStream rng(3, "symmetric-test");
