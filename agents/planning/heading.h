@@ -13,6 +13,32 @@
 
 namespace canopy::agents::planning {
 
+/// The constants of unitHeading, shared with its four-lane form (swarm_kernels.cpp).
+namespace heading_series {
+constexpr double kTwoOverPi = 0.63661977236758134308;     // 2/π
+constexpr double kHalfPi1 = 1.57079632673412561417e+00;   // π/2, 33 bits: 0x3FF921FB54400000
+constexpr double kHalfPi1t = 6.07710050650619224932e-11;  // π/2 − kHalfPi1: 0x3DD0B4611A626331
+// Taylor coefficients in r², innermost first: sin r = r + r·r²·(−1/3! + r²(1/5! + …)),
+// cos r = 1 + r²·(−1/2! + r²(1/4! + …)).
+constexpr double kSin[] = {1.0 / 355687428096000,
+                           -1.0 / 1307674368000,
+                           1.0 / 6227020800,
+                           -1.0 / 39916800,
+                           1.0 / 362880,
+                           -1.0 / 5040,
+                           1.0 / 120,
+                           -1.0 / 6};  // 1/17!, −1/15!, …, −1/3!
+constexpr double kCos[] = {-1.0 / 6402373705728000,
+                           1.0 / 20922789888000,
+                           -1.0 / 87178291200,
+                           1.0 / 479001600,
+                           -1.0 / 3628800,
+                           1.0 / 40320,
+                           -1.0 / 720,
+                           1.0 / 24,
+                           -0.5};  // −1/18!, …
+}  // namespace heading_series
+
 /// (cos θ, sin θ) for 0 ≤ θ ≤ 2π (a heading of the swarm's box; other θ lose accuracy as |θ|
 /// grows, but stay well below 2²⁰ · π/2 exact in the reduction).
 ///   n = round(θ / (π/2)),  r = θ − n π/2 ∈ [−π/4, π/4]  (Cody–Waite: π/2 = P1 + P1t, where P1
@@ -22,28 +48,7 @@ namespace canopy::agents::planning {
 ///   quarter, is absolute),
 ///   then (cos θ, sin θ) = (cos r, sin r) rotated by n quarter turns.
 inline Vec2 unitHeading(double theta) {
-  constexpr double kTwoOverPi = 0.63661977236758134308;     // 2/π
-  constexpr double kHalfPi1 = 1.57079632673412561417e+00;   // π/2, 33 bits: 0x3FF921FB54400000
-  constexpr double kHalfPi1t = 6.07710050650619224932e-11;  // π/2 − kHalfPi1: 0x3DD0B4611A626331
-  // Taylor coefficients in r², innermost first: sin r = r + r·r²·(−1/3! + r²(1/5! + …)),
-  // cos r = 1 + r²·(−1/2! + r²(1/4! + …)).
-  constexpr double kSin[] = {1.0 / 355687428096000,
-                             -1.0 / 1307674368000,
-                             1.0 / 6227020800,
-                             -1.0 / 39916800,
-                             1.0 / 362880,
-                             -1.0 / 5040,
-                             1.0 / 120,
-                             -1.0 / 6};  // 1/17!, −1/15!, …, −1/3!
-  constexpr double kCos[] = {-1.0 / 6402373705728000,
-                             1.0 / 20922789888000,
-                             -1.0 / 87178291200,
-                             1.0 / 479001600,
-                             -1.0 / 3628800,
-                             1.0 / 40320,
-                             -1.0 / 720,
-                             1.0 / 24,
-                             -0.5};  // −1/18!, …
+  using namespace heading_series;
   const double scaled = theta * kTwoOverPi;
   const std::int64_t n = static_cast<std::int64_t>(scaled >= 0.0 ? scaled + 0.5 : scaled - 0.5);
   const double nd = static_cast<double>(n);

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "agents/tracking/motion_model.h"
+#include "core/cpu.h"
 #include "sensing/noise.h"
 #include "world/unicycle.h"
 
@@ -290,11 +291,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 
 #if defined(__x86_64__)
 NominalCost::InstructionSet NominalCost::instructionSet() {
-  static const InstructionSet set = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx") ? InstructionSet::avx : InstructionSet::sse2;
-  }();
-  return set;
+  return cpuHasAvx() ? InstructionSet::avx : InstructionSet::sse2;
 }
 
 __attribute__((target("avx"))) double NominalCost::evaluateAvx(std::span<const Vec2> actions) {

@@ -6,17 +6,6 @@
 #include <cstdlib>
 
 namespace canopy::agents::planning {
-namespace {
-/// The shortest periodic displacement d mod width, in [−width/2, width/2]. Both ends of a swarm
-/// displacement lie in the box, so |d| ≤ width and one shift suffices.
-double shortestDisplacement(double d, double width) {
-  if (d > 0.5 * width) return d - width;
-  if (d < -0.5 * width) return d + width;
-  return d;
-}
-
-}  // namespace
-
 SwarmOptions SwarmOptions::from(const PsoConfig& config, int horizon) {
   SwarmOptions o;
   o.particles = config.particles_per_step * horizon;
@@ -66,32 +55,42 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
   result.best_cost = cost_[best];
 
   int stalls = 0;
-  r_.resize(2 * n * dim);
-  width_.resize(dim);
-  for (std::size_t d = 0; d < dim; ++d) width_[d] = hi[d] - lo[d];
-  // Locals, so that the stores to v and x need not reload the weights and bounds (they could
-  // alias them as far as the compiler knows).
-  const double w = options.inertia, c1 = options.c1, c2 = options.c2;
-  while (result.iterations < options.max_iterations) {
-    rng.fillUniform(r_);  // r1, r2 per particle and coordinate, in the documented draw order
-    const double* r = r_.data();
-    const double* swarm_best = result.best.data();
-    const double* own_best = own_best_.data();
-    const double* width = width_.data();
-    double* x = x_.data();
-    double* v = v_.data();
+  const std::size_t count = n * dim;
+  r1_.resize(count);
+  r2_.resize(count);
+  lo_.resize(count);
+  hi_.resize(count);
+  width_.resize(count);
+  swarm_best_.resize(count);
+  moved_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {  // the box, repeated per particle
+    lo_[i] = lo[i % dim];
+    hi_[i] = hi[i % dim];
+    width_[i] = hi_[i] - lo_[i];
+  }
+  auto repeatSwarmBest = [&] {
     for (std::size_t p = 0; p < n; ++p) {
-      for (std::size_t d = 0; d < dim; ++d, r += 2, ++x, ++v, ++own_best) {
-        *v = w * *v + c1 * r[0] * shortestDisplacement(*own_best - *x, width[d]) +
-             c2 * r[1] * shortestDisplacement(swarm_best[d] - *x, width[d]);
-        *x = wrapPeriodic(*x + *v, lo[d], hi[d]);
-      }
+      std::copy(result.best.begin(), result.best.end(), swarm_best_.begin() + p * dim);
     }
+  };
+  repeatSwarmBest();
+  const SwarmMove move{count,          options.inertia, options.c1,      options.c2,
+                       r1_.data(),     r2_.data(),      own_best_.data(), swarm_best_.data(),
+                       lo_.data(),     hi_.data(),      width_.data(),   x_.data(),
+                       v_.data(),      moved_.data()};
+  const KernelSet kernels = kernelSet();
+  while (result.iterations < options.max_iterations) {
+    for (std::size_t i = 0; i < count; ++i) {  // r1, r2 per particle and coordinate, in order
+      r1_[i] = rng.uniform();
+      r2_[i] = rng.uniform();
+    }
+    moveParticles(move, kernels);
     cost(x_, cost_);
     result.evaluations += static_cast<long long>(n);
     ++result.iterations;
 
     const double previous = result.best_cost;
+    bool improved = false;
     for (std::size_t p = 0; p < n; ++p) {
       if (!(cost_[p] < own_best_cost_[p])) continue;
       own_best_cost_[p] = cost_[p];
@@ -99,8 +98,10 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
       if (cost_[p] < result.best_cost) {
         result.best_cost = cost_[p];
         std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, result.best.begin());
+        improved = true;
       }
     }
+    if (improved) repeatSwarmBest();
     // Stall: |best_k − best_{k−1}| < ftol·(1 + |best_{k−1}|).
     stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
                  ? stalls + 1

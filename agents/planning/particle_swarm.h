@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "agents/config.h"
+#include "agents/planning/swarm_kernels.h"
 #include "core/random.h"
 
 namespace canopy::agents::planning {
@@ -56,18 +57,11 @@ class ParticleSwarm {
 
  private:
   std::vector<double> x_, v_, own_best_, own_best_cost_, cost_;
-  std::vector<double> r_;      // one iteration's r1, r2, drawn in one batch
-  std::vector<double> width_;  // hi − lo per coordinate
+  std::vector<double> r1_, r2_;  // one iteration's r1, r2 per particle and coordinate
+  // Per particle and coordinate (particle-major, as x_), for swarm_kernels.h: the box, its width
+  // and the swarm's best position, repeated once per particle.
+  std::vector<double> lo_, hi_, width_, swarm_best_;
+  std::vector<double> moved_;  // the kernel's scratch
 };
-
-/// x wrapped periodically into the closed interval [lo, hi]: above hi it re-enters at lo, below lo
-/// at hi. Inline: the swarm wraps every coordinate of every particle each iteration.
-inline double wrapPeriodic(double x, double lo, double hi) {
-  const double width = hi - lo;
-  if (!(width > 0.0)) return lo;
-  if (x > hi) return lo + std::fmod(x - hi, width);
-  if (x < lo) return hi - std::fmod(lo - x, width);
-  return x;
-}
 
 }  // namespace canopy::agents::planning

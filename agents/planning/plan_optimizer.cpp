@@ -3,21 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "agents/planning/heading.h"
+#include "agents/planning/swarm_kernels.h"
 #include "core/angles.h"
 
 namespace canopy::agents::planning {
-
-void PlanOptimizer::decode(std::span<const double> x) {
-  // Locals: a store through actions_[k] could alias the vector's own pointers as far as the
-  // compiler knows, so it would reload them for every action.
-  Vec2* actions = actions_.data();
-  const std::size_t count = actions_.size();
-  for (std::size_t k = 0; k < count; ++k) {
-    const double speed = x[2 * k], heading = x[2 * k + 1];
-    actions[k] = speed * unitHeading(heading);  // a = s (cos θ, sin θ)
-  }
-}
 
 PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConfig& pso,
                                    std::span<const int> free_agents, std::span<const Plan> assumed,
@@ -47,16 +36,19 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
     }
   }
 
+  // The whole swarm decoded at once (swarm_kernels.h), then each particle's actions evaluated.
   const BatchCost batch = [this](std::span<const double> positions, std::span<double> costs) {
-    const std::size_t dim = 2 * actions_.size();
+    const std::size_t per_particle = actions_.size();
+    swarm_actions_.resize(costs.size() * per_particle);
+    decodeActions(positions, swarm_actions_);
     for (std::size_t p = 0; p < costs.size(); ++p) {
-      decode(positions.subspan(p * dim, dim));
-      costs[p] = cost_.evaluate(actions_);
+      costs[p] = cost_.evaluate(std::span<const Vec2>(swarm_actions_).subspan(p * per_particle,
+                                                                             per_particle));
     }
   };
   const SwarmResult best = swarm_.minimise(batch, lo_, hi_, SwarmOptions::from(pso, H), rng, warm_);
 
-  decode(best.best);
+  decodeActions(best.best, actions_);
   PlanSearch search;
   search.cost = best.best_cost;
   search.iterations = best.iterations;

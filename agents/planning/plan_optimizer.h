@@ -32,12 +32,11 @@ class PlanOptimizer {
                       std::span<const Plan> warm_start, RandomStream& rng);
 
  private:
-  void decode(std::span<const double> x);  // x → actions_
-
   NominalCost cost_;
   ParticleSwarm swarm_;
   std::vector<double> lo_, hi_, warm_;
-  std::vector<Vec2> actions_;  // m/s, the free UAVs' actions of one particle
+  std::vector<Vec2> actions_;        // m/s, the free UAVs' actions of one particle
+  std::vector<Vec2> swarm_actions_;  // m/s, every particle's actions (particle-major)
 };
 
 }  // namespace canopy::agents::planning
