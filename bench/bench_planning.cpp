@@ -62,53 +62,58 @@ struct Scene {
   }
 };
 
-// Random joint plans to evaluate, drawn once.
-std::vector<std::vector<Vec2>> randomActions(int n_uavs, int count) {
+// Random joint plans to evaluate, drawn once: kBatches batches of kBatch candidates, one after the
+// other (as the swarm hands them to the cost).
+constexpr int kBatch = 100;  // the swarm's particles at H = 5 (particles_per_step · H)
+constexpr int kBatches = 10;
+std::vector<Vec2> randomActions(int n_uavs, int count) {
   RandomStream rng(7, "bench", 1);
-  std::vector<std::vector<Vec2>> plans(count);
-  for (auto& plan : plans) {
-    for (int k = 0; k < n_uavs * kHorizon; ++k) {
-      const double speed = rng.uniform(0, 5), heading = rng.uniform(0, kTwoPi);
-      plan.push_back(speed * Vec2(std::cos(heading), std::sin(heading)));
-    }
+  std::vector<Vec2> actions;
+  for (int k = 0; k < count * n_uavs * kHorizon; ++k) {
+    const double speed = rng.uniform(0, 5), heading = rng.uniform(0, kTwoPi);
+    actions.push_back(speed * Vec2(std::cos(heading), std::sin(heading)));
   }
-  return plans;
+  return actions;
 }
 
-// One evaluation of the joint plan of all three UAVs (the worst case: nothing held fixed).
+// Evaluates batches of kBatch candidates of `per_candidate` actions each; an item is one
+// evaluation.
+void evaluateBatches(benchmark::State& state, NominalCost& cost, int per_candidate) {
+  const auto actions = randomActions(1, kBatches * kBatch * per_candidate / kHorizon);
+  std::vector<double> costs(kBatch);
+  const std::size_t batch_size = static_cast<std::size_t>(kBatch) * per_candidate;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    cost.evaluate(std::span<const Vec2>(actions).subspan((k++ % kBatches) * batch_size, batch_size),
+                  costs);
+    benchmark::DoNotOptimize(costs.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kBatch);
+}
+
+// Evaluations of the joint plan of all three UAVs (the worst case: nothing held fixed).
 void BM_CostEvaluationJoint3Uavs(benchmark::State& state) {
   const Scene scene(3);
   const std::vector<int> everyone{0, 1, 2};
   const std::vector<Plan> unused(3);
   NominalCost cost;
   cost.prepare(scene.problem(), everyone, unused);
-  const auto actions = randomActions(3, 1024);
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(cost.evaluate(actions[k++ & 1023]));
-  }
-  state.SetItemsProcessed(state.iterations());
+  evaluateBatches(state, cost, 3 * kHorizon);
 }
 BENCHMARK(BM_CostEvaluationJoint3Uavs);
 
-// One evaluation as SMA-NBO makes it: one UAV free, two held to their plans.
+// Evaluations as SMA-NBO makes them: one UAV free, two held to their plans.
 void BM_CostEvaluationSma3Uavs(benchmark::State& state) {
   const Scene scene(3);
   const std::vector<int> self{0};
   std::vector<Plan> others(3);
   const auto fixed = randomActions(3, 1);
   for (int i = 0; i < 3; ++i) {
-    others[i].velocities.assign(fixed[0].begin() + i * kHorizon,
-                                fixed[0].begin() + (i + 1) * kHorizon);
+    others[i].velocities.assign(fixed.begin() + i * kHorizon, fixed.begin() + (i + 1) * kHorizon);
   }
   NominalCost cost;
   cost.prepare(scene.problem(), self, others);
-  const auto actions = randomActions(1, 1024);
-  std::size_t k = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(cost.evaluate(actions[k++ & 1023]));
-  }
-  state.SetItemsProcessed(state.iterations());
+  evaluateBatches(state, cost, kHorizon);
 }
 BENCHMARK(BM_CostEvaluationSma3Uavs);
 

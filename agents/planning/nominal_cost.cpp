@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 
 #include "agents/tracking/motion_model.h"
@@ -19,6 +20,8 @@ namespace {
 constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is kept (as the world)
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in a reach mask
+
+constexpr int kLanes = 4;                     // candidates evaluated side by side
 
 // Whether the footprint at p with heading (cos ψ, sin ψ) holds z: its constant part (shape, sizes,
 // the sector's cos(θ/2)) is placed at the origin once per UAV.
@@ -42,17 +45,18 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   return s;
 }
 
-__attribute__((always_inline)) inline void NominalCost::fly(const Mover& uav,
-                                                            std::span<const Vec2> actions,
-                                                            Vec2* positions, Vec2* headings) const {
+template <class Sink>
+[[gnu::always_inline]] inline void NominalCost::fly(const Mover& uav, std::span<const Vec2> actions,
+                                                    Sink&& sink) const {
   if (uav.ground) {
-    driveUnicycle(uav, actions, positions, headings);
+    driveUnicycle(uav, actions, sink);
     return;
   }
   Vec2 p = uav.position;
   double c = uav.cos_yaw, s = uav.sin_yaw;
   const double v_max_sq = uav.v_max * uav.v_max;
   const double tau = period_ / substeps_;  // s, between samples
+  int t = 0;
   for (int m = 0; m < horizon_; ++m) {
     Vec2 a = actions[m];
     double speed_sq = a.squaredNorm();
@@ -68,16 +72,17 @@ __attribute__((always_inline)) inline void NominalCost::fly(const Mover& uav,
     const Vec2 step = a * tau;  // m per sample
     for (int sample = 0; sample < substeps_; ++sample) {
       p += step;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
-      *positions++ = p;
-      *headings++ = Vec2(c, s);
+      sink(t++, p, Vec2(c, s));
     }
   }
 }
 
-void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
-                                Vec2* headings) const {
+template <class Sink>
+void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> actions,
+                                Sink&& sink) const {
   world::Pose2 pose{robot.position, robot.yaw};
   const double tau = period_ / substeps_;  // s, between samples
+  int t = 0;
   for (int m = 0; m < horizon_; ++m) {
     Vec2 a = actions[m];
     const double speed = a.norm();
@@ -85,8 +90,7 @@ void NominalCost::driveUnicycle(const Mover& robot, std::span<const Vec2> action
     world::Pose2 at;
     for (int sample = 1; sample <= substeps_; ++sample) {
       at = world::unicycleMove(pose, a, robot.turn_rate, sample * tau);  // the world's motion
-      *positions++ = at.position;
-      *headings++ = Vec2(std::cos(at.heading), std::sin(at.heading));
+      sink(t++, at.position, Vec2(std::cos(at.heading), std::sin(at.heading)));
     }
     pose = at;
   }
@@ -149,7 +153,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   }
 
   // The fixed UAVs' paths and footprints over the horizon.
-  all_final_.assign(n_uavs, Vec2::Zero());
+  n_uavs_ = n_uavs;
+  final_position_.assign(static_cast<std::size_t>(kLanes) * n_uavs, Vec2::Zero());
   std::vector<int> fixed;
   std::vector<Mover> fixed_movers(n_uavs);
   std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
@@ -160,8 +165,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
     fixed_movers[i] = moverOf(problem.uavs[i]);
-    fly(fixed_movers[i], actions, &fixed_pos[i * T], &fixed_heading[i * T]);
-    all_final_[i] = fixed_pos[i * T + T - 1];
+    fly(fixed_movers[i], actions, [&](int t, const Vec2& p, const Vec2& heading) {
+      fixed_pos[i * T + t] = p;
+      fixed_heading[i * T + t] = heading;
+    });
+    for (int lane = 0; lane < kLanes; ++lane) final_position_[lane * n_uavs + i] = fixed_pos[i * T + T - 1];
   }
 
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
@@ -228,187 +236,176 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     if (!started) cost_start_[j] = cost;
   }
 
-  // The tracks a free UAV can reach, in pairs, by their first reachable sample (so that the lanes
-  // of a pair start together). A lane past the last holds the slot n_targets: P = R = I (positive
-  // definite, as updatePosition asks of every lane), never seen, never counted.
-  std::vector<int> reachable;
+  reachable_.clear();
   for (int j = 0; j < n_targets; ++j) {
-    if (start_[j] < T) reachable.push_back(j);
+    if (start_[j] < T) reachable_.push_back(j);
   }
-  std::stable_sort(reachable.begin(), reachable.end(),
-                   [&](int a, int b) { return start_[a] < start_[b]; });
-  const int n_pairs = static_cast<int>(reachable.size() + 1) / 2;
-  pair_lane_.assign(2 * n_pairs, n_targets);
-  std::copy(reachable.begin(), reachable.end(), pair_lane_.begin());
-  const SymmetricCov4 unit = SymmetricCov4::fromUpper(Mat4::Identity());
-  pair_samples_.resize(static_cast<std::size_t>(n_pairs) * T);
-  pair_start_.resize(n_pairs);
-  P_pair_start_.resize(n_pairs);
-  for (int q = 0; q < n_pairs; ++q) {
-    const int lanes[2] = {pair_lane_[2 * q], pair_lane_[2 * q + 1]};
-    pair_start_[q] = start_[lanes[0]];       // the earlier of the two
-    SymmetricCov4 before[2] = {unit, unit};  // each lane's P after pair_start_ samples
-    for (int lane = 0; lane < 2; ++lane) {
-      const int j = lanes[lane];
-      if (j != n_targets)
-        before[lane] = fixed_path_[static_cast<std::size_t>(j) * (T + 1) + pair_start_[q]];
-    }
-    P_pair_start_[q] = CovariancePair::of(before[0], before[1]);
-    for (int t = 0; t < T; ++t) {
-      PairSample& sample = pair_samples_[static_cast<std::size_t>(q) * T + t];
-      Mat2 R[2] = {Mat2::Identity(), Mat2::Identity()};  // I in a lane that does not see
-      sample.fixed_seen = LaneMask{0, 0};
-      for (int lane = 0; lane < 2; ++lane) {
-        const int j = lanes[lane];
-        sample.z[lane] = Vec2::Zero();
-        sample.reach[lane] = 0;
-        if (j == n_targets) continue;
-        const std::size_t k = static_cast<std::size_t>(j) * T + t;
-        sample.z[lane] = z_[k];
-        sample.reach[lane] = reach_[k];
-        if (!fixed_seen_[k]) continue;
-        R[lane] = fixed_R_[k];
-        sample.fixed_seen[lane] = -1;
-      }
-      sample.fixed_R = NoisePair::of(R[0], R[1]);
-    }
-  }
-
-  free_pos_.resize(free_.size() * T);
-  free_heading_.resize(free_.size() * T);
+  free_pose_.resize(free_.size() * T);
   // A track no free UAV can see ends as the fixed UAVs leave it (evaluate() overwrites the others).
-  // Slot n_targets: a pair's empty lane.
-  trace_final_.resize(n_targets + 1);
-  in_view_final_.resize(n_targets + 1);
+  trace_final_.resize(static_cast<std::size_t>(kLanes) * n_targets);
+  in_view_final_.resize(trace_final_.size());
   for (int j = 0; j < n_targets; ++j) {
-    trace_final_[j] = fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
-    in_view_final_[j] = fixed_seen_[static_cast<std::size_t>(j) * T + T - 1];
+    for (int lane = 0; lane < kLanes; ++lane) {
+      trace_final_[kLanes * j + lane] =
+          fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
+      in_view_final_[kLanes * j + lane] = fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
+    }
   }
   uncovered_.assign(n_targets, 0);
-  stage_terms_.resize(static_cast<std::size_t>(n_targets + 1) * H);
+  stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
   charged_.assign(n_uavs, 0.0);
 }
 
 #if defined(__x86_64__)
-NominalCost::InstructionSet NominalCost::instructionSet() {
-  return cpuHasAvx() ? InstructionSet::avx : InstructionSet::sse2;
+[[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
+                                                     std::span<double> costs) {
+  evaluateBody(actions, costs);
 }
-
-__attribute__((target("avx"))) double NominalCost::evaluateAvx(std::span<const Vec2> actions) {
-  return evaluateBody(actions);
-}
-#else  // elsewhere the baseline build only ("sse2" names it)
-NominalCost::InstructionSet NominalCost::instructionSet() {
-  return InstructionSet::sse2;
-}
-
-double NominalCost::evaluateAvx(std::span<const Vec2> actions) {
-  return evaluateBody(actions);
+#else  // elsewhere the baseline build only
+void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<double> costs) {
+  evaluateBody(actions, costs);
 }
 #endif
 
-double NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions) {
-  return set == InstructionSet::avx ? evaluateAvx(actions) : evaluateSse2(actions);
+void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs) {
+  evaluateBody(actions, costs);
 }
 
-double NominalCost::evaluateSse2(std::span<const Vec2> actions) {
-  return evaluateBody(actions);
+void NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions,
+                               std::span<double> costs) {
+  set == InstructionSet::avx2 ? evaluateAvx2(actions, costs) : evaluateBaseline(actions, costs);
 }
 
-__attribute__((always_inline)) inline double NominalCost::evaluateBody(
-    std::span<const Vec2> actions) {
+double NominalCost::evaluate(std::span<const Vec2> actions) {
+  double cost = 0.0;
+  evaluate(actions, std::span<double>(&cost, 1));
+  return cost;
+}
+
+[[gnu::always_inline]] inline void NominalCost::evaluateBody(std::span<const Vec2> actions,
+                                                             std::span<double> costs) {
+  using lanes::load;
+  using lanes::store;
   const int H = horizon_, S = substeps_, T = H * S;
-  for (std::size_t f = 0; f < free_.size(); ++f) {
-    fly(free_[f], actions.subspan(f * H, H), &free_pos_[f * T], &free_heading_[f * T]);
-    all_final_[free_index_[f]] = free_pos_[f * T + T - 1];
-  }
-
-  const double tau = period_ / S;
-  double J = 0.0;
+  const std::size_t per_candidate = free_.size() * H;
+  const std::size_t n_candidates = costs.size();
   const int n_targets = static_cast<int>(start_.size());
-  const int n_pairs = static_cast<int>(pair_start_.size());
-  for (int q = 0; q < n_pairs; ++q) {
-    const int ja = pair_lane_[2 * q], jb = pair_lane_[2 * q + 1];  // the lanes' tracks
-    const int first = pair_start_[q];
-    CovariancePair P = P_pair_start_[q];
-    LaneMask seen_final = {0, 0};
-    int m = first / S;         // the action (0-based) of the first sample
-    int left = S - first % S;  // samples of it still to come, the first included
-    for (int t = first; t < T; ++t) {
-      const PairSample& sample = pair_samples_[static_cast<std::size_t>(q) * T + t];
-      predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
-      // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
-      // tree on the segment p_{i,m} → z_{j,m}}; the fixed UAVs' part is fused in R_fix.
-      LaneMask seen = sample.fixed_seen;
-      if (anyLane(seen)) updatePosition(P, sample.fixed_R, seen);
-      for (std::uint64_t bits = sample.reach[0] | sample.reach[1]; bits != 0; bits &= bits - 1) {
-        const int f = std::countr_zero(bits);
-        const std::size_t fq = static_cast<std::size_t>(f) * T + t;
-        Mat2 R[2] = {Mat2::Identity(), Mat2::Identity()};  // I in a lane that does not see
-        LaneMask sees = {0, 0};
-        for (int lane = 0; lane < 2; ++lane) {
-          const Vec2& z = sample.z[lane];
-          if ((sample.reach[lane] >> f & 1) == 0 ||
-              !footprintHolds(free_[f].at_origin, free_pos_[fq], free_heading_[fq], z) ||
-              !sightClear(free_[f], free_pos_[fq], z)) {
-            continue;
-          }
-          R[lane] = sensing::rangeBearingCovariance(z, free_pos_[fq], free_[f].quality);  // S·R
-          sees[lane] = -1;
-        }
-        if (!anyLane(sees)) continue;
-        updatePosition(P, NoisePair::of(R[0], R[1]), sees);
-        seen |= sees;
-      }
-      if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
-        const Lanes term = discount_[m] * stageTrace(P);
-        stage_terms_[static_cast<std::size_t>(ja) * H + m] = term[0];
-        stage_terms_[static_cast<std::size_t>(jb) * H + m] = term[1];
-        ++m;
-        left = S;
-      }
-      if (t == T - 1) seen_final = seen;
+  const double tau = period_ / S;
+  if (actions.size() != per_candidate * n_candidates) {
+    std::fprintf(stderr, "NominalCost::evaluate: %zu actions for %zu candidates of %zu\n",
+                 actions.size(), n_candidates, per_candidate);
+    std::abort();
+  }
+  for (std::size_t first = 0; first < n_candidates; first += kLanes) {
+    // Lane l runs candidate first + l; past the last candidate a lane repeats it (and is dropped).
+    std::size_t candidate[kLanes];
+    for (int lane = 0; lane < kLanes; ++lane) {
+      candidate[lane] = std::min(first + lane, n_candidates - 1);
     }
-    const Lanes trace = P.positionTrace();  // tr(P_{j,H}[pos])
-    trace_final_[ja] = trace[0];
-    trace_final_[jb] = trace[1];
-    in_view_final_[ja] = seen_final[0] != 0;
-    in_view_final_[jb] = seen_final[1] != 0;
-  }
-  // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
-  for (int j = 0; j < n_targets; ++j) {
-    J += cost_start_[j];
-    for (int k = start_[j] / S; k < H; ++k) J += stage_terms_[static_cast<std::size_t>(j) * H + k];
-  }
-  if (!terminal_ || charged_.empty()) return J;
+    for (std::size_t f = 0; f < free_.size(); ++f) {
+      PoseLanes* poses = &free_pose_[f * T];
+      for (int lane = 0; lane < kLanes; ++lane) {
+        const auto plan = actions.subspan(candidate[lane] * per_candidate + f * H, H);
+        fly(free_[f], plan, [&](int t, const Vec2& p, const Vec2& heading) {
+          poses[t].x[lane] = p.x();
+          poses[t].y[lane] = p.y();
+          poses[t].c[lane] = heading.x();
+          poses[t].s[lane] = heading.y();
+        });
+        final_position_[lane * n_uavs_ + free_index_[f]] = Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
+      }
+    }
 
-  // Terminal penalty: tracks in no footprint and not occluded at m = H, by decreasing
-  // tr(P_{j,H}[pos]) (ties: lower index first; stable insertion sort).
+    for (const int j : reachable_) {
+      const int first_sample = start_[j];
+      CovarianceLanes P = CovarianceLanes::of(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + first_sample]);
+      M4 seen_final = M4{};
+      int m = first_sample / S;         // the action (0-based) of the first sample
+      int left = S - first_sample % S;  // samples of it still to come, the first included
+      for (int t = first_sample; t < T; ++t) {
+        const std::size_t k = static_cast<std::size_t>(j) * T + t;
+        const Vec2& z = z_[k];
+        predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
+        // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
+        // tree on the segment p_{i,m} → z_{j,m}}; the fixed UAVs' part is fused in R_fix.
+        M4 seen = M4{};
+        if (fixed_seen_[k]) {
+          seen = M4{} - 1;
+          updatePosition(P, NoiseLanes::of(fixed_R_[k]), seen);
+        }
+        for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
+          const int f = std::countr_zero(bits);
+          const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
+          M4 sees = footprintHolds(free_[f].at_origin, pose, z);
+          if (free_[f].line_of_sight && map_ != nullptr) {
+            for (int lane = 0; lane < kLanes; ++lane) {
+              if (sees[lane] != 0 && map_->blocksSegment(Vec2(pose.x[lane], pose.y[lane]), z)) sees[lane] = 0;
+            }
+          }
+          if (!lanes::anyLane(sees)) continue;
+          NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, free_[f].quality);  // S·R
+          R.r00 = sees ? R.r00 : lanes::broadcast(1.0);  // I in a lane that does not see
+          R.r01 = sees ? R.r01 : V4{};
+          R.r10 = sees ? R.r10 : V4{};
+          R.r11 = sees ? R.r11 : lanes::broadcast(1.0);
+          updatePosition(P, R, sees);
+          seen |= sees;
+        }
+        if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
+          store(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + m)], discount_[m] * stageTrace(P));
+          ++m;
+          left = S;
+        }
+        if (t == T - 1) seen_final = seen;
+      }
+      store(&trace_final_[kLanes * j], P.positionTrace());  // tr(P_{j,H}[pos])
+      std::memcpy(&in_view_final_[kLanes * j], &seen_final, sizeof seen_final);
+    }
+    // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
+    V4 J = V4{};
+    for (int j = 0; j < n_targets; ++j) {
+      J += cost_start_[j];
+      for (int k = start_[j] / S; k < H; ++k) J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
+    }
+    for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
+      costs[first + lane] = addTerminalPenalty(lane, J[lane]);
+    }
+  }
+}
+
+double NominalCost::addTerminalPenalty(int lane, double J) {
+  if (!terminal_ || charged_.empty()) return J;
+  const int T = horizon_ * substeps_;
+  const int n_targets = static_cast<int>(start_.size());
+  auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
+  // Tracks in no footprint and not occluded at m = H, by decreasing tr(P_{j,H}[pos]) (ties: lower
+  // index first; stable insertion sort).
   int count = 0;
   for (int j = 0; j < n_targets; ++j) {
-    if (in_view_final_[j] || occluded_[static_cast<std::size_t>(j) * T + T - 1]) continue;
+    if (in_view_final_[kLanes * j + lane] != 0 || occluded_[static_cast<std::size_t>(j) * T + T - 1]) continue;
     int slot = count++;
-    for (; slot > 0 && trace_final_[uncovered_[slot - 1]] < trace_final_[j]; --slot) {
+    for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
       uncovered_[slot] = uncovered_[slot - 1];
     }
     uncovered_[slot] = j;
   }
   std::fill(charged_.begin(), charged_.end(), 0.0);
+  const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   for (int c = 0; c < count; ++c) {
     const int j = uncovered_[c];
     const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
     int best = 0;
     double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
-    for (int i = 0; i < static_cast<int>(charged_.size()); ++i) {
-      const double distance = (all_final_[i] - z).norm();  // |p_{i,H} − z_{j,H}|
+    for (int i = 0; i < n_uavs_; ++i) {
+      const double distance = (final_position[i] - z).norm();  // |p_{i,H} − z_{j,H}|
       if (charged_[i] + distance < best_total) {
         best = i;
         best_total = charged_[i] + distance;
         best_distance = distance;
       }
     }
-    J += weight_ * best_total * trace_final_[j];  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
-    charged_[best] += best_distance;              // D_i += |p_{i,H} − z_{j,H}|
+    J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
+    charged_[best] += best_distance;            // D_i += |p_{i,H} − z_{j,H}|
   }
   return J;
 }

@@ -9,10 +9,12 @@
 #include "agents/config.h"
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
-#include "agents/planning/covariance_pair.h"
+#include "agents/planning/covariance_lanes.h"
+#include "agents/planning/sensing_lanes.h"
 #include "agents/planning/plan.h"
 #include "agents/planning/symmetric_covariance.h"
 #include "agents/planning/uav_state.h"
+#include "core/cpu.h"
 #include "core/types.h"
 #include "sensing/footprint.h"
 
@@ -60,9 +62,9 @@ struct PlanningProblem {
 ///
 /// Precomputed per call: nominal trajectories z_{j,m} = H F(Δ)^m ξ_j, occlusion flags, the fixed
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
-/// track's recursion up to the first step a free UAV could see it. evaluate() then runs the
-/// tracks two at a time, one per lane of SSE2 pairs (covariance_pair.h), with the bits of one at
-/// a time. A commanded speed above v_max is clamped, as the world does; a ground robot follows
+/// track's recursion up to the first step a free UAV could see it. evaluate() then runs four
+/// candidate plans side by side, one per lane (covariance_lanes.h, sensing_lanes.h), each with the
+/// bits it has alone. A commanded speed above v_max is clamped, as the world does; a ground robot follows
 /// each action as the world's unicycle (world/unicycle.h: turn toward it, then drive), its sector
 /// turning with it.
 class NominalCost {
@@ -75,16 +77,16 @@ class NominalCost {
 
   /// actions: a_{f,m} for each free UAV f (in prepare's order) and m = 1..H, agent-major
   /// (size = free count · H), m/s. Returns J (m², or mixed units with full_trace).
-  double evaluate(std::span<const Vec2> actions) { return evaluateWith(instructionSet(), actions); }
+  double evaluate(std::span<const Vec2> actions);
 
-  /// The instruction sets evaluate() runs with. Both perform the same IEEE operations in the same
-  /// order, so they return the same bits: AVX changes only their encoding (three operands, so no
-  /// register copies; no FMA, which would round differently). About 15 % fewer instructions.
-  enum class InstructionSet { sse2, avx };
-  /// What evaluate() uses: AVX where this CPU has it, SSE2 (every x86-64) otherwise.
-  static InstructionSet instructionSet();
-  /// evaluate() with the given instruction set (avx only where instructionSet() is avx).
-  double evaluateWith(InstructionSet set, std::span<const Vec2> actions);
+  /// J of many candidate plans at once: actions holds costs.size() of them, one after the other
+  /// (each as evaluate() takes it). The swarm's way in: four candidates run side by side, one per
+  /// lane (core/lanes.h), and each gets the bits evaluate() gives it alone.
+  void evaluate(std::span<const Vec2> actions, std::span<double> costs) {
+    evaluateWith(instructionSet(), actions, costs);
+  }
+  /// evaluate() compiled for the given instruction set (avx2 only where instructionSet() is avx2).
+  void evaluateWith(InstructionSet set, std::span<const Vec2> actions, std::span<double> costs);
 
   int horizon() const { return horizon_; }
   int freeCount() const { return static_cast<int>(free_.size()); }
@@ -108,20 +110,23 @@ class NominalCost {
   bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
     return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
   }
-  // Moves a UAV through H actions: fills H·S positions (m) and headings (cos ψ, sin ψ).
-  void fly(const Mover& uav, std::span<const Vec2> actions, Vec2* positions, Vec2* headings) const;
+  // Moves a UAV through H actions: sink(t, p, (cos ψ, sin ψ)) at each of the H·S samples t.
+  template <class Sink>
+  void fly(const Mover& uav, std::span<const Vec2> actions, Sink&& sink) const;
   // fly() for a ground robot: each action as the world's unicycle moves it.
-  void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Vec2* positions,
-                     Vec2* headings) const;
-  // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovariancePair.
+  template <class Sink>
+  void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Sink&& sink) const;
+  // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovarianceLanes.
   template <class Cov>
   auto stageTrace(const Cov& P) const {
     return full_trace_ ? P.trace() : P.positionTrace();
   }
   // evaluate()'s body, compiled once per instruction set.
-  double evaluateSse2(std::span<const Vec2> actions);
-  double evaluateAvx(std::span<const Vec2> actions);
-  inline double evaluateBody(std::span<const Vec2> actions);
+  void evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs);
+  void evaluateAvx2(std::span<const Vec2> actions, std::span<double> costs);
+  inline void evaluateBody(std::span<const Vec2> actions, std::span<double> costs);
+  // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
+  double addTerminalPenalty(int lane, double J);
 
   int horizon_ = 0;                    // H
   int substeps_ = 1;                   // S samples per action
@@ -133,43 +138,31 @@ class NominalCost {
   std::vector<double> discount_;       // γ^{m−1}, m = 1..H
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
   std::vector<Mover> free_;            // the free UAVs, in prepare's order
-  std::vector<Vec2> all_final_;        // m, p_{i,H} of every UAV (free ones filled per call)
   std::vector<int> free_index_;        // UAV index of each free UAV
+  int n_uavs_ = 0;
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
-  std::vector<Vec2> z_;                 // m, nominal position H F^m ξ_j
-  std::vector<std::uint8_t> occluded_;  // z_{j,m} strictly inside a crown (hidden from all)
+  std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
+  std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown (hidden from all)
+  std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}, not hidden
+  std::vector<Mat2> fixed_R_;             // m², R_fix where fixed_seen_ (else I)
+  std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
+  // Per track: P after t samples with the fixed UAVs' measurements only, at [j·(H·S+1) + t].
+  std::vector<SymmetricCov4> fixed_path_;
 
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;          // first such sample t (H·S: none)
   std::vector<double> cost_start_;  // Σ_{m<start} γ^{m−1} tr(P_{j,m})
+  std::vector<int> reachable_;      // the tracks with start_ < H·S, in order
 
-  // evaluate() runs the tracks that a free UAV can reach two at a time, one per lane of pair q.
-  struct PairSample {        // what prepare() knows of pair q at sample t, at [q·H·S + t]
-    Vec2 z[2];               // m, each lane's z_{j,m}
-    NoisePair fixed_R;       // m², R_fix where a fixed UAV sees the lane (else I)
-    LaneMask fixed_seen;     // some fixed UAV's footprint holds z_{j,m} and it is not hidden
-    std::uint64_t reach[2];  // bit f: free UAV f can reach a footprint over the lane's z_{j,m}
-  };
-  std::vector<PairSample> pair_samples_;
-  std::vector<int> pair_lane_;                // the track of lane l of pair q at [2q + l]
-  std::vector<int> pair_start_;               // the earlier start_ of the pair's two tracks
-  std::vector<CovariancePair> P_pair_start_;  // both lanes' P at pair_start_ − 1
-
-  // prepare()'s working arrays per track j and sample, kept to reuse their memory.
-  std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV sees z_{j,m}, at [j·H·S + t]
-  std::vector<Mat2> fixed_R_;             // m², R_fix there when fixed_seen_ (else I)
-  std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
-  std::vector<SymmetricCov4> fixed_path_;  // P after t samples, fixed UAVs only, at [j·(H·S+1) + t]
-
-  // Scratch reused by evaluate().
-  std::vector<Vec2> free_pos_;               // m, p_{f,m}, free-major
-  std::vector<Vec2> free_heading_;           // (cos ψ, sin ψ) of φ_f at p_{f,m}, free-major
-  std::vector<double> trace_final_;          // m², tr(P_{j,H}[pos])
-  std::vector<std::uint8_t> in_view_final_;  // some footprint holds z_{j,H} (not occluded)
-  std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
-  std::vector<double> stage_terms_;          // m², γ^{m−1} tr(P_{j,m}) at [j·H + m − 1]
-  std::vector<double> charged_;              // m, D_i
+  // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
+  std::vector<PoseLanes> free_pose_;   // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
+  std::vector<Vec2> final_position_;   // m, p_{i,H} of every UAV, at [lane·n_uavs + i]
+  std::vector<double> stage_terms_;    // m², γ^{m−1} tr(P_{j,m}), 4 lanes at [4(j·H + m − 1)]
+  std::vector<double> trace_final_;    // m², tr(P_{j,H}[pos]), 4 lanes at [4j]
+  std::vector<std::int64_t> in_view_final_;  // some footprint holds z_{j,H}: −1/0, 4 lanes at [4j]
+  std::vector<int> uncovered_;         // terminal-penalty candidates, then their order
+  std::vector<double> charged_;        // m, D_i
 };
 
 /// The cost of a complete joint plan (one plan per UAV) — prepares and evaluates once. For tests,

@@ -78,7 +78,7 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
                        r1_.data(),     r2_.data(),      own_best_.data(), swarm_best_.data(),
                        lo_.data(),     hi_.data(),      width_.data(),   x_.data(),
                        v_.data(),      moved_.data()};
-  const KernelSet kernels = kernelSet();
+  const InstructionSet kernels = instructionSet();
   while (result.iterations < options.max_iterations) {
     for (std::size_t i = 0; i < count; ++i) {  // r1, r2 per particle and coordinate, in order
       r1_[i] = rng.uniform();

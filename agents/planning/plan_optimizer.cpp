@@ -36,15 +36,12 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
     }
   }
 
-  // The whole swarm decoded at once (swarm_kernels.h), then each particle's actions evaluated.
+  // The whole swarm decoded at once (swarm_kernels.h), then evaluated four particles at a time.
   const BatchCost batch = [this](std::span<const double> positions, std::span<double> costs) {
     const std::size_t per_particle = actions_.size();
     swarm_actions_.resize(costs.size() * per_particle);
     decodeActions(positions, swarm_actions_);
-    for (std::size_t p = 0; p < costs.size(); ++p) {
-      costs[p] = cost_.evaluate(std::span<const Vec2>(swarm_actions_).subspan(p * per_particle,
-                                                                             per_particle));
-    }
+    cost_.evaluate(swarm_actions_, costs);
   };
   const SwarmResult best = swarm_.minimise(batch, lo_, hi_, SwarmOptions::from(pso, H), rng, warm_);
 

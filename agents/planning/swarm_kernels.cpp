@@ -1,30 +1,20 @@
 #include "agents/planning/swarm_kernels.h"
 
 #include <cstdint>
-#include <cstring>
 
 #include "agents/planning/heading.h"
 #include "core/cpu.h"
+#include "core/lanes.h"
 
 namespace canopy::agents::planning {
 namespace {
 
-// Four doubles and their lane masks (−1 true, 0 false). Without AVX, g++ lowers each operation to
-// two SSE2 instructions with the same rounding. The helpers below taking and returning them are
-// inlined into both copies of each kernel, so no call passes a vector: g++'s note that such a
-// call's ABI depends on AVX does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
-using V4 = double __attribute__((vector_size(32)));
-using M4 = std::int64_t __attribute__((vector_size(32)));
-using I4 = std::int32_t __attribute__((vector_size(16)));
-
-[[gnu::always_inline]] inline V4 load(const double* p) {
-  V4 v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-[[gnu::always_inline]] inline void store(double* p, const V4& v) { std::memcpy(p, &v, sizeof v); }
-[[gnu::always_inline]] inline bool allLanes(const M4& m) { return (m[0] & m[1] & m[2] & m[3]) != 0; }
+using lanes::allLanes;
+using lanes::I4;
+using lanes::load;
+using lanes::M4;
+using lanes::store;
+using lanes::V4;
 
 [[gnu::always_inline]] inline void moveOne(const SwarmMove& m, std::size_t i) {
   m.v[i] = m.w * m.v[i] + m.c1 * m.r1[i] * shortestDisplacement(m.own_best[i] - m.x[i], m.width[i]) +
@@ -131,14 +121,12 @@ void decodeActionsBaseline(std::span<const double> x, std::span<Vec2> a) {
 
 }  // namespace
 
-KernelSet kernelSet() { return cpuHasAvx2() ? KernelSet::avx2 : KernelSet::baseline; }
-
-void moveParticles(const SwarmMove& move, KernelSet set) {
-  set == KernelSet::avx2 ? moveParticlesAvx2(move) : moveParticlesBaseline(move);
+void moveParticles(const SwarmMove& move, InstructionSet set) {
+  set == InstructionSet::avx2 ? moveParticlesAvx2(move) : moveParticlesBaseline(move);
 }
 
-void decodeActions(std::span<const double> x, std::span<Vec2> actions, KernelSet set) {
-  set == KernelSet::avx2 ? decodeActionsAvx2(x, actions) : decodeActionsBaseline(x, actions);
+void decodeActions(std::span<const double> x, std::span<Vec2> actions, InstructionSet set) {
+  set == InstructionSet::avx2 ? decodeActionsAvx2(x, actions) : decodeActionsBaseline(x, actions);
 }
 
 }  // namespace canopy::agents::planning

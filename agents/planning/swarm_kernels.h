@@ -9,15 +9,10 @@
 #include <cstddef>
 #include <span>
 
+#include "core/cpu.h"
 #include "core/types.h"
 
 namespace canopy::agents::planning {
-
-/// The instruction sets the kernels are compiled for: every x86-64 has SSE2 (`baseline`; the
-/// vectors are then lowered to pairs), `avx2` runs the same operations four lanes wide.
-enum class KernelSet { baseline, avx2 };
-/// avx2 where this CPU has it, else baseline.
-KernelSet kernelSet();
 
 /// The swarm's arrays over all particles, particle-major (index i = p·dim + d), so that lo, hi,
 /// width and the swarm's best are repeated once per particle.
@@ -39,11 +34,11 @@ struct SwarmMove {
 /// For every i < count:
 ///   v_i ← w v_i + c1 r1_i δ(own_i − x_i) + c2 r2_i δ(best_i − x_i),  x_i ← wrap(x_i + v_i),
 /// δ the shortest periodic displacement and wrap the periodic re-entry of particle_swarm.h.
-void moveParticles(const SwarmMove& move, KernelSet set = kernelSet());
+void moveParticles(const SwarmMove& move, InstructionSet set = instructionSet());
 
 /// a_k = x[2k] · (cos x[2k+1], sin x[2k+1]) for k < actions.size() (x holds 2·actions.size()
 /// values: speed, heading per action), by unitHeading (heading.h).
-void decodeActions(std::span<const double> x, std::span<Vec2> actions, KernelSet set = kernelSet());
+void decodeActions(std::span<const double> x, std::span<Vec2> actions, InstructionSet set = instructionSet());
 
 /// The scalar forms the kernels reproduce lane by lane (and use for a remainder shorter than a
 /// vector). The shortest periodic displacement d mod width, in [−width/2, width/2]: both ends of a

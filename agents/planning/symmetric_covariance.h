@@ -50,7 +50,7 @@ struct NcvNoise {
 /// P⁻ = F P Fᵀ + Q with F = [[I, τ I], [0, I]], by 2x2 blocks [[A, B], [Bᵀ, C]]:
 ///   A ← A + τ(B + Bᵀ) + τ² C + Q_pp,  B ← B + τ C + Q_pv,  C ← C + Q_vv.
 /// B is not symmetric: B = [[p02, p03], [p12, p13]]. Cov: SymmetricCov4, or any struct with its
-/// ten entries by the same names whose entries take + and · by a double (covariance_pair.h).
+/// ten entries by the same names whose entries take + and · by a double (covariance_lanes.h).
 template <class Cov>
 inline void predictCovariance(Cov& P, double tau, const NcvNoise& Q) {
   const double tau2 = tau * tau;

@@ -331,13 +331,13 @@ TEST(NominalCost, MatchesLiteralInformationFormAndPartialPreparation) {
               literalCost(targets, uavs, plans, s, map), 1e-9 * expected);
 }
 
-// evaluate() under AVX returns the bits of SSE2 (the same operations, only encoded differently),
-// over random scenes: UAVs and a ground robot, both occlusion models, an odd number of tracks,
-// one and several free agents, S = 1 and 3. Skipped where the CPU has no AVX.
-TEST(NominalCost, InstructionSetsGiveTheSameBits) {
-  if (NominalCost::instructionSet() != NominalCost::InstructionSet::avx) {
-    GTEST_SKIP() << "no AVX on this CPU";
-  }
+// A batch of candidates gives each the bits it gets alone (the four lanes never mix), and the
+// AVX2 copy gives the baseline's bits (the same operations, only encoded differently), over random
+// scenes: UAVs and a ground robot, both occlusion models, an odd number of tracks, one and several
+// free agents, S = 1 and 3, batches of 7 (one lane of the second group repeats the last).
+TEST(NominalCost, BatchesAndInstructionSetsGiveEachCandidateItsBits) {
+  std::vector<InstructionSet> sets = {InstructionSet::baseline};
+  if (instructionSet() == InstructionSet::avx2) sets.push_back(InstructionSet::avx2);
   RandomStream rng(21, "instruction-set-test");
   std::vector<world::TreeDef> trees;
   for (int k = 0; k < 30; ++k) {
@@ -378,20 +378,27 @@ TEST(NominalCost, InstructionSetsGiveTheSameBits) {
         scene % 4 < 2 ? std::vector<int>{1} : std::vector<int>{0, 3, 2};
     NominalCost cost;
     cost.prepare(problem, free_agents, plans);
-    for (int trial = 0; trial < 20; ++trial) {
+    for (int trial = 0; trial < 3; ++trial) {
+      constexpr int kBatch = 7;
       std::vector<Vec2> actions;
-      for (std::size_t k = 0; k < free_agents.size() * s.horizon; ++k) {
+      for (std::size_t k = 0; k < kBatch * free_agents.size() * s.horizon; ++k) {
         actions.push_back(Vec2(rng.uniform(-6, 6), rng.uniform(-6, 6)));
       }
-      const double sse2 = cost.evaluateWith(NominalCost::InstructionSet::sse2, actions);
-      const double avx = cost.evaluateWith(NominalCost::InstructionSet::avx, actions);
-      ASSERT_EQ(std::bit_cast<std::uint64_t>(sse2), std::bit_cast<std::uint64_t>(avx))
-          << "scene " << scene << ", trial " << trial;
-      ASSERT_EQ(cost.evaluate(actions), avx);
-      ++compared;
+      const std::size_t per_candidate = free_agents.size() * s.horizon;
+      for (const InstructionSet set : sets) {
+        std::vector<double> costs(kBatch);
+        cost.evaluateWith(set, actions, costs);
+        for (int c = 0; c < kBatch; ++c) {
+          const double alone =
+              cost.evaluate(std::span<const Vec2>(actions).subspan(c * per_candidate, per_candidate));
+          ASSERT_EQ(std::bit_cast<std::uint64_t>(costs[c]), std::bit_cast<std::uint64_t>(alone))
+              << "scene " << scene << ", trial " << trial << ", candidate " << c;
+          ++compared;
+        }
+      }
     }
   }
-  EXPECT_EQ(compared, 480);
+  EXPECT_EQ(compared, 24 * 3 * 7 * static_cast<int>(sets.size()));
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // Random covariances for the covariance recursion's tests (symmetric_covariance_test.cpp,
-// covariance_pair_test.cpp).
+// covariance_lanes_test.cpp).
 #include "core/random.h"
 #include "core/types.h"
 

@@ -20,9 +20,9 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
 
 // The kernel sets this CPU can run: baseline always, avx2 where present.
-std::vector<KernelSet> runnableSets() {
-  std::vector<KernelSet> sets = {KernelSet::baseline};
-  if (kernelSet() == KernelSet::avx2) sets.push_back(KernelSet::avx2);
+std::vector<InstructionSet> runnableSets() {
+  std::vector<InstructionSet> sets = {InstructionSet::baseline};
+  if (instructionSet() == InstructionSet::avx2) sets.push_back(InstructionSet::avx2);
   return sets;
 }
 
@@ -70,7 +70,7 @@ void moveByTheFormula(SwarmState& s) {
 }
 
 TEST(SwarmKernels, MoveHasTheBitsOfTheScalarUpdate) {
-  for (const KernelSet set : runnableSets()) {
+  for (const InstructionSet set : runnableSets()) {
     for (const std::size_t count : {1u, 4u, 10u, 998u, 1000u, 1003u}) {
       for (const bool degenerate : {false, true}) {
         SwarmState kernel(count, count, degenerate), formula(count, count, degenerate);
@@ -90,7 +90,7 @@ TEST(SwarmKernels, MoveHasTheBitsOfTheScalarUpdate) {
 // By hand, in the unit box with r1 = r2 = 1: δ1 = 0.4 − 0.2 = 0.2; 0.9 − 0.2 = 0.7 is more than
 // half the box, so δ2 = 0.7 − 1 = −0.3 (the short way round); a jump below 0 re-enters below 1.
 TEST(SwarmKernels, MoveByHand) {
-  for (const KernelSet set : runnableSets()) {
+  for (const InstructionSet set : runnableSets()) {
     std::vector<double> r1(4, 1.0), r2(4, 1.0), own(4, 0.4), best(4, 0.9), lo(4, 0.0), hi(4, 1.0),
         width(4, 1.0), x(4, 0.2), v(4, -0.5), moved(4);
     moveParticles({4, 0.9, 0.5, 0.3, r1.data(), r2.data(), own.data(), best.data(), lo.data(),
@@ -106,7 +106,7 @@ TEST(SwarmKernels, MoveByHand) {
 
 TEST(SwarmKernels, DecodeHasTheBitsOfUnitHeading) {
   RandomStream rng(3, "swarm-kernels-decode");
-  for (const KernelSet set : runnableSets()) {
+  for (const InstructionSet set : runnableSets()) {
     for (const std::size_t count : {1u, 3u, 4u, 5u, 500u, 503u}) {
       for (const bool out_of_range : {false, true}) {
         std::vector<double> x;

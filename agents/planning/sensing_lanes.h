@@ -1,0 +1,56 @@
+#pragma once
+// Sensing's footprint test (sensing/footprint.h, Footprint::containsFrom) and range-bearing noise
+// (sensing/noise.h, rangeBearingCovariance) for four poses of one UAV at once, one per lane, as
+// the NBO cost asks them for four particles of the swarm. Each lane performs the scalar
+// function's operations in the same order, so it answers with the scalar function's bits
+// (tests/agents/planning/sensing_lanes_test.cpp); the scalar functions stay the formulas' source.
+#include <numbers>
+
+#include "agents/planning/covariance_lanes.h"
+#include "core/lanes.h"
+#include "sensing/footprint.h"
+#include "sensing/noise.h"
+
+namespace canopy::agents::planning {
+
+/// Four poses of a UAV: ground points (x, y) in m and headings (cos ψ, sin ψ).
+struct PoseLanes {
+  V4 x, y, c, s;
+};
+
+/// Per lane: at_origin.containsFrom((x, y), c, s, z).
+[[gnu::always_inline]] inline M4 footprintHolds(const sensing::Footprint& at_origin,
+                                                const PoseLanes& pose, const Vec2& z) {
+  using sensing::kFootprintSlack;
+  const V4 dx = z.x() - pose.x, dy = z.y() - pose.y;
+  if (at_origin.shape != sensing::FootprintShape::rectangle) {
+    const double r = at_origin.radius + kFootprintSlack;
+    const V4 d2 = dx * dx + dy * dy;
+    const M4 within = ~(d2 > r * r);  // the scalar returns false when d2 > r² (so NaN is within)
+    if (at_origin.shape == sensing::FootprintShape::disc) return within;
+    const V4 along = pose.c * dx + pose.s * dy;
+    return within & (along + kFootprintSlack >= lanes::sqrt(d2) * at_origin.cos_half);
+  }
+  const V4 along = pose.c * dx + pose.s * dy;
+  const V4 across = -pose.s * dx + pose.c * dy;
+  return (lanes::abs(along) <= at_origin.half.x() + kFootprintSlack) &
+         (lanes::abs(across) <= at_origin.half.y() + kFootprintSlack);
+}
+
+/// Per lane: R(z, p) of sensing::rangeBearingCovariance with p = (x, y).
+[[gnu::always_inline]] inline NoiseLanes rangeBearingCovariance(const Vec2& z, const V4& x,
+                                                               const V4& y,
+                                                               const sensing::SensorQuality& q) {
+  const V4 dx = z.x() - x, dy = z.y() - y;
+  const V4 r = lanes::sqrt(dx * dx + dy * dy);  // |z − p|
+  const V4 d = q.r0 < r ? r : lanes::broadcast(q.r0);  // std::max(r0, r)
+  const M4 away = r > 0.0;
+  const V4 c = away ? dx / r : lanes::broadcast(1.0);  // cos ρ
+  const V4 s = away ? dy / r : V4{};                   // sin ρ
+  const V4 range_var = q.alpha * 0.1 * d;
+  const V4 bearing_var = q.alpha * 0.1 * std::numbers::pi * d;
+  const V4 cs = c * s * (range_var - bearing_var);
+  return {c * c * range_var + s * s * bearing_var, cs, cs, s * s * range_var + c * c * bearing_var};
+}
+
+}  // namespace canopy::agents::planning

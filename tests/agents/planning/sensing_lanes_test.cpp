@@ -1,0 +1,84 @@
+#include "agents/planning/sensing_lanes.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "core/random.h"
+
+namespace canopy::agents::planning {
+namespace {
+
+std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+sensing::Footprint footprintAtOrigin(RandomStream& rng, sensing::FootprintShape shape) {
+  sensing::FootprintDef def;
+  def.shape = shape;
+  def.size = Vec2(rng.uniform(5, 30), rng.uniform(5, 30));
+  def.radius = rng.uniform(5, 20);
+  def.angle = rng.uniform(0.3, 6.2);
+  return sensing::Footprint::place(def, Vec2::Zero(), 0.0);
+}
+
+// Four random poses, one of them (now and then) exactly on z, or NaN.
+PoseLanes randomPoses(RandomStream& rng, const Vec2& z, int trial) {
+  PoseLanes pose;
+  for (int k = 0; k < 4; ++k) {
+    const double yaw = rng.uniform(-4, 4);
+    pose.x[k] = z.x() + rng.uniform(-25, 25);
+    pose.y[k] = z.y() + rng.uniform(-25, 25);
+    pose.c[k] = std::cos(yaw);
+    pose.s[k] = std::sin(yaw);
+  }
+  if (trial % 7 == 0) pose.x[1] = z.x(), pose.y[1] = z.y();
+  if (trial % 11 == 0) pose.x[2] = std::numeric_limits<double>::quiet_NaN();
+  return pose;
+}
+
+// Per lane, the answer of sensing's scalar footprint test, for every shape.
+TEST(SensingLanes, FootprintTestIsTheScalarOnePerLane) {
+  RandomStream rng(31, "sensing-lanes-test");
+  int inside = 0, outside = 0;
+  for (const auto shape : {sensing::FootprintShape::rectangle, sensing::FootprintShape::disc,
+                           sensing::FootprintShape::sector}) {
+    for (int trial = 0; trial < 2000; ++trial) {
+      const sensing::Footprint at_origin = footprintAtOrigin(rng, shape);
+      const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
+      const PoseLanes pose = randomPoses(rng, z, trial);
+      const M4 holds = footprintHolds(at_origin, pose, z);
+      for (int k = 0; k < 4; ++k) {
+        const bool scalar =
+            at_origin.containsFrom(Vec2(pose.x[k], pose.y[k]), pose.c[k], pose.s[k], z);
+        ASSERT_EQ(holds[k] != 0, scalar) << static_cast<int>(shape) << " " << trial << " " << k;
+        (scalar ? inside : outside) += 1;
+      }
+    }
+  }
+  EXPECT_GT(inside, 2000);  // both answers are exercised
+  EXPECT_GT(outside, 2000);
+}
+
+// Per lane, the bits of sensing's R(z, p), the lane on z (range 0) included.
+TEST(SensingLanes, RangeBearingNoiseIsTheScalarOnePerLane) {
+  RandomStream rng(32, "sensing-lanes-test");
+  for (int trial = 0; trial < 2000; ++trial) {
+    const sensing::SensorQuality quality{rng.uniform(0.05, 3.0), rng.uniform(0.0, 5.0)};
+    const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
+    const PoseLanes pose = randomPoses(rng, z, trial);
+    const NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, quality);
+    for (int k = 0; k < 4; ++k) {
+      const Mat2 scalar =
+          sensing::rangeBearingCovariance(z, Vec2(pose.x[k], pose.y[k]), quality);
+      ASSERT_EQ(bitsOf(R.r00[k]), bitsOf(scalar(0, 0))) << trial << " " << k;
+      ASSERT_EQ(bitsOf(R.r01[k]), bitsOf(scalar(0, 1))) << trial << " " << k;
+      ASSERT_EQ(bitsOf(R.r10[k]), bitsOf(scalar(1, 0))) << trial << " " << k;
+      ASSERT_EQ(bitsOf(R.r11[k]), bitsOf(scalar(1, 1))) << trial << " " << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace canopy::agents::planning
