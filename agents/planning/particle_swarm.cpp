@@ -56,8 +56,6 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
 
   int stalls = 0;
   const std::size_t count = n * dim;
-  r1_.resize(count);
-  r2_.resize(count);
   lo_.resize(count);
   hi_.resize(count);
   width_.resize(count);
@@ -74,16 +72,13 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
     }
   };
   repeatSwarmBest();
-  const SwarmMove move{count,          options.inertia, options.c1,      options.c2,
-                       r1_.data(),     r2_.data(),      own_best_.data(), swarm_best_.data(),
-                       lo_.data(),     hi_.data(),      width_.data(),   x_.data(),
-                       v_.data(),      moved_.data()};
+  random_ = lanes::RandomLanes::from(rng);  // r1, r2 of every iteration
+  const SwarmMove move{count,          options.inertia,    options.c1,      options.c2,
+                       &random_,       own_best_.data(),   swarm_best_.data(), lo_.data(),
+                       hi_.data(),     width_.data(),      x_.data(),       v_.data(),
+                       moved_.data()};
   const InstructionSet kernels = instructionSet();
   while (result.iterations < options.max_iterations) {
-    for (std::size_t i = 0; i < count; ++i) {  // r1, r2 per particle and coordinate, in order
-      r1_[i] = rng.uniform();
-      r2_[i] = rng.uniform();
-    }
     moveParticles(move, kernels);
     cost(x_, cost_);
     result.evaluations += static_cast<long long>(n);

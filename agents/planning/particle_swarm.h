@@ -8,6 +8,7 @@
 
 #include "agents/config.h"
 #include "agents/planning/swarm_kernels.h"
+#include "core/random_lanes.h"
 #include "core/random.h"
 
 namespace canopy::agents::planning {
@@ -43,8 +44,9 @@ using BatchCost = std::function<void(std::span<const double> positions, std::spa
 /// hi − lo), so the box is a torus for the attraction too: a minimum near a bound pulls particles
 /// from both sides of it rather than across the whole box. Initial positions are uniform in the
 /// box, initial velocities uniform in ±kInitialVelocityFraction·(hi − lo). Draw order (fixed, so a
-/// stream gives one result): per particle, per coordinate, position then velocity; per iteration,
-/// per particle, per coordinate, r1 then r2.
+/// stream gives one result): per particle, per coordinate, position then velocity, from `rng`;
+/// then sixteen words of `rng` seed four xoshiro256+ streams (core/random_lanes.h), which give
+/// every iteration's r1, r2 in swarm_kernels.h's order.
 class ParticleSwarm {
  public:
   static constexpr double kInitialVelocityFraction = 0.5;
@@ -57,7 +59,7 @@ class ParticleSwarm {
 
  private:
   std::vector<double> x_, v_, own_best_, own_best_cost_, cost_;
-  std::vector<double> r1_, r2_;  // one iteration's r1, r2 per particle and coordinate
+  lanes::RandomLanes random_;  // four streams for r1, r2, seeded from the call's stream
   // Per particle and coordinate (particle-major, as x_), for swarm_kernels.h: the box, its width
   // and the swarm's best position, repeated once per particle.
   std::vector<double> lo_, hi_, width_, swarm_best_;

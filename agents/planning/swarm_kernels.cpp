@@ -5,6 +5,7 @@
 #include "agents/planning/heading.h"
 #include "core/cpu.h"
 #include "core/lanes.h"
+#include "core/random_lanes.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -14,11 +15,12 @@ using lanes::I4;
 using lanes::load;
 using lanes::M4;
 using lanes::store;
+using lanes::U4;
 using lanes::V4;
 
-[[gnu::always_inline]] inline void moveOne(const SwarmMove& m, std::size_t i) {
-  m.v[i] = m.w * m.v[i] + m.c1 * m.r1[i] * shortestDisplacement(m.own_best[i] - m.x[i], m.width[i]) +
-           m.c2 * m.r2[i] * shortestDisplacement(m.swarm_best[i] - m.x[i], m.width[i]);
+[[gnu::always_inline]] inline void moveOne(const SwarmMove& m, std::size_t i, double r1, double r2) {
+  m.v[i] = m.w * m.v[i] + m.c1 * r1 * shortestDisplacement(m.own_best[i] - m.x[i], m.width[i]) +
+           m.c2 * r2 * shortestDisplacement(m.swarm_best[i] - m.x[i], m.width[i]);
   m.x[i] = wrapPeriodic(m.x[i] + m.v[i], m.lo[i], m.hi[i]);
 }
 
@@ -26,21 +28,24 @@ using lanes::V4;
   // Locals: a store through x or v could alias the struct's own doubles and pointers as far as
   // the compiler knows, so it would reload every one of them for each vector.
   const double w = m.w, c1 = m.c1, c2 = m.c2;
-  const double *r1 = m.r1, *r2 = m.r2, *own_best = m.own_best, *swarm_best = m.swarm_best;
+  const double *own_best = m.own_best, *swarm_best = m.swarm_best;
   const double *lo_of = m.lo, *hi_of = m.hi, *width_of = m.width;
   double *xs = m.x, *vs = m.v, *moved_of = m.moved;
   const std::size_t count = m.count;
+  U4 s0 = m.random->s[0], s1 = m.random->s[1], s2 = m.random->s[2], s3 = m.random->s[3];
   M4 near_all = M4{} - 1;  // every lane so far within one width of its box
   std::size_t i = 0;
   for (; i + 4 <= count; i += 4) {
+    const V4 r1 = lanes::nextUniform(s0, s1, s2, s3);  // one per lane: coordinates i..i+3
+    const V4 r2 = lanes::nextUniform(s0, s1, s2, s3);
     const V4 x = load(xs + i), width = load(width_of + i), lo = load(lo_of + i),
              hi = load(hi_of + i);
     const V4 half = 0.5 * width, minus_half = -0.5 * width;  // the bounds of δ's three cases
     // δ(d): d − width above width/2, d + width below −width/2, else d.
     const V4 d1 = load(own_best + i) - x, d2 = load(swarm_best + i) - x;
-    const V4 s1 = d1 > half ? d1 - width : (d1 < minus_half ? d1 + width : d1);
-    const V4 s2 = d2 > half ? d2 - width : (d2 < minus_half ? d2 + width : d2);
-    const V4 v = w * load(vs + i) + c1 * load(r1 + i) * s1 + c2 * load(r2 + i) * s2;
+    const V4 toward_own = d1 > half ? d1 - width : (d1 < minus_half ? d1 + width : d1);
+    const V4 toward_best = d2 > half ? d2 - width : (d2 < minus_half ? d2 + width : d2);
+    const V4 v = w * load(vs + i) + c1 * r1 * toward_own + c2 * r2 * toward_best;
     const V4 moved = x + v;
     store(vs + i, v);
     store(moved_of + i, moved);
@@ -54,7 +59,12 @@ using lanes::V4;
   if (!allLanes(near_all)) [[unlikely]] {
     for (std::size_t k = 0; k < i; ++k) xs[k] = wrapPeriodic(moved_of[k], lo_of[k], hi_of[k]);
   }
-  for (; i < count; ++i) moveOne(m, i);
+  if (i < count) {  // the last count mod 4 coordinates take the first lanes of one more draw
+    const V4 r1 = lanes::nextUniform(s0, s1, s2, s3);
+    const V4 r2 = lanes::nextUniform(s0, s1, s2, s3);
+    for (int lane = 0; i < count; ++i, ++lane) moveOne(m, i, r1[lane], r2[lane]);
+  }
+  m.random->s[0] = s0, m.random->s[1] = s1, m.random->s[2] = s2, m.random->s[3] = s3;
 }
 
 // unitHeading (heading.h) in four lanes: the same reduction, polynomial and quarter turns, each

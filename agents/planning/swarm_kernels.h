@@ -1,15 +1,17 @@
 #pragma once
 // The particle swarm's arithmetic per coordinate, over the whole swarm at once (algorithms.md §6):
-// the velocity/position update and the decode of speeds and headings into actions. Both run four
-// coordinates (or actions) per step in vectors of four doubles; each lane performs the scalar
-// formula's IEEE operations in the same order (no FMA), so the result has the bits of the scalar
-// loop (tests/agents/planning/swarm_kernels_test.cpp). They were most of a planning call's
-// overhead around the cost: one update and one decode per coordinate per iteration.
+// the velocity/position update with its random weights, and the decode of speeds and headings
+// into actions. Both run four coordinates (or actions) per step in vectors of four doubles; each
+// lane performs the scalar formula's IEEE operations in the same order (no FMA), so the result
+// has the bits of the scalar loop (tests/agents/planning/swarm_kernels_test.cpp). They were most
+// of a planning call's overhead around the cost: two random numbers, one update and one decode
+// per coordinate per iteration.
 #include <cmath>
 #include <cstddef>
 #include <span>
 
 #include "core/cpu.h"
+#include "core/random_lanes.h"
 #include "core/types.h"
 
 namespace canopy::agents::planning {
@@ -19,8 +21,7 @@ namespace canopy::agents::planning {
 struct SwarmMove {
   std::size_t count = 0;               // particles × dimension
   double w = 0.0, c1 = 0.0, c2 = 0.0;  // inertia, cognitive and social weights
-  const double* r1 = nullptr;          // U[0, 1) per coordinate
-  const double* r2 = nullptr;
+  lanes::RandomLanes* random = nullptr;  // r1, r2 ~ U[0, 1): advanced by the move
   const double* own_best = nullptr;    // each particle's best position
   const double* swarm_best = nullptr;  // the swarm's best, repeated per particle
   const double* lo = nullptr;          // the box, repeated per particle
@@ -34,6 +35,8 @@ struct SwarmMove {
 /// For every i < count:
 ///   v_i ← w v_i + c1 r1_i δ(own_i − x_i) + c2 r2_i δ(best_i − x_i),  x_i ← wrap(x_i + v_i),
 /// δ the shortest periodic displacement and wrap the periodic re-entry of particle_swarm.h.
+/// Draw order: for each group of four coordinates i = 4g..4g+3 (the last group possibly short),
+/// one draw of the four streams gives r1 (lane i − 4g), the next gives r2.
 void moveParticles(const SwarmMove& move, InstructionSet set = instructionSet());
 
 /// a_k = x[2k] · (cos x[2k+1], sin x[2k+1]) for k < actions.size() (x holds 2·actions.size()
