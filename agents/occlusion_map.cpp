@@ -95,8 +95,8 @@ bool OcclusionMap::blocksSegment(const Vec2& a, const Vec2& b) const {
     return false;  // the segment's box misses every crown's
   }
   // Every tree whose box meets the segment is listed in a cell of the segment's box.
-  auto index = [this](double v, double origin, int count) {
-    return std::clamp(static_cast<int>((v - origin) / cell_), 0, count - 1);
+  auto index = [this](double v, double origin, int count) {  // clamped before the cast: a far
+    return static_cast<int>(std::clamp((v - origin) / cell_, 0.0, count - 1.0));  // end fits
   };
   const int c0 = index(lo.x(), bounds_.lo.x(), cols_), c1 = index(hi.x(), bounds_.lo.x(), cols_);
   const int r0 = index(lo.y(), bounds_.lo.y(), rows_), r1 = index(hi.y(), bounds_.lo.y(), rows_);

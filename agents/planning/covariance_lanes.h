@@ -20,7 +20,7 @@ struct CovarianceLanes {
   V4 p00, p01, p02, p03, p11, p12, p13, p22, p23, p33;
 
   /// P in every lane.
-  static CovarianceLanes of(const SymmetricCov4& P) {
+  [[gnu::always_inline]] static CovarianceLanes of(const SymmetricCov4& P) {
     using lanes::broadcast;
     return {broadcast(P.p00), broadcast(P.p01), broadcast(P.p02), broadcast(P.p03),
             broadcast(P.p11), broadcast(P.p12), broadcast(P.p13), broadcast(P.p22),
@@ -29,8 +29,10 @@ struct CovarianceLanes {
   SymmetricCov4 lane(int k) const {
     return {p00[k], p01[k], p02[k], p03[k], p11[k], p12[k], p13[k], p22[k], p23[k], p33[k]};
   }
-  V4 positionTrace() const { return p00 + p11; }      // tr(P_pos), m²
-  V4 trace() const { return p00 + p11 + p22 + p33; }  // tr(P), mixed units
+  // Always inlined, like every function here that returns a vector: the cost compiled for AVX2
+  // and a copy compiled without would disagree on the registers a returned vector travels in.
+  [[gnu::always_inline]] V4 positionTrace() const { return p00 + p11; }      // tr(P_pos), m²
+  [[gnu::always_inline]] V4 trace() const { return p00 + p11 + p22 + p33; }  // tr(P), mixed units
 };
 
 /// R of one position measurement per lane (m²). R(0, 1) and R(1, 0) are kept apart, as the scalar
@@ -39,7 +41,7 @@ struct NoiseLanes {
   V4 r00, r01, r10, r11;
 
   /// R in every lane.
-  static NoiseLanes of(const Mat2& R) {
+  [[gnu::always_inline]] static NoiseLanes of(const Mat2& R) {
     using lanes::broadcast;
     return {broadcast(R(0, 0)), broadcast(R(0, 1)), broadcast(R(1, 0)), broadcast(R(1, 1))};
   }

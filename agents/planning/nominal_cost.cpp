@@ -337,9 +337,11 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           const int f = std::countr_zero(bits);
           const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
           M4 sees = footprintHolds(free_[f].at_origin, pose, z);
-          if (free_[f].line_of_sight && map_ != nullptr) {
+          if (free_[f].line_of_sight && map_ != nullptr) {  // a map tree on p → z hides z
             for (int lane = 0; lane < kLanes; ++lane) {
-              if (sees[lane] != 0 && map_->blocksSegment(Vec2(pose.x[lane], pose.y[lane]), z)) sees[lane] = 0;
+              if (sees[lane] != 0 && map_->blocksSegment(Vec2(pose.x[lane], pose.y[lane]), z)) {
+                sees[lane] = 0;
+              }
             }
           }
           if (!lanes::anyLane(sees)) continue;

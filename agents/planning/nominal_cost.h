@@ -118,7 +118,7 @@ class NominalCost {
   void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Sink&& sink) const;
   // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovarianceLanes.
   template <class Cov>
-  auto stageTrace(const Cov& P) const {
+  [[gnu::always_inline]] auto stageTrace(const Cov& P) const {
     return full_trace_ ? P.trace() : P.positionTrace();
   }
   // evaluate()'s body, compiled once per instruction set.

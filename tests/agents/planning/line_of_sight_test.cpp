@@ -8,6 +8,7 @@
 
 #include "agents/occlusion_map.h"
 #include "agents/planning/nominal_cost.h"
+#include "core/random.h"
 #include "world/world.h"
 
 namespace canopy::agents::planning {
@@ -36,6 +37,49 @@ TEST(LineOfSight, MapAgreesWithHandDerivedCases) {
   EXPECT_TRUE(map.blocksSegment({-6, 4}, {-20, 20}));
   EXPECT_TRUE(map.blocksSegment({5, 0}, {5, 0}));
   EXPECT_FALSE(map.blocksSegment({0, 0}, {0, 0}));
+}
+
+// The grid index only narrows which trees are tried: on random maps (dense and sparse, discs and
+// polygons, small and large crowns, so that cells are narrow or wide) and random segments (long
+// and short, near-horizontal, near-vertical, ending on cell boundaries, reaching past the map),
+// the map answers as trying every tree does.
+TEST(LineOfSight, MapEqualsTryingEveryTree) {
+  RandomStream rng(41, "line-of-sight-index-test");
+  int blocked = 0, clear = 0;
+  for (int map_index = 0; map_index < 40; ++map_index) {
+    std::vector<world::TreeDef> trees;
+    const int count = map_index % 4 == 0 ? 3 : 60 + map_index * 10;
+    const double spread = map_index % 3 == 0 ? 20.0 : 150.0;
+    const double size = map_index % 5 == 0 ? 8.0 : 1.5;
+    for (int k = 0; k < count; ++k) {
+      const Vec2 c(rng.uniform(-spread, spread), rng.uniform(-spread, spread));
+      const double r = rng.uniform(0.2, 1.0) * size;
+      if (k % 3 == 0) {
+        trees.push_back(world::TreeDef::polygon({c + Vec2(-r, -0.5 * r), c + Vec2(r, -0.5 * r),
+                                                  c + Vec2(0.3 * r, r)}));
+      } else {
+        trees.push_back(world::TreeDef::disc(c, r));
+      }
+    }
+    const OcclusionMap map(trees);
+    for (int k = 0; k < 400; ++k) {
+      const double reach = spread * 1.3;
+      const Vec2 a(rng.uniform(-reach, reach), rng.uniform(-reach, reach));
+      Vec2 b(rng.uniform(-reach, reach), rng.uniform(-reach, reach));
+      if (k % 4 == 1) b = a + Vec2(rng.uniform(-15, 15), rng.uniform(-1e-9, 1e-9));  // ~horizontal
+      if (k % 4 == 2) b = a + Vec2(rng.uniform(-1e-9, 1e-9), rng.uniform(-15, 15));  // ~vertical
+      if (k % 8 == 3) b = Vec2(std::round(b.x()), std::round(b.y()));  // on round coordinates
+      bool any = false;
+      for (const world::TreeDef& tree : trees) any = any || world::segmentEntry(tree, a, b) >= 0.0;
+      if ((b - a).squaredNorm() < 1e-12) continue;  // the point test, covered elsewhere
+      ASSERT_EQ(map.blocksSegment(a, b), any)
+          << "map " << map_index << ", segment (" << a.transpose() << ") → (" << b.transpose()
+          << ")";
+      (any ? blocked : clear) += 1;
+    }
+  }
+  EXPECT_GT(blocked, 2000);  // both answers are exercised
+  EXPECT_GT(clear, 2000);
 }
 
 TEST(LineOfSight, PlannerMapEqualsSensingOnAGridOfViewersAndTargets) {
