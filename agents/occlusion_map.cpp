@@ -7,7 +7,7 @@ namespace canopy::agents {
 namespace {
 constexpr int kMaxCells = 1 << 20;  // bounds the index's memory for sparse, wide maps
 constexpr int kMaxSide = 1 << 12;   // cells along either side, so a thin map stays bounded too
-}
+}  // namespace
 
 OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move(trees)) {
   if (trees_.empty()) return;

@@ -4,8 +4,9 @@
 // 0 canopy model, 1 line of sight, 2 three ground robots instead (unicycles with 30 m, 90° sector
 // cameras, line of sight).
 //
-//   build/release/bench/bench_line_of_sight --benchmark_repetitions=10 --benchmark_report_aggregates_only
-//   valgrind --tool=callgrind build/release/bench/bench_line_of_sight --benchmark_min_time=0.2
+//   build/release/bench/bench_line_of_sight --benchmark_repetitions=10
+//   --benchmark_report_aggregates_only valgrind --tool=callgrind
+//   build/release/bench/bench_line_of_sight --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -15,19 +15,27 @@
 
 namespace canopy::lanes {
 
-using V4 = double __attribute__((vector_size(32)));         // four doubles
-using M4 = std::int64_t __attribute__((vector_size(32)));   // per lane: −1 true, 0 false
-using I4 = std::int32_t __attribute__((vector_size(16)));   // four 32-bit integers
+using V4 = double __attribute__((vector_size(32)));        // four doubles
+using M4 = std::int64_t __attribute__((vector_size(32)));  // per lane: −1 true, 0 false
+using I4 = std::int32_t __attribute__((vector_size(16)));  // four 32-bit integers
 
 [[gnu::always_inline]] inline V4 load(const double* p) {
   V4 v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-[[gnu::always_inline]] inline void store(double* p, const V4& v) { std::memcpy(p, &v, sizeof v); }
-[[gnu::always_inline]] inline V4 broadcast(double x) { return V4{} + x; }
-[[gnu::always_inline]] inline bool allLanes(const M4& m) { return (m[0] & m[1] & m[2] & m[3]) != 0; }
-[[gnu::always_inline]] inline bool anyLane(const M4& m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+[[gnu::always_inline]] inline void store(double* p, const V4& v) {
+  std::memcpy(p, &v, sizeof v);
+}
+[[gnu::always_inline]] inline V4 broadcast(double x) {
+  return V4{} + x;
+}
+[[gnu::always_inline]] inline bool allLanes(const M4& m) {
+  return (m[0] & m[1] & m[2] & m[3]) != 0;
+}
+[[gnu::always_inline]] inline bool anyLane(const M4& m) {
+  return (m[0] | m[1] | m[2] | m[3]) != 0;
+}
 /// |x| per lane: the sign bit cleared, as std::abs does.
 [[gnu::always_inline]] inline V4 abs(const V4& x) {
   return (V4)((M4)x & (M4{} + INT64_MAX));
@@ -37,9 +45,4 @@ using I4 = std::int32_t __attribute__((vector_size(16)));   // four 32-bit integ
 [[gnu::always_inline]] inline V4 sqrt(const V4& x) {
   return V4{__builtin_sqrt(x[0]), __builtin_sqrt(x[1]), __builtin_sqrt(x[2]), __builtin_sqrt(x[3])};
 }
-/// x where the mask holds, else y.
-[[gnu::always_inline]] inline V4 select(const M4& mask, const V4& x, const V4& y) {
-  return mask ? x : y;
-}
-
 }  // namespace canopy::lanes

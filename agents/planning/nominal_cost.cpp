@@ -21,7 +21,7 @@ constexpr double kHoverSpeedSquared = 1e-12;  // m²/s², below this the yaw is 
 constexpr double kReachSlack = 1e-6;          // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in a reach mask
 
-constexpr int kLanes = 4;                     // candidates evaluated side by side
+constexpr int kLanes = 4;  // candidates evaluated side by side
 
 // Whether the footprint at p with heading (cos ψ, sin ψ) holds z: its constant part (shape, sizes,
 // the sector's cos(θ/2)) is placed at the origin once per UAV.
@@ -169,7 +169,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       fixed_pos[i * T + t] = p;
       fixed_heading[i * T + t] = heading;
     });
-    for (int lane = 0; lane < kLanes; ++lane) final_position_[lane * n_uavs + i] = fixed_pos[i * T + T - 1];
+    for (int lane = 0; lane < kLanes; ++lane)
+      final_position_[lane * n_uavs + i] = fixed_pos[i * T + T - 1];
   }
 
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
@@ -248,7 +249,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     for (int lane = 0; lane < kLanes; ++lane) {
       trace_final_[kLanes * j + lane] =
           fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
-      in_view_final_[kLanes * j + lane] = fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
+      in_view_final_[kLanes * j + lane] =
+          fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }
   }
   uncovered_.assign(n_targets, 0);
@@ -258,7 +260,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 
 #if defined(__x86_64__)
 [[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
-                                                     std::span<double> costs) {
+                                                       std::span<double> costs) {
   evaluateBody(actions, costs);
 }
 #else  // elsewhere the baseline build only
@@ -312,13 +314,15 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           poses[t].c[lane] = heading.x();
           poses[t].s[lane] = heading.y();
         });
-        final_position_[lane * n_uavs_ + free_index_[f]] = Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
+        final_position_[lane * n_uavs_ + free_index_[f]] =
+            Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
       }
     }
 
     for (const int j : reachable_) {
       const int first_sample = start_[j];
-      CovarianceLanes P = CovarianceLanes::of(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + first_sample]);
+      CovarianceLanes P =
+          CovarianceLanes::of(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + first_sample]);
       M4 seen_final = M4{};
       int m = first_sample / S;         // the action (0-based) of the first sample
       int left = S - first_sample % S;  // samples of it still to come, the first included
@@ -354,7 +358,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           seen |= sees;
         }
         if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
-          store(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + m)], discount_[m] * stageTrace(P));
+          store(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + m)],
+                discount_[m] * stageTrace(P));
           ++m;
           left = S;
         }
@@ -367,7 +372,8 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
     V4 J = V4{};
     for (int j = 0; j < n_targets; ++j) {
       J += cost_start_[j];
-      for (int k = start_[j] / S; k < H; ++k) J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
+      for (int k = start_[j] / S; k < H; ++k)
+        J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
     }
     for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
       costs[first + lane] = addTerminalPenalty(lane, J[lane]);
@@ -384,7 +390,9 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
   // index first; stable insertion sort).
   int count = 0;
   for (int j = 0; j < n_targets; ++j) {
-    if (in_view_final_[kLanes * j + lane] != 0 || occluded_[static_cast<std::size_t>(j) * T + T - 1]) continue;
+    if (in_view_final_[kLanes * j + lane] != 0 ||
+        occluded_[static_cast<std::size_t>(j) * T + T - 1])
+      continue;
     int slot = count++;
     for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
       uncovered_[slot] = uncovered_[slot - 1];

@@ -10,8 +10,8 @@
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
 #include "agents/planning/covariance_lanes.h"
-#include "agents/planning/sensing_lanes.h"
 #include "agents/planning/plan.h"
+#include "agents/planning/sensing_lanes.h"
 #include "agents/planning/symmetric_covariance.h"
 #include "agents/planning/uav_state.h"
 #include "core/cpu.h"
@@ -64,9 +64,9 @@ struct PlanningProblem {
 /// UAVs' paths, footprints and R_fix, which free UAVs can reach each z_{j,m} at all, and each
 /// track's recursion up to the first step a free UAV could see it. evaluate() then runs four
 /// candidate plans side by side, one per lane (covariance_lanes.h, sensing_lanes.h), each with the
-/// bits it has alone. A commanded speed above v_max is clamped, as the world does; a ground robot follows
-/// each action as the world's unicycle (world/unicycle.h: turn toward it, then drive), its sector
-/// turning with it.
+/// bits it has alone. A commanded speed above v_max is clamped, as the world does; a ground robot
+/// follows each action as the world's unicycle (world/unicycle.h: turn toward it, then drive), its
+/// sector turning with it.
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
@@ -156,13 +156,13 @@ class NominalCost {
   std::vector<int> reachable_;      // the tracks with start_ < H·S, in order
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
-  std::vector<PoseLanes> free_pose_;   // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
-  std::vector<Vec2> final_position_;   // m, p_{i,H} of every UAV, at [lane·n_uavs + i]
-  std::vector<double> stage_terms_;    // m², γ^{m−1} tr(P_{j,m}), 4 lanes at [4(j·H + m − 1)]
-  std::vector<double> trace_final_;    // m², tr(P_{j,H}[pos]), 4 lanes at [4j]
+  std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
+  std::vector<Vec2> final_position_;  // m, p_{i,H} of every UAV, at [lane·n_uavs + i]
+  std::vector<double> stage_terms_;   // m², γ^{m−1} tr(P_{j,m}), 4 lanes at [4(j·H + m − 1)]
+  std::vector<double> trace_final_;   // m², tr(P_{j,H}[pos]), 4 lanes at [4j]
   std::vector<std::int64_t> in_view_final_;  // some footprint holds z_{j,H}: −1/0, 4 lanes at [4j]
-  std::vector<int> uncovered_;         // terminal-penalty candidates, then their order
-  std::vector<double> charged_;        // m, D_i
+  std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
+  std::vector<double> charged_;              // m, D_i
 };
 
 /// The cost of a complete joint plan (one plan per UAV) — prepares and evaluates once. For tests,

@@ -73,9 +73,9 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
   };
   repeatSwarmBest();
   random_ = lanes::RandomLanes::from(rng);  // r1, r2 of every iteration
-  const SwarmMove move{count,          options.inertia,    options.c1,      options.c2,
-                       &random_,       own_best_.data(),   swarm_best_.data(), lo_.data(),
-                       hi_.data(),     width_.data(),      x_.data(),       v_.data(),
+  const SwarmMove move{count,        options.inertia,  options.c1,         options.c2,
+                       &random_,     own_best_.data(), swarm_best_.data(), lo_.data(),
+                       hi_.data(),   width_.data(),    x_.data(),          v_.data(),
                        moved_.data()};
   const InstructionSet kernels = instructionSet();
   while (result.iterations < options.max_iterations) {

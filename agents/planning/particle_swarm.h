@@ -8,8 +8,8 @@
 
 #include "agents/config.h"
 #include "agents/planning/swarm_kernels.h"
-#include "core/random_lanes.h"
 #include "core/random.h"
+#include "core/random_lanes.h"
 
 namespace canopy::agents::planning {
 

@@ -39,10 +39,10 @@ struct PoseLanes {
 
 /// Per lane: R(z, p) of sensing::rangeBearingCovariance with p = (x, y).
 [[gnu::always_inline]] inline NoiseLanes rangeBearingCovariance(const Vec2& z, const V4& x,
-                                                               const V4& y,
-                                                               const sensing::SensorQuality& q) {
+                                                                const V4& y,
+                                                                const sensing::SensorQuality& q) {
   const V4 dx = z.x() - x, dy = z.y() - y;
-  const V4 r = lanes::sqrt(dx * dx + dy * dy);  // |z − p|
+  const V4 r = lanes::sqrt(dx * dx + dy * dy);         // |z − p|
   const V4 d = q.r0 < r ? r : lanes::broadcast(q.r0);  // std::max(r0, r)
   const M4 away = r > 0.0;
   const V4 c = away ? dx / r : lanes::broadcast(1.0);  // cos ρ

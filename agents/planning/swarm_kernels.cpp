@@ -18,7 +18,8 @@ using lanes::store;
 using lanes::U4;
 using lanes::V4;
 
-[[gnu::always_inline]] inline void moveOne(const SwarmMove& m, std::size_t i, double r1, double r2) {
+[[gnu::always_inline]] inline void moveOne(const SwarmMove& m, std::size_t i, double r1,
+                                           double r2) {
   m.v[i] = m.w * m.v[i] + m.c1 * r1 * shortestDisplacement(m.own_best[i] - m.x[i], m.width[i]) +
            m.c2 * r2 * shortestDisplacement(m.swarm_best[i] - m.x[i], m.width[i]);
   m.x[i] = wrapPeriodic(m.x[i] + m.v[i], m.lo[i], m.hi[i]);
@@ -82,8 +83,8 @@ using lanes::V4;
   std::size_t k = 0;
   for (; k + 4 <= count; k += 4, in += 8, out += 8) {
     const V4 a = load(in), b = load(in + 4);  // (s0, θ0, s1, θ1), (s2, θ2, s3, θ3)
-    const V4 speed = __builtin_shuffle(a, b, M4{0, 2, 4, 6});
-    const V4 theta = __builtin_shuffle(a, b, M4{1, 3, 5, 7});
+    const V4 speed = __builtin_shufflevector(a, b, 0, 2, 4, 6);
+    const V4 theta = __builtin_shufflevector(a, b, 1, 3, 5, 7);
     in_range &= (theta < kLimit) & (theta > -kLimit);
     const V4 scaled = theta * kTwoOverPi;
     const V4 rounded = scaled >= 0.0 ? scaled + 0.5 : scaled - 0.5;
@@ -108,23 +109,32 @@ using lanes::V4;
     const V4 c = (V4)((M4)first ^ (flip_cos & sign));
     const V4 s = (V4)((M4)second ^ (flip_sin & sign));
     const V4 ax = speed * c, ay = speed * s;
-    store(out, __builtin_shuffle(ax, ay, M4{0, 4, 1, 5}));
-    store(out + 4, __builtin_shuffle(ax, ay, M4{2, 6, 3, 7}));
+    store(out, __builtin_shufflevector(ax, ay, 0, 4, 1, 5));
+    store(out + 4, __builtin_shufflevector(ax, ay, 2, 6, 3, 7));
   }
-  if (!allLanes(in_range)) k = 0;  // a heading out of range (or NaN): all of them by the scalar form
+  if (!allLanes(in_range))
+    k = 0;  // a heading out of range (or NaN): all of them by the scalar form
   for (; k < count; ++k) actions[k] = x[2 * k] * unitHeading(x[2 * k + 1]);
 }
 
 #if defined(__x86_64__)
-[[gnu::target("avx2")]] void moveParticlesAvx2(const SwarmMove& move) { moveParticlesBody(move); }
+[[gnu::target("avx2")]] void moveParticlesAvx2(const SwarmMove& move) {
+  moveParticlesBody(move);
+}
 [[gnu::target("avx2")]] void decodeActionsAvx2(std::span<const double> x, std::span<Vec2> a) {
   decodeActionsBody(x, a);
 }
 #else
-void moveParticlesAvx2(const SwarmMove& move) { moveParticlesBody(move); }
-void decodeActionsAvx2(std::span<const double> x, std::span<Vec2> a) { decodeActionsBody(x, a); }
+void moveParticlesAvx2(const SwarmMove& move) {
+  moveParticlesBody(move);
+}
+void decodeActionsAvx2(std::span<const double> x, std::span<Vec2> a) {
+  decodeActionsBody(x, a);
+}
 #endif
-void moveParticlesBaseline(const SwarmMove& move) { moveParticlesBody(move); }
+void moveParticlesBaseline(const SwarmMove& move) {
+  moveParticlesBody(move);
+}
 void decodeActionsBaseline(std::span<const double> x, std::span<Vec2> a) {
   decodeActionsBody(x, a);
 }

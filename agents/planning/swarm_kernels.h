@@ -19,12 +19,12 @@ namespace canopy::agents::planning {
 /// The swarm's arrays over all particles, particle-major (index i = p·dim + d), so that lo, hi,
 /// width and the swarm's best are repeated once per particle.
 struct SwarmMove {
-  std::size_t count = 0;               // particles × dimension
-  double w = 0.0, c1 = 0.0, c2 = 0.0;  // inertia, cognitive and social weights
+  std::size_t count = 0;                 // particles × dimension
+  double w = 0.0, c1 = 0.0, c2 = 0.0;    // inertia, cognitive and social weights
   lanes::RandomLanes* random = nullptr;  // r1, r2 ~ U[0, 1): advanced by the move
-  const double* own_best = nullptr;    // each particle's best position
-  const double* swarm_best = nullptr;  // the swarm's best, repeated per particle
-  const double* lo = nullptr;          // the box, repeated per particle
+  const double* own_best = nullptr;      // each particle's best position
+  const double* swarm_best = nullptr;    // the swarm's best, repeated per particle
+  const double* lo = nullptr;            // the box, repeated per particle
   const double* hi = nullptr;
   const double* width = nullptr;  // hi − lo
   double* x = nullptr;            // positions, updated
@@ -41,7 +41,8 @@ void moveParticles(const SwarmMove& move, InstructionSet set = instructionSet())
 
 /// a_k = x[2k] · (cos x[2k+1], sin x[2k+1]) for k < actions.size() (x holds 2·actions.size()
 /// values: speed, heading per action), by unitHeading (heading.h).
-void decodeActions(std::span<const double> x, std::span<Vec2> actions, InstructionSet set = instructionSet());
+void decodeActions(std::span<const double> x, std::span<Vec2> actions,
+                   InstructionSet set = instructionSet());
 
 /// The scalar forms the kernels reproduce lane by lane (and use for a remainder shorter than a
 /// vector). The shortest periodic displacement d mod width, in [−width/2, width/2]: both ends of a

@@ -55,8 +55,8 @@ TEST(LineOfSight, MapEqualsTryingEveryTree) {
       const Vec2 c(rng.uniform(-spread, spread), rng.uniform(-spread, spread));
       const double r = rng.uniform(0.2, 1.0) * size;
       if (k % 3 == 0) {
-        trees.push_back(world::TreeDef::polygon({c + Vec2(-r, -0.5 * r), c + Vec2(r, -0.5 * r),
-                                                  c + Vec2(0.3 * r, r)}));
+        trees.push_back(world::TreeDef::polygon(
+            {c + Vec2(-r, -0.5 * r), c + Vec2(r, -0.5 * r), c + Vec2(0.3 * r, r)}));
       } else {
         trees.push_back(world::TreeDef::disc(c, r));
       }
@@ -72,9 +72,8 @@ TEST(LineOfSight, MapEqualsTryingEveryTree) {
       bool any = false;
       for (const world::TreeDef& tree : trees) any = any || world::segmentEntry(tree, a, b) >= 0.0;
       if ((b - a).squaredNorm() < 1e-12) continue;  // the point test, covered elsewhere
-      ASSERT_EQ(map.blocksSegment(a, b), any)
-          << "map " << map_index << ", segment (" << a.transpose() << ") → (" << b.transpose()
-          << ")";
+      ASSERT_EQ(map.blocksSegment(a, b), any) << "map " << map_index << ", segment ("
+                                              << a.transpose() << ") → (" << b.transpose() << ")";
       (any ? blocked : clear) += 1;
     }
   }

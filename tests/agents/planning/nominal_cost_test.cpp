@@ -389,8 +389,8 @@ TEST(NominalCost, BatchesAndInstructionSetsGiveEachCandidateItsBits) {
         std::vector<double> costs(kBatch);
         cost.evaluateWith(set, actions, costs);
         for (int c = 0; c < kBatch; ++c) {
-          const double alone =
-              cost.evaluate(std::span<const Vec2>(actions).subspan(c * per_candidate, per_candidate));
+          const double alone = cost.evaluate(
+              std::span<const Vec2>(actions).subspan(c * per_candidate, per_candidate));
           ASSERT_EQ(std::bit_cast<std::uint64_t>(costs[c]), std::bit_cast<std::uint64_t>(alone))
               << "scene " << scene << ", trial " << trial << ", candidate " << c;
           ++compared;

@@ -12,7 +12,9 @@
 namespace canopy::agents::planning {
 namespace {
 
-std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
+std::uint64_t bitsOf(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
 
 sensing::Footprint footprintAtOrigin(RandomStream& rng, sensing::FootprintShape shape) {
   sensing::FootprintDef def;
@@ -70,8 +72,7 @@ TEST(SensingLanes, RangeBearingNoiseIsTheScalarOnePerLane) {
     const PoseLanes pose = randomPoses(rng, z, trial);
     const NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, quality);
     for (int k = 0; k < 4; ++k) {
-      const Mat2 scalar =
-          sensing::rangeBearingCovariance(z, Vec2(pose.x[k], pose.y[k]), quality);
+      const Mat2 scalar = sensing::rangeBearingCovariance(z, Vec2(pose.x[k], pose.y[k]), quality);
       ASSERT_EQ(bitsOf(R.r00[k]), bitsOf(scalar(0, 0))) << trial << " " << k;
       ASSERT_EQ(bitsOf(R.r01[k]), bitsOf(scalar(0, 1))) << trial << " " << k;
       ASSERT_EQ(bitsOf(R.r10[k]), bitsOf(scalar(1, 0))) << trial << " " << k;

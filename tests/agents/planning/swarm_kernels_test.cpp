@@ -18,7 +18,9 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
+std::uint64_t bitsOf(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
 
 // The kernel sets this CPU can run: baseline always, avx2 where present.
 std::vector<InstructionSet> runnableSets() {
@@ -80,7 +82,7 @@ struct SwarmState {
     }
   }
   SwarmMove move() {
-    return {x.size(), 0.9,        0.5,          0.3,      &random,  own.data(), best.data(),
+    return {x.size(),  0.9,       0.5,          0.3,      &random,  own.data(),  best.data(),
             lo.data(), hi.data(), width.data(), x.data(), v.data(), moved.data()};
   }
 };
@@ -128,8 +130,8 @@ TEST(SwarmKernels, MoveHasTheBitsOfTheScalarUpdate) {
 // is below 0, so it re-enters below 1: 0.755.
 TEST(SwarmKernels, MoveByHand) {
   for (const InstructionSet set : runnableSets()) {
-    std::vector<double> own(4, 0.4), best(4, 0.9), lo(4, 0.0), hi(4, 1.0), width(4, 1.0),
-        x(4, 0.2), v(4, -0.5), moved(4);
+    std::vector<double> own(4, 0.4), best(4, 0.9), lo(4, 0.0), hi(4, 1.0), width(4, 1.0), x(4, 0.2),
+        v(4, -0.5), moved(4);
     lanes::RandomLanes random{};
     for (int lane = 0; lane < 4; ++lane) random.s[0][lane] = std::uint64_t{1} << 63;
     moveParticles({4, 0.9, 0.5, 0.3, &random, own.data(), best.data(), lo.data(), hi.data(),
@@ -185,8 +187,12 @@ TEST(SwarmKernels, DecodeHasTheBitsOfUnitHeading) {
         for (std::size_t k = 0; k < count; ++k) {
           x.push_back(rng.uniform(0.0, 10.0));
           // The box's ends and quarter turns, where the reduction's rounding decides n.
-          const double special[] = {0.0, kTwoPi, std::numbers::pi / 2, std::numbers::pi,
-                                    3 * std::numbers::pi / 2, std::numbers::pi / 4};
+          const double special[] = {0.0,
+                                    kTwoPi,
+                                    std::numbers::pi / 2,
+                                    std::numbers::pi,
+                                    3 * std::numbers::pi / 2,
+                                    std::numbers::pi / 4};
           x.push_back(k < 6 ? special[k] : rng.uniform(0.0, kTwoPi));
         }
         if (out_of_range) x[2 * (count / 2) + 1] = count % 2 ? 3.0e9 : -1.0e12;
