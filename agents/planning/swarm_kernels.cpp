@@ -104,7 +104,7 @@ using lanes::V4;
     const M4 quarter = __builtin_convertvector(n & 3, M4);
     const M4 odd = (quarter & 1) != 0;
     const V4 first = odd ? sin_r : cos_r, second = odd ? cos_r : sin_r;
-    const M4 sign = M4{} + (std::int64_t{1} << 63);
+    const M4 sign = M4{} + INT64_MIN;  // the sign bit
     const M4 flip_cos = (quarter == 1) | (quarter == 2), flip_sin = quarter >= 2;
     const V4 c = (V4)((M4)first ^ (flip_cos & sign));
     const V4 s = (V4)((M4)second ^ (flip_sin & sign));
