@@ -5,11 +5,13 @@
 // SSE2 instructions with the same rounding. No FMA is ever enabled (it would round differently).
 //
 // The helpers take and return vectors, so they are always inlined: no call ever passes a vector,
-// and g++'s note that such a call's ABI would depend on AVX (-Wpsabi) does not apply.
+// and the compilers' note that such a call's ABI would depend on AVX (-Wpsabi) does not apply.
 #include <cstdint>
 #include <cstring>
 
-#if defined(__GNUC__) && !defined(__clang__)
+#if defined(__clang__)
+#pragma clang diagnostic ignored "-Wpsabi"
+#elif defined(__GNUC__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
