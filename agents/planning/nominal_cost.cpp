@@ -23,13 +23,6 @@ constexpr int kMaxFreeAgents = 64;            // one bit per free UAV in a reach
 
 constexpr int kLanes = 4;  // candidates evaluated side by side
 
-// Whether the footprint at p with heading (cos ψ, sin ψ) holds z: its constant part (shape, sizes,
-// the sector's cos(θ/2)) is placed at the origin once per UAV.
-bool footprintHolds(const sensing::Footprint& at_origin, const Vec2& p, const Vec2& heading,
-                    const Vec2& z) {
-  return at_origin.containsFrom(p, heading.x(), heading.y(), z);
-}
-
 }  // namespace
 
 CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
@@ -204,7 +197,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         int seen = 0;
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
-          if (!footprintHolds(fixed_movers[i].at_origin, fixed_pos[im], fixed_heading[im], z) ||
+          // The footprint's constant part (shape, sizes, a sector's cos(θ/2)) placed once per UAV.
+          const Vec2& heading = fixed_heading[im];
+          if (!fixed_movers[i].at_origin.containsFrom(fixed_pos[im], heading.x(), heading.y(), z) ||
               !sightClear(fixed_movers[i], fixed_pos[im], z)) {
             continue;
           }
@@ -341,9 +336,9 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           const int f = std::countr_zero(bits);
           const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
           M4 sees = footprintHolds(free_[f].at_origin, pose, z);
-          if (free_[f].line_of_sight && map_ != nullptr) {  // a map tree on p → z hides z
+          if (free_[f].line_of_sight) {  // tested once here, not per lane in sightClear
             for (int lane = 0; lane < kLanes; ++lane) {
-              if (sees[lane] != 0 && map_->blocksSegment(Vec2(pose.x[lane], pose.y[lane]), z)) {
+              if (sees[lane] != 0 && !sightClear(free_[f], Vec2(pose.x[lane], pose.y[lane]), z)) {
                 sees[lane] = 0;
               }
             }
