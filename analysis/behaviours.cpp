@@ -85,7 +85,7 @@ TargetSet setOf(const std::vector<int>& targets) {
   return s;
 }
 
-bool matches(const std::vector<TargetSet>& M_k, const scenarios::NamedOwnership& state) {
+bool matches(const std::vector<TargetSet>& M_k, const spec::NamedOwnership& state) {
   std::vector<TargetSet> wanted;
   for (const auto& set : state.sets) wanted.push_back(setOf(set));
   if (wanted.size() != M_k.size()) return false;
@@ -99,8 +99,8 @@ bool matches(const std::vector<TargetSet>& M_k, const scenarios::NamedOwnership&
 }  // namespace
 
 std::string ownershipState(const std::vector<TargetSet>& M_k,
-                           const std::vector<scenarios::NamedOwnership>& named, int targets) {
-  for (const scenarios::NamedOwnership& state : named) {
+                           const std::vector<spec::NamedOwnership>& named, int targets) {
+  for (const spec::NamedOwnership& state : named) {
     if (matches(M_k, state)) return state.name;
   }
   TargetSet owned = 0;

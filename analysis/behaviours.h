@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/spec.h"
+#include "spec/scenario_spec.h"
 
 namespace canopy::analysis {
 
@@ -57,6 +57,6 @@ std::vector<Interval> runsOf(const std::vector<TargetSet>& per_step, int t);
 /// state allows it), else "Miss 1" / "Miss >1" when exactly one / more than one target is owned
 /// by no UAV, else "Other".
 std::string ownershipState(const std::vector<TargetSet>& M_k,
-                           const std::vector<scenarios::NamedOwnership>& named, int targets);
+                           const std::vector<spec::NamedOwnership>& named, int targets);
 
 }  // namespace canopy::analysis

@@ -6,8 +6,8 @@
 namespace canopy::analysis {
 
 const std::vector<DecisionPeriod>& decisionPeriods() {
-  static const std::vector<DecisionPeriod> periods = {
-      {1.0, "decisions every 1 s"}, {0.2, "decisions every 0.2 s step"}};
+  static const std::vector<DecisionPeriod> periods = {{1.0, "decisions every 1 s"},
+                                                      {0.2, "decisions every 0.2 s step"}};
   return periods;
 }
 
@@ -41,13 +41,13 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
                              (row.ownership ? "" : fixed_sma) + "}, \"axes\": [" +
                              (row.ownership ? planners : maps) + "]}";
     experiments.push_back(
-        {name, scenarios::loadSweepText(text, name + ".json"), row.ownership, {}});
+        {name, experiments::loadSweepText(text, name + ".json"), row.ownership, {}});
   }
   return experiments;
 }
 
 std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
-  const std::filesystem::path dir = scenarios::libraryDir().parent_path() / "sweeps";
+  const std::filesystem::path dir = spec::libraryDir().parent_path() / "sweeps";
   std::vector<Experiment> studies;
   struct Study {
     const char* name;
@@ -56,13 +56,13 @@ std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
   };
   // je_reaction: coverage of I in the 0.6 s before it hides, the paper's a-priori reaction lead
   // (1.6 s against 2.2 s).
-  for (const Study& s : {Study{"ra_distance_horizon", true, {}},
-                         Study{"je_occlusion_spacing", false, {}},
-                         Study{"je_reaction", false, {"", 0.6}}}) {
-    const scenarios::SweepSpec sweep =
-        scenarios::loadSweep((dir / (std::string(s.name) + ".json")).string());
+  for (const Study& s :
+       {Study{"ra_distance_horizon", true, {}}, Study{"je_occlusion_spacing", false, {}},
+        Study{"je_reaction", false, {"", 0.6}}}) {
+    const experiments::SweepSpec sweep =
+        experiments::loadSweep((dir / (std::string(s.name) + ".json")).string());
     studies.push_back(
-        {s.name, scenarios::withTrialsAndSeed(sweep, trials, seed), s.ownership, s.maps});
+        {s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership, s.maps});
   }
   return studies;
 }

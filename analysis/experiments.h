@@ -6,14 +6,14 @@
 #include <vector>
 
 #include "analysis/sweep_analysis.h"
-#include "scenarios/sweep.h"
+#include "experiments/sweep.h"
 
 namespace canopy::analysis {
 
 /// One row group of the paper's table.
 struct Experiment {
   std::string scenario;  // library name; also the sweep's name and directory
-  scenarios::SweepSpec sweep;
+  experiments::SweepSpec sweep;
   bool ownership = false;  // analysed by ownership (TH, RA) or by occlusion (JE, OS)
   HeatmapRequest maps;     // what its sensitivity maps show (default: M* or hidden coverage)
 };
@@ -49,8 +49,8 @@ const std::vector<PaperOwnership>& paperOwnership();
 /// What the paper reports for Joint Effect (Fig. 5): I is hidden from 2.2 s to 5.0 s; the
 /// coverage of I changes at about 1.6 s with the a-priori map and at about 2.2 s with the dynamic
 /// map ("a notable change delay at the blue line of 1.6 ∼ 2.2 second").
-inline constexpr double kJointEffectHiding = 2.2;      // s
-inline constexpr double kPaperReactionAPriori = 1.6;   // s
-inline constexpr double kPaperReactionDynamic = 2.2;   // s
+inline constexpr double kJointEffectHiding = 2.2;     // s
+inline constexpr double kPaperReactionAPriori = 1.6;  // s
+inline constexpr double kPaperReactionDynamic = 2.2;  // s
 
 }  // namespace canopy::analysis

@@ -9,7 +9,7 @@
 
 #include "analysis/figure_png.h"
 #include "core/text_file.h"
-#include "scenarios/error.h"
+#include "spec/error.h"
 
 namespace canopy::analysis {
 namespace {
@@ -22,7 +22,7 @@ std::optional<double> number(const std::string& json) {
   return value;
 }
 
-bool numeric(const scenarios::SweepAxis& axis) {
+bool numeric(const experiments::SweepAxis& axis) {
   return !axis.values.empty() && std::all_of(axis.values.begin(), axis.values.end(),
                                              [](const std::string& v) { return number(v); });
 }
@@ -46,7 +46,7 @@ std::vector<std::string> byNumericValue(std::vector<std::string> values) {
 }
 
 std::optional<HeatmapCell> cellOf(const ConfigStatistics& s, const HeatmapMetric& metric,
-                                  const scenarios::ScenarioSpec& spec) {
+                                  const spec::ScenarioSpec& spec) {
   HeatmapCell cell;
   cell.trials = s.trials;
   if (!metric.state.empty()) {
@@ -109,7 +109,7 @@ std::optional<HeatmapMetric> heatmapMetric(const SweepAnalysis& analysis,
     if (std::find(states.begin(), states.end(), state) == states.end()) {
       std::string known;
       for (const std::string& s : states) known += (known.empty() ? "" : ", ") + s;
-      throw scenarios::ScenarioError(
+      throw spec::ScenarioError(
           analysis.dir.string(), "--state",
           "expected one of the ownership states " + known + ", got \"" + state + "\"");
     }
@@ -122,8 +122,8 @@ std::optional<HeatmapMetric> heatmapMetric(const SweepAnalysis& analysis,
   for (const auto& spec : analysis.specs) uavs = std::max(uavs, spec.uavs.size());
   if (request.before_hiding_s > 0.0) {
     if (!occlusions)
-      throw scenarios::ScenarioError(analysis.dir.string(), "--before-hiding",
-                                     "expected a sweep whose targets are hidden at some step");
+      throw spec::ScenarioError(analysis.dir.string(), "--before-hiding",
+                                "expected a sweep whose targets are hidden at some step");
     return HeatmapMetric{"", request.before_hiding_s,
                          "mean footprints on the occluded target in the " +
                              formatted(request.before_hiding_s) + " s before it is hidden",
@@ -143,8 +143,8 @@ std::vector<Heatmap> sensitivityMaps(const SweepAnalysis& analysis, const Heatma
     if (numeric(analysis.axes[a])) numeric_axes.push_back(a);
   }
   if (numeric_axes.size() < 2) return {};
-  const scenarios::SweepAxis& x_axis = analysis.axes[numeric_axes[0]];
-  const scenarios::SweepAxis& y_axis = analysis.axes[numeric_axes[1]];
+  const experiments::SweepAxis& x_axis = analysis.axes[numeric_axes[0]];
+  const experiments::SweepAxis& y_axis = analysis.axes[numeric_axes[1]];
   std::vector<Heatmap> maps;
   for (std::size_t c = 0; c < analysis.configs.size(); ++c) {
     const ConfigStatistics& s = analysis.configs[c];

@@ -7,24 +7,24 @@
 #include "analysis/plots.h"
 #include "core/output_file.h"
 #include "core/text_file.h"
-#include "scenarios/loader.h"
-#include "scenarios/sweep.h"
+#include "experiments/sweep.h"
+#include "spec/loader.h"
 
 namespace canopy::analysis {
 namespace fs = std::filesystem;
 
-SweepAnalysis analyseSweep(const fs::path& sweep_dir, const scenarios::LoadOptions& load) {
-  const scenarios::SweepResults results = scenarios::loadSweepResults(sweep_dir, load);
+SweepAnalysis analyseSweep(const fs::path& sweep_dir, const spec::LoadOptions& load) {
+  const experiments::SweepResults results = experiments::loadSweepResults(sweep_dir, load);
   SweepAnalysis analysis;
   analysis.name = results.sweep.name;
   analysis.dir = sweep_dir;
   analysis.axes = results.sweep.axes;
   for (std::size_t c = 0; c < results.configs.size(); ++c) {
     if (results.trials[c].empty()) continue;
-    const scenarios::SweepConfig& config = results.configs[c];
-    scenarios::LoadOptions config_load = load;
+    const experiments::SweepConfig& config = results.configs[c];
+    spec::LoadOptions config_load = load;
     config_load.overrides = config.overrides;
-    analysis.specs.push_back(scenarios::loadScenario(results.sweep.scenario, config_load));
+    analysis.specs.push_back(spec::loadScenario(results.sweep.scenario, config_load));
     analysis.configs.push_back(
         summarise(results.trials[c], analysis.specs.back(), config.id, config.overrides));
     analysis.configs.back().point = config.point;
@@ -84,7 +84,7 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 
   for (std::size_t c = 0; c < analysis.configs.size(); ++c) {
     const ConfigStatistics& s = analysis.configs[c];
-    const scenarios::ScenarioSpec& spec = analysis.specs[c];
+    const spec::ScenarioSpec& spec = analysis.specs[c];
     const std::string id = quoted(s.id);
     const std::size_t named = spec.analysis.states.size();
     for (int col = 0; col < 5; ++col) {

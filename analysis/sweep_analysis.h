@@ -6,23 +6,23 @@
 #include <vector>
 
 #include "analysis/sweep_statistics.h"
-#include "scenarios/spec.h"
-#include "scenarios/sweep.h"
+#include "experiments/sweep.h"
+#include "spec/scenario_spec.h"
 
 namespace canopy::analysis {
 
 struct SweepAnalysis {
-  std::string name;                            // the sweep's name
-  std::filesystem::path dir;                   // the sweep directory it was read from
-  std::vector<scenarios::SweepAxis> axes;      // the sweep's axes
-  std::vector<scenarios::ScenarioSpec> specs;  // per configuration
+  std::string name;                          // the sweep's name
+  std::filesystem::path dir;                 // the sweep directory it was read from
+  std::vector<experiments::SweepAxis> axes;  // the sweep's axes
+  std::vector<spec::ScenarioSpec> specs;     // per configuration
   std::vector<ConfigStatistics> configs;  // per configuration, in sweep order (those with trials)
 };
 
 /// Loads every finished trial of the sweep in `sweep_dir` and summarises each configuration.
 /// Throws ScenarioError when the directory is not a sweep or a trial file is malformed.
 SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir,
-                           const scenarios::LoadOptions& load = {});
+                           const spec::LoadOptions& load = {});
 
 /// Writes the CSV tables behind every figure into out_dir. Every proportion has its 95 % Wilson
 /// interval (_low, _high) and every mean over trials its 95 % Student-t interval (±inf with a

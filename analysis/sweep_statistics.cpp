@@ -65,8 +65,8 @@ int firstBelow(const std::vector<double>& curve, double threshold, int from) {
   return -1;
 }
 
-ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
-                           const scenarios::ScenarioSpec& spec, const std::string& id,
+ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
+                           const spec::ScenarioSpec& spec, const std::string& id,
                            const std::vector<std::string>& overrides) {
   ConfigStatistics stats;
   stats.id = id;
@@ -94,7 +94,7 @@ ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
   std::vector<std::vector<SampleMoments>> coverage(targets, std::vector<SampleMoments>(steps));
   std::vector<SampleMoments> ospa(steps), trace(steps);
 
-  for (const scenarios::TrialResult& trial : trials) {
+  for (const experiments::TrialResult& trial : trials) {
     const TrialBehaviour b = analyseTrial(trial, spec);
     std::array<int, 5>& columns = stats.trial_states.emplace_back();
     for (int c = 0; c < 5; ++c) {

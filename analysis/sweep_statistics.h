@@ -9,8 +9,8 @@
 
 #include "analysis/intervals.h"
 #include "analysis/trial_behaviour.h"
-#include "scenarios/spec.h"
-#include "scenarios/trial.h"
+#include "experiments/trial.h"
+#include "spec/scenario_spec.h"
 
 namespace canopy::analysis {
 
@@ -77,8 +77,8 @@ struct ConfigStatistics {
 };
 
 /// trials: all of one configuration (at least one); spec: that configuration's scenario.
-ConfigStatistics summarise(const std::vector<scenarios::TrialResult>& trials,
-                           const scenarios::ScenarioSpec& spec, const std::string& id,
+ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
+                           const spec::ScenarioSpec& spec, const std::string& id,
                            const std::vector<std::string>& overrides);
 
 /// The first step ≥ from at which curve[k] < threshold, or −1.

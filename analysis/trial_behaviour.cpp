@@ -14,7 +14,7 @@ std::array<int, 5> sankeyColumns(int last_step) {
 
 namespace {
 
-int hidingTree(const scenarios::ScenarioSpec& spec, int target, int step) {
+int hidingTree(const spec::ScenarioSpec& spec, int target, int step) {
   const Vec2 p = spec.targets[target].path.positionAt(step * spec.dt);
   for (int w = 0; w < static_cast<int>(spec.trees.size()); ++w) {
     if (world::strictlyInside(spec.trees[w], p)) return w;
@@ -24,8 +24,7 @@ int hidingTree(const scenarios::ScenarioSpec& spec, int target, int step) {
 
 }  // namespace
 
-TrialBehaviour analyseTrial(const scenarios::TrialResult& trial,
-                            const scenarios::ScenarioSpec& spec) {
+TrialBehaviour analyseTrial(const experiments::TrialResult& trial, const spec::ScenarioSpec& spec) {
   TrialBehaviour out;
   const int K = trial.steps() - 1;
   const SetHistory M = mOwnership(trial.visible, spec.analysis.m);

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "analysis/behaviours.h"
-#include "scenarios/spec.h"
-#include "scenarios/trial.h"
+#include "experiments/trial.h"
+#include "spec/scenario_spec.h"
 
 namespace canopy::analysis {
 
@@ -36,7 +36,6 @@ struct TrialBehaviour {
 
 /// m, the named states and the Occlusion_Aware margin h (s, rounded to steps, shortened where
 /// the trial's start or end cuts it) come from spec.analysis; the hiding tree from spec.
-TrialBehaviour analyseTrial(const scenarios::TrialResult& trial,
-                            const scenarios::ScenarioSpec& spec);
+TrialBehaviour analyseTrial(const experiments::TrialResult& trial, const spec::ScenarioSpec& spec);
 
 }  // namespace canopy::analysis

@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "core/printable.h"
-#include "scenarios/error.h"
+#include "spec/error.h"
 
 namespace canopy::app {
 
 void usageError(const std::string& what, const std::string& message) {
-  throw scenarios::ScenarioError("command line", what, message);
+  throw spec::ScenarioError("command line", what, message);
 }
 
 Args::Args(int argc, char** argv, int first) : args_(argv, argv + argc), next_(first) {}
@@ -97,7 +97,7 @@ std::string Args::joined() const {
   return text;
 }
 
-bool takeLoadOption(Args& args, const std::string& arg, scenarios::LoadOptions& load) {
+bool takeLoadOption(Args& args, const std::string& arg, spec::LoadOptions& load) {
   if (arg == "--budget") {
     load.budget_scale = args.doubleValue(arg);
     if (!(load.budget_scale > 0.0) || load.budget_scale > 1e12)

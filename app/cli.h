@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/types.h"
-#include "scenarios/loader.h"
+#include "spec/loader.h"
 
 namespace canopy::app {
 
@@ -51,7 +51,7 @@ class Args {
 /// The options shared by every command that loads scenarios: `--budget K` (every work limit of
 /// scenarios/budget.h times K) and `--allow-path DIR` (includes and track files may also be read
 /// from DIR). Takes its value and returns true when `arg` is one of them.
-bool takeLoadOption(Args& args, const std::string& arg, scenarios::LoadOptions& load);
+bool takeLoadOption(Args& args, const std::string& arg, spec::LoadOptions& load);
 
 /// A usage error naming `source` (the option) when `dir` cannot be an output directory: it exists
 /// and is not a directory (a link to one is fine), or one of its parents is not a directory.

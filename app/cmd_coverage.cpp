@@ -7,17 +7,17 @@
 
 #include "app/commands.h"
 #include "app/help.h"
-#include "app/run_coverage.h"
 #include "core/printable.h"
 #include "core/text_file.h"
 #include "render/coverage_check.h"
-#include "scenarios/error.h"
+#include "render/run_coverage.h"
+#include "spec/error.h"
 
 namespace canopy::app {
 namespace {
 
 namespace fs = std::filesystem;
-using scenarios::ScenarioError;
+using spec::ScenarioError;
 
 int check(const std::string& csv, const std::string& golden_path, double tolerance) {
   std::error_code error;
@@ -69,7 +69,7 @@ int coverageCommand(Args& args) {
   if (run_dir.empty())
     usageError("coverage", "expected RUN_DIR, the --out directory of `canopy run`");
   if (tolerance && golden.empty()) usageError("--tolerance", "only applies with --check");
-  const std::string csv = coverageCsvOfRun(run_dir, size);
+  const std::string csv = render::coverageCsvOfRun(run_dir, size);
   if (!golden.empty())
     return check(csv, golden, tolerance.value_or(render::kDefaultCoverageTolerance));
   std::fputs(csv.c_str(), stdout);

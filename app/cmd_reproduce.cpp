@@ -7,10 +7,10 @@
 #include "analysis/report.h"
 #include "app/commands.h"
 #include "app/help.h"
-#include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "core/text_file.h"
+#include "experiments/sweep_mpi.h"
 
 namespace canopy::app {
 
@@ -37,7 +37,7 @@ int reproduceCommand(Args& args) {
     }
   }
   if (out.empty()) usageError("reproduce", "expected --out DIR");
-  const bool analyses = !mpi || (mpiAvailable() && mpiWorld().rank == 0);
+  const bool analyses = !mpi || (experiments::mpiAvailable() && experiments::mpiWorld().rank == 0);
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::ExperimentResult> results;
   int ran = 0;
@@ -60,13 +60,13 @@ int reproduceCommand(Args& args) {
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
   const std::vector<analysis::ExperimentResult> studies =
       runAll(analysis::sensitivityStudies(std::max(1, trials / 2), seed));
-  if (mpi) ran = sumOverRanks(ran);  // the trials every rank ran now
+  if (mpi) ran = experiments::sumOverRanks(ran);  // the trials every rank ran now
   if (!analyses) return kExitOk;
   analysis::ReportContext context;
   context.trials = trials;
   context.seed = seed;
   context.jobs = jobs;
-  context.ranks = mpi ? mpiWorld().size : 1;
+  context.ranks = mpi ? experiments::mpiWorld().size : 1;
   context.trials_run = ran;
   context.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

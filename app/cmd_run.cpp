@@ -5,16 +5,16 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/frame_view.h"
 #include "app/help.h"
-#include "app/frame_observer.h"
-#include "app/run_report.h"
 #include "core/output_file.h"
 #include "core/printable.h"
+#include "render/frame_observer.h"
+#include "render/frame_view.h"
 #include "render/frame_writer.h"
 #include "render/video.h"
-#include "scenarios/loader.h"
-#include "scenarios/run.h"
+#include "sim/run.h"
+#include "sim/run_report.h"
+#include "spec/loader.h"
 
 namespace canopy::app {
 namespace {
@@ -40,7 +40,7 @@ render::ImageSize imageSizeValue(Args& args, const std::string& name) {
 int runCommand(Args& args) {
   std::string scenario;
   std::string out_dir;
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   bool frames = false, video = false, json = false;
   std::optional<int> every;
   std::optional<double> fps;
@@ -91,30 +91,31 @@ int runCommand(Args& args) {
     return kExitFailure;
   }
   if (scenario.empty()) scenario = kDefaultScenario;
-  const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
+  const spec::ScenarioSpec spec = spec::loadScenario(scenario, load);
   if (out_dir.empty()) {
     // The scenario's name is the file's text: one safe component, so it stays under out/.
     out_dir = "out/" + safeFileName(spec.name);
     checkOutputDir(out_dir, "--out (default, from the scenario's name)");
   }
 
-  scenarios::RunOptions options;
+  sim::RunOptions options;
   options.out_dir = out_dir;
   options.command_line = args.joined();
   // Without --frames nothing of the renderer is made, so no GL context is ever created.
   std::optional<render::FrameWriter> writer;
-  std::optional<FrameObserver> frame_observer;
+  std::optional<render::FrameObserver> frame_observer;
   if (frames) {
     render::FrameOptions frame_options;
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = every.value_or(1);
     frame_options.size = size.value_or(render::ImageSize{});
-    writer.emplace(sceneModel(spec, viewFor(view.value_or("action"), spec)), frame_options);
+    writer.emplace(render::sceneModel(spec, render::viewFor(view.value_or("action"), spec)),
+                   frame_options);
     frame_observer.emplace(*writer);
     options.observers.push_back(&*frame_observer);
   }
-  const scenarios::RunResult result = scenarios::runScenario(spec, options);
-  for (const std::string& warning : runWarnings(result.summary_json))
+  const sim::RunResult result = sim::runScenario(spec, options);
+  for (const std::string& warning : sim::runWarnings(result.summary_json))
     std::fprintf(stderr, "canopy: warning: %s\n", printable(warning).c_str());
   if (json) {
     // JSON escapes C0 controls but passes DEL and C1 in names through: printed line by line.
@@ -126,7 +127,7 @@ int runCommand(Args& args) {
         "%s: %d steps in %.3f s → %s/ (manifest.json, record.jsonl, timings.jsonl, "
         "summary.json)\n%s",
         printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
-        printable(out_dir).c_str(), runTable(result.summary_json).c_str());
+        printable(out_dir).c_str(), sim::runTable(result.summary_json).c_str());
   }
   if (!writer) return kExitOk;
 

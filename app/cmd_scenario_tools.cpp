@@ -5,16 +5,16 @@
 #include "app/commands.h"
 #include "app/help.h"
 #include "core/printable.h"
-#include "scenarios/budget.h"
-#include "scenarios/error.h"
-#include "scenarios/forest.h"
-#include "scenarios/loader.h"
+#include "spec/budget.h"
+#include "spec/error.h"
+#include "spec/forest.h"
+#include "spec/loader.h"
 
 namespace canopy::app {
 
 int validateCommand(Args& args) {
   std::string scenario;
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--set") {
@@ -29,7 +29,7 @@ int validateCommand(Args& args) {
     }
   }
   if (scenario.empty()) usageError("validate", "expected a scenario to check");
-  const scenarios::ScenarioSpec spec = scenarios::loadScenario(scenario, load);
+  const spec::ScenarioSpec spec = spec::loadScenario(scenario, load);
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps of %g s\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
               spec.trees.size(), spec.steps(), spec.dt);
@@ -38,11 +38,11 @@ int validateCommand(Args& args) {
 
 int listCommand(Args& args) {
   if (!args.done()) usageError(args.peek(), "`canopy list` takes no arguments");
-  for (const std::string& name : scenarios::libraryScenarios()) {
+  for (const std::string& name : spec::libraryScenarios()) {
     std::string description;
     try {
-      description = scenarios::loadScenario(name).description;
-    } catch (const scenarios::ScenarioError& e) {
+      description = spec::loadScenario(name).description;
+    } catch (const spec::ScenarioError& e) {
       description = std::string("(invalid: ") + e.what() + ")";
     }
     std::printf("%-24s %s\n", printable(name, 100).c_str(), printable(description, 300).c_str());
@@ -51,8 +51,8 @@ int listCommand(Args& args) {
 }
 
 int forestCommand(Args& args) {
-  scenarios::PoissonForestDef def;
-  scenarios::LoadOptions load;  // only its --budget
+  spec::PoissonForestDef def;
+  spec::LoadOptions load;  // only its --budget
   bool has_aoi = false, has_lambda = false, has_radius = false;
   while (!args.done()) {
     const std::string arg = args.take();
@@ -90,19 +90,19 @@ int forestCommand(Args& args) {
   if (!has_aoi || !has_lambda || !has_radius) {
     usageError("forest", "expected --aoi, --lambda and --radius");
   }
-  const double limit = scenarios::workLimits(load.budget_scale).trees;
-  const double expected = def.lambda * scenarios::poissonDrawRegion(def).area();
+  const double limit = spec::workLimits(load.budget_scale).trees;
+  const double expected = def.lambda * spec::poissonDrawRegion(def).area();
   if (!(expected <= limit)) {
-    usageError("--lambda", scenarios::budgetMessage(expected, limit,
-                                                    "trees drawn (λ × the region dilated by "
-                                                    "2 r_max + min_gap)"));
+    usageError("--lambda", spec::budgetMessage(expected, limit,
+                                               "trees drawn (λ × the region dilated by "
+                                               "2 r_max + min_gap)"));
   }
   def.max_points = static_cast<std::size_t>(limit);
   using Json = nlohmann::json;
   std::vector<world::TreeDef> trees;
   try {
-    trees = scenarios::poissonForest(def);
-  } catch (const scenarios::ForestTooLarge& e) {
+    trees = spec::poissonForest(def);
+  } catch (const spec::ForestTooLarge& e) {
     usageError("--seed", "this seed's draw needs more than " + std::to_string(e.max_points) + " " +
                              e.what_counted +
                              "; change the seed or raise the limit with --budget K");

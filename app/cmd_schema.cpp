@@ -4,7 +4,7 @@
 
 #include "app/commands.h"
 #include "app/help.h"
-#include "scenarios/schema.h"
+#include "spec/schema.h"
 
 namespace canopy::app {
 
@@ -19,7 +19,7 @@ int schemaCommand(Args& args) {
     }
   }
   const std::string text =
-      markdown ? scenarios::scenarioReferenceMarkdown() : scenarios::scenarioSchemaJson();
+      markdown ? spec::scenarioReferenceMarkdown() : spec::scenarioSchemaJson();
   std::fputs(text.c_str(), stdout);
   return kExitOk;
 }

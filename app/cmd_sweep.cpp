@@ -11,10 +11,10 @@
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
 #include "app/help.h"
-#include "app/sweep_mpi.h"
 #include "core/output_file.h"
 #include "core/printable.h"
-#include "scenarios/sweep.h"
+#include "experiments/sweep.h"
+#include "experiments/sweep_mpi.h"
 
 namespace canopy::app {
 namespace {
@@ -24,7 +24,7 @@ class ProgressBar {
  public:
   explicit ProgressBar(const std::string& label)
       : label_(printable(label, 100)), tty_(isatty(STDERR_FILENO)) {}
-  void update(const scenarios::SweepProgress& p) {
+  void update(const experiments::SweepProgress& p) {
     if (p.total == 0) return;
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -56,35 +56,36 @@ int defaultJobs() {
 
 }  // namespace
 
-int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
-                         int jobs, const scenarios::Shard& shard) {
+int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
+                         int jobs, const experiments::Shard& shard) {
   // runSweep makes DIR/trials/CONFIG/ as it goes and follows what is there: links planted in DIR
   // would lead the trial files out of it. Refused before anything is written.
-  for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
+  for (const experiments::SweepConfig& config : experiments::configurations(sweep))
     checkOutputDirectories(out / "trials" / config.id, out);
   ProgressBar bar(shard.whole() ? sweep.name
                                 : sweep.name + " shard " + std::to_string(shard.index) + "/" +
                                       std::to_string(shard.count));
-  return scenarios::runSweep(
-      sweep, {out, jobs, [&bar](const scenarios::SweepProgress& p) { bar.update(p); }, shard});
+  return experiments::runSweep(
+      sweep, {out, jobs, [&bar](const experiments::SweepProgress& p) { bar.update(p); }, shard});
 }
 
-int runSweepOverMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs) {
-  if (!mpiAvailable())
+int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
+                    int jobs) {
+  if (!experiments::mpiAvailable())
     usageError("--mpi",
                "this canopy was built without MPI: install the Debian packages "
                "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
-  for (const scenarios::SweepConfig& config : scenarios::configurations(sweep))
+  for (const experiments::SweepConfig& config : experiments::configurations(sweep))
     checkOutputDirectories(out / "trials" / config.id, out);
-  return runSweepMpi(sweep, out, jobs);
+  return experiments::runSweepMpi(sweep, out, jobs);
 }
 
 namespace {
 
 // "I/N" with 0 <= I < N.
-scenarios::Shard shardValue(Args& args, const std::string& name) {
+experiments::Shard shardValue(Args& args, const std::string& name) {
   const std::string text = args.value(name);
-  scenarios::Shard shard;
+  experiments::Shard shard;
   const std::size_t slash = text.find('/');
   char* end = nullptr;
   const long index = slash == std::string::npos ? -1 : std::strtol(text.c_str(), &end, 10);
@@ -100,7 +101,7 @@ scenarios::Shard shardValue(Args& args, const std::string& name) {
 }
 
 int statusCommand(const std::string& dir) {
-  const scenarios::SweepStatus status = scenarios::sweepStatus(dir);
+  const experiments::SweepStatus status = experiments::sweepStatus(dir);
   int done = 0;
   for (const auto& [id, finished] : status.finished) {
     std::printf("%-50s %d/%d\n", printable(id, 200).c_str(), finished, status.trials_per_config);
@@ -117,9 +118,9 @@ int statusCommand(const std::string& dir) {
 int sweepCommand(Args& args) {
   std::string file, out, status;
   int jobs = defaultJobs();
-  scenarios::Shard shard;
+  experiments::Shard shard;
   bool mpi = false;
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {
@@ -148,7 +149,7 @@ int sweepCommand(Args& args) {
   }
   if (file.empty() || out.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
   if (mpi && !shard.whole()) usageError("--mpi", "expected either --mpi or --shard, not both");
-  const scenarios::SweepSpec sweep = scenarios::loadSweep(file, load);
+  const experiments::SweepSpec sweep = experiments::loadSweep(file, load);
   const auto start = std::chrono::steady_clock::now();
   const int ran =
       mpi ? runSweepOverMpi(sweep, out, jobs) : runSweepWithProgress(sweep, out, jobs, shard);
@@ -156,8 +157,8 @@ int sweepCommand(Args& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (mpi) {
     std::printf("%s: rank %d of %d ran %d trials in %.1f s with %d jobs → %s/trials/\n",
-                printable(sweep.name, 200).c_str(), mpiWorld().rank, mpiWorld().size, ran, seconds,
-                jobs, printable(out).c_str());
+                printable(sweep.name, 200).c_str(), experiments::mpiWorld().rank,
+                experiments::mpiWorld().size, ran, seconds, jobs, printable(out).c_str());
   } else if (!shard.whole()) {
     std::printf(
         "%s: shard %d/%d ran %d trials in %.1f s with %d jobs → %s/trials/ (run without "
@@ -174,7 +175,7 @@ int sweepCommand(Args& args) {
 int analyzeCommand(Args& args) {
   std::string dir, out;
   analysis::HeatmapRequest maps;
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   while (!args.done()) {
     const std::string arg = args.take();
     if (arg == "--out") {

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "app/cli.h"
+#include "experiments/sweep.h"
 #include "render/viewport.h"
-#include "scenarios/sweep.h"
 
 namespace canopy::app {
 
@@ -15,18 +15,20 @@ int listCommand(Args& args);      // canopy list
 int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
 int coverageCommand(Args& args);  // canopy coverage RUN_DIR [--size WxH]
 int sweepCommand(Args& args);  // canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
-int analyzeCommand(Args& args);    // canopy analyze DIR [--out DIR]
+int analyzeCommand(Args& args);  // canopy analyze DIR [--out DIR]
 int reproduceCommand(Args& args);
-int schemaCommand(Args& args);     // canopy schema [--markdown]  // canopy reproduce --out DIR [--trials N] [--jobs N] [--seed S]
+int schemaCommand(Args& args);  // canopy schema [--markdown]  // canopy reproduce --out DIR
+                                // [--trials N] [--jobs N] [--seed S]
 
 /// The value after option `name` as "WxH" (px); a usage error (exit code 2) otherwise.
 render::ImageSize imageSizeValue(Args& args, const std::string& name);
 /// Runs a sweep (the trials `shard` owns) with a progress bar on stderr; returns the number of
 /// trials run now.
-int runSweepWithProgress(const scenarios::SweepSpec& sweep, const std::filesystem::path& out,
-                         int jobs, const scenarios::Shard& shard = {});
+int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
+                         int jobs, const experiments::Shard& shard = {});
 /// Runs a sweep over the MPI ranks (app/sweep_mpi.h); exit 2 naming --mpi without MPI.
-int runSweepOverMpi(const scenarios::SweepSpec& sweep, const std::filesystem::path& out, int jobs);
+int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
+                    int jobs);
 
 /// The scenario `canopy run` uses when none is given.
 inline constexpr const char* kDefaultScenario = "demo";

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "app/cli.h"
-#include "scenarios/version.h"
+#include "core/version.h"
 
 namespace canopy::app {
 namespace {
@@ -187,8 +187,7 @@ void unknownOption(const std::string& command, const std::string& option) {
 }
 
 const char* versionText() {
-  static const std::string text =
-      std::string("canopy ") + scenarios::kVersion + " (git " + scenarios::kGitCommit + ")";
+  static const std::string text = std::string("canopy ") + kVersion + " (git " + kGitCommit + ")";
   return text.c_str();
 }
 

@@ -12,7 +12,7 @@
 #include "app/help.h"
 #include "core/output_file.h"
 #include "core/printable.h"
-#include "scenarios/error.h"
+#include "spec/error.h"
 
 namespace {
 
@@ -74,10 +74,10 @@ int main(int argc, char** argv) {
   int code = kExitFailure;
   try {
     code = dispatch(argv[1], args);
-  } catch (const canopy::scenarios::ScenarioErrors& e) {
-    for (const canopy::scenarios::ScenarioError& each : e.errors()) report(each.what());
+  } catch (const canopy::spec::ScenarioErrors& e) {
+    for (const canopy::spec::ScenarioError& each : e.errors()) report(each.what());
     return kExitUsage;
-  } catch (const canopy::scenarios::ScenarioError& e) {
+  } catch (const canopy::spec::ScenarioError& e) {
     report(e.what());
     return kExitUsage;
   } catch (const canopy::WriteError& e) {

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "scenarios/forest.h"
 #include "sensing/sensor.h"
+#include "spec/forest.h"
 #include "world/world.h"
 
 namespace {
@@ -46,7 +46,7 @@ world::WorldDef makeWorld(double side, double trees_per_m2) {
       def.targets.push_back({circlingPath(centre, 2 * std::numbers::pi * t / kTargetsPerUav)});
     }
   }
-  def.trees = scenarios::poissonForest({def.aoi, trees_per_m2, {1.0, 3.0}, 1, std::nullopt, SIZE_MAX});
+  def.trees = spec::poissonForest({def.aoi, trees_per_m2, {1.0, 3.0}, 1, std::nullopt, SIZE_MAX});
   return def;
 }
 

@@ -7,17 +7,17 @@
 #include <cstdlib>
 #include <string>
 
-#include "scenarios/loader.h"
-#include "scenarios/simulation.h"
+#include "sim/simulation.h"
+#include "spec/loader.h"
 
 int main(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr, "usage: step_loop SCENARIO RUNS [SEED]\n");
     return 2;
   }
-  canopy::scenarios::LoadOptions options;
+  canopy::spec::LoadOptions options;
   if (argc > 3) options.seed = std::strtoull(argv[3], nullptr, 10);
-  const canopy::scenarios::ScenarioSpec spec = canopy::scenarios::loadScenario(argv[1], options);
+  const canopy::spec::ScenarioSpec spec = canopy::spec::loadScenario(argv[1], options);
   const int runs = std::atoi(argv[2]);
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) {
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   double checksum = 0.0, building = 0.0, stepping = 0.0;
   for (int r = -1; r < runs; ++r) {  // run −1 warms up and is not timed, as in step_loop.py
     const auto t0 = Clock::now();
-    canopy::scenarios::Simulation sim(spec);
+    canopy::sim::Simulation sim(spec);
     checksum += sim.tick().uavs[0].position.x();  // step 0, as canopy.Simulation's constructor
     building += since(t0);
     const auto t1 = Clock::now();

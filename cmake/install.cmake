@@ -1,4 +1,4 @@
-# `cmake --install`: every canopy library as canopy::NAME (canopy::scenarios, canopy::render, …),
+# `cmake --install`: every canopy library as canopy::NAME (canopy::sim, canopy::render, …),
 # their headers under include/canopy/, and a CMake package (canopyConfig.cmake) that finds the
 # same third-party packages the build used. examples/consumer shows a project using it.
 include(GNUInstallDirs)
@@ -10,7 +10,7 @@ get_property(canopy_libraries GLOBAL PROPERTY CANOPY_LIBRARIES)
 set_target_properties(canopy_warnings PROPERTIES EXPORT_NAME warnings)
 install(TARGETS ${canopy_libraries} canopy_warnings EXPORT canopyTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(dir core world sensing agents scenarios render analysis)
+foreach(dir core world sensing agents spec metrics sim experiments render analysis)
   if(EXISTS ${PROJECT_SOURCE_DIR}/${dir})
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/canopy/${dir}
             FILES_MATCHING PATTERN "*.h")

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "scenarios/error.h"
-#include "scenarios/loader.h"
-#include "scenarios/sweep.h"
-#include "scenarios/track_csv.h"
+#include "experiments/sweep.h"
+#include "spec/error.h"
+#include "spec/loader.h"
+#include "spec/track_csv.h"
 
 namespace canopy::fuzz {
 namespace fs = std::filesystem;
@@ -20,7 +20,8 @@ class Sandbox {
   Sandbox() {
     std::string pattern = (fs::temp_directory_path() / "canopy-fuzz-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("cannot create a folder under " + fs::temp_directory_path().string());
+      throw std::runtime_error("cannot create a folder under " +
+                               fs::temp_directory_path().string());
     dir_ = pattern;
     write("track.csv", "t,x,y\n0,-10,-12\n6,-4,-14\n12,2,-10\n");
     write("layouts/grove.json",
@@ -55,7 +56,7 @@ const fs::path& sandboxDir() {
 bool loadScenarioInput(std::string_view data) {
   const std::size_t nul = data.find('\0');
   const std::string text(data.substr(0, nul));
-  scenarios::LoadOptions options;
+  spec::LoadOptions options;
   if (nul != std::string_view::npos) {
     std::string_view rest = data.substr(nul + 1);
     while (!rest.empty()) {
@@ -65,8 +66,8 @@ bool loadScenarioInput(std::string_view data) {
     }
   }
   try {
-    scenarios::loadScenarioText(text, (sandboxDir() / "scenario.json").string(), options);
-  } catch (const scenarios::ScenarioError&) {
+    spec::loadScenarioText(text, (sandboxDir() / "scenario.json").string(), options);
+  } catch (const spec::ScenarioError&) {
     return false;
   }
   return true;
@@ -74,10 +75,10 @@ bool loadScenarioInput(std::string_view data) {
 
 bool loadSweepInput(std::string_view data) {
   try {
-    const scenarios::SweepSpec sweep =
-        scenarios::loadSweepText(std::string(data), (sandboxDir() / "sweep.json").string());
-    scenarios::configurations(sweep);
-  } catch (const scenarios::ScenarioError&) {
+    const experiments::SweepSpec sweep =
+        experiments::loadSweepText(std::string(data), (sandboxDir() / "sweep.json").string());
+    experiments::configurations(sweep);
+  } catch (const spec::ScenarioError&) {
     return false;
   }
   return true;
@@ -85,8 +86,8 @@ bool loadSweepInput(std::string_view data) {
 
 bool parseTrackInput(std::string_view data) {
   try {
-    scenarios::parseTrackCsv(std::string(data), (sandboxDir() / "track.csv").string());
-  } catch (const scenarios::ScenarioError&) {
+    spec::parseTrackCsv(std::string(data), (sandboxDir() / "track.csv").string());
+  } catch (const spec::ScenarioError&) {
     return false;
   }
   return true;

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "python/src/bindings.h"
-#include "scenarios/loader.h"
+#include "spec/loader.h"
 
 namespace py = pybind11;
 
@@ -40,7 +40,7 @@ void bindForest(py::module_& m) {
       "_layout",
       [](const std::string& text, const std::string& name) {
         py::list trees;
-        for (const world::TreeDef& tree : scenarios::layoutFromText(text, name))
+        for (const world::TreeDef& tree : spec::layoutFromText(text, name))
           trees.append(treeDict(tree));
         return trees;
       },

@@ -11,14 +11,14 @@
 #include <vector>
 
 #include "analysis/sweep_analysis.h"
-#include "app/frame_observer.h"
-#include "app/frame_view.h"
+#include "experiments/sweep.h"
 #include "python/src/bindings.h"
 #include "python/src/scenario_source.h"
+#include "render/frame_observer.h"
+#include "render/frame_view.h"
 #include "render/frame_writer.h"
-#include "scenarios/loader.h"
-#include "scenarios/run.h"
-#include "scenarios/sweep.h"
+#include "sim/run.h"
+#include "spec/loader.h"
 
 namespace py = pybind11;
 
@@ -34,34 +34,34 @@ struct FrameRequest {
 std::string runJob(const std::string& text, const std::string& file,
                    const std::vector<std::string>& roots, const std::string& out,
                    std::optional<std::uint64_t> seed, const FrameRequest& frames) {
-  const scenarios::ScenarioSpec spec =
-      scenarios::loadScenarioText(text, file, loadOptions(roots, seed));
-  scenarios::RunOptions options;
+  const spec::ScenarioSpec spec = spec::loadScenarioText(text, file, loadOptions(roots, seed));
+  sim::RunOptions options;
   options.out_dir = out;
   options.command_line = "python: canopy.run(" + spec.name + ")";
   std::optional<render::FrameWriter> writer;
-  std::optional<app::FrameObserver> observer;
+  std::optional<render::FrameObserver> observer;
   if (frames.on) {
     render::FrameOptions frame_options;
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = frames.every;
     frame_options.size = render::ImageSize{frames.width, frames.height};
-    writer.emplace(app::sceneModel(spec, app::viewFor("action", spec)), frame_options);
+    writer.emplace(render::sceneModel(spec, render::viewFor("action", spec)), frame_options);
     observer.emplace(*writer);
     options.observers.push_back(&*observer);
   }
   py::gil_scoped_release release;
-  return scenarios::runScenario(spec, options).summary_json;
+  return sim::runScenario(spec, options).summary_json;
 }
 
 int sweepJob(const std::string& file, const std::string& out, int jobs,
              const std::vector<std::string>& roots) {
-  const scenarios::SweepSpec sweep = scenarios::loadSweep(file, loadOptions(roots, std::nullopt));
-  scenarios::SweepOptions options;
+  const experiments::SweepSpec sweep =
+      experiments::loadSweep(file, loadOptions(roots, std::nullopt));
+  experiments::SweepOptions options;
   options.out_dir = out;
   options.jobs = jobs;
   py::gil_scoped_release release;
-  return scenarios::runSweep(sweep, options);
+  return experiments::runSweep(sweep, options);
 }
 
 void analyzeJob(const std::string& dir, const std::string& out,

@@ -17,7 +17,7 @@ namespace py = pybind11;
 namespace canopy::python {
 namespace {
 
-using scenarios::StepRecord;
+using sim::StepRecord;
 
 const char* bytes(const void* p) {
   return static_cast<const char*>(p);
@@ -235,14 +235,14 @@ void bindReaders(py::class_<PySimulation>& cls) {
          "uav_velocities",
          [](py::handle self) {
            PySimulation& s = simulationOf(self);
-           return uavVec2(s, s.views().uav_velocities, &scenarios::UavRecord::velocity);
+           return uavVec2(s, s.views().uav_velocities, &sim::UavRecord::velocity);
          },
          "(n_uav, 2) m/s flown over the last step (view)")
       .def_property_readonly(
           "uav_commands",
           [](py::handle self) {
             PySimulation& s = simulationOf(self);
-            return uavVec2(s, s.views().uav_commands, &scenarios::UavRecord::command);
+            return uavVec2(s, s.views().uav_commands, &sim::UavRecord::command);
           },
           "(n_uav, 2) m/s, the planner's or path's command for the next step, clamped (view)")
       .def_property_readonly("target_occluded", &targetOccluded,

@@ -10,15 +10,15 @@
 
 #include "python/src/bindings.h"
 #include "python/src/scenario_source.h"
-#include "scenarios/error.h"
-#include "scenarios/loader.h"
+#include "spec/error.h"
+#include "spec/loader.h"
 
 namespace py = pybind11;
 
 namespace canopy::python {
-scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
-  scenarios::ScenarioSpec spec =
-      *scenario.attr("_spec")().cast<std::shared_ptr<const scenarios::ScenarioSpec>>();
+spec::ScenarioSpec specOf(const py::object& scenario, std::optional<std::uint64_t> seed) {
+  spec::ScenarioSpec spec =
+      *scenario.attr("_spec")().cast<std::shared_ptr<const spec::ScenarioSpec>>();
   // The loader's --seed sets spec.seed and the effective configuration's "seed" (a generator's
   // seed is its own field). A Simulation never reads effective_config; run() loads afresh.
   if (seed) spec.seed = *seed;
@@ -27,11 +27,11 @@ scenarios::ScenarioSpec specOf(const py::object& scenario, std::optional<std::ui
 
 void bindScenario(py::module_& m) {
   // canopy.ScenarioError (a ValueError) with the parts of the message as attributes.
-  static py::exception<scenarios::ScenarioError> error(m, "ScenarioError", PyExc_ValueError);
+  static py::exception<spec::ScenarioError> error(m, "ScenarioError", PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
-    } catch (const scenarios::ScenarioError& e) {
+    } catch (const spec::ScenarioError& e) {
       py::object value = py::reinterpret_borrow<py::object>(error.ptr())(e.what());
       value.attr("file") = e.file();
       value.attr("field") = e.field();
@@ -44,10 +44,10 @@ void bindScenario(py::module_& m) {
       "_load",
       [](const std::string& scenario, const std::vector<std::string>& overrides,
          const std::vector<std::string>& allowed_roots) {
-        scenarios::LoadOptions options = loadOptions(allowed_roots, std::nullopt);
+        spec::LoadOptions options = loadOptions(allowed_roots, std::nullopt);
         options.overrides = overrides;
-        const std::string file = scenarios::resolveScenario(scenario).string();
-        const scenarios::ScenarioSpec spec = scenarios::loadScenario(file, options);
+        const std::string file = spec::resolveScenario(scenario).string();
+        const spec::ScenarioSpec spec = spec::loadScenario(file, options);
         return std::make_pair(spec.effective_config, file);
       },
       py::arg("scenario"), py::arg("overrides"), py::arg("allowed_roots"),
@@ -56,24 +56,24 @@ void bindScenario(py::module_& m) {
       "_check",
       [](const std::string& text, const std::string& file,
          const std::vector<std::string>& allowed_roots) {
-        return scenarios::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt))
+        return spec::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt))
             .effective_config;
       },
       py::arg("text"), py::arg("file"), py::arg("allowed_roots"),
       "Validates a configuration; returns it with every default filled in.");
   // The loader's result, opaque to Python: Scenario caches it while its configuration is unchanged,
   // so that a Simulation per episode does not parse and generate the layout again.
-  py::class_<scenarios::ScenarioSpec, std::shared_ptr<scenarios::ScenarioSpec>>(m, "_Spec");
+  py::class_<spec::ScenarioSpec, std::shared_ptr<spec::ScenarioSpec>>(m, "_Spec");
   m.def(
       "_compile",
       [](const std::string& text, const std::string& file,
          const std::vector<std::string>& allowed_roots) {
-        return std::make_shared<scenarios::ScenarioSpec>(
-            scenarios::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt)));
+        return std::make_shared<spec::ScenarioSpec>(
+            spec::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt)));
       },
       py::arg("text"), py::arg("file"), py::arg("allowed_roots"));
-  m.def("library_scenarios", &scenarios::libraryScenarios, "The built-in scenarios' names.");
-  m.def("_library_dir", [] { return scenarios::libraryDir().string(); });
+  m.def("library_scenarios", &spec::libraryScenarios, "The built-in scenarios' names.");
+  m.def("_library_dir", [] { return spec::libraryDir().string(); });
 }
 
 }  // namespace canopy::python

@@ -7,12 +7,12 @@
 #include <string>
 #include <utility>
 
-#include "app/frame_observer.h"
-#include "app/frame_view.h"
 #include "python/src/bindings.h"
 #include "python/src/py_simulation.h"
 #include "python/src/scenario_source.h"
-#include "scenarios/recorder.h"
+#include "render/frame_observer.h"
+#include "render/frame_view.h"
+#include "sim/recorder.h"
 
 namespace py = pybind11;
 
@@ -29,17 +29,17 @@ std::string shapeText(const py::array& a) {
 
 }  // namespace
 
-PySimulation::PySimulation(scenarios::ScenarioSpec spec)
-    : sim_(std::make_shared<scenarios::Simulation>(std::move(spec))) {
+PySimulation::PySimulation(spec::ScenarioSpec spec)
+    : sim_(std::make_shared<sim::Simulation>(std::move(spec))) {
   sim_->tick();  // step 0: the initial sensing, no motion
   keepPlan();
 }
 
 py::object PySimulation::viewOwner() {
   if (!owner_) {
-    auto* share = new std::shared_ptr<scenarios::Simulation>(sim_);
-    owner_ = py::capsule(
-        share, [](void* p) { delete static_cast<std::shared_ptr<scenarios::Simulation>*>(p); });
+    auto* share = new std::shared_ptr<sim::Simulation>(sim_);
+    owner_ = py::capsule(share,
+                         [](void* p) { delete static_cast<std::shared_ptr<sim::Simulation>*>(p); });
   }
   return owner_;
 }
@@ -93,10 +93,11 @@ py::array_t<std::uint8_t> PySimulation::render(int width, int height) {
                           std::to_string(width) + " x " + std::to_string(height));
   }
   const render::ImageSize size{width, height};
-  if (!scene_model_) scene_model_ = app::sceneModel(sim_->spec(), app::viewFor("action", sim_->spec()));
+  if (!scene_model_)
+    scene_model_ = render::sceneModel(sim_->spec(), render::viewFor("action", sim_->spec()));
   if (!canvas_ || canvas_->size() != size) canvas_.emplace(size);
   world::WorldSnapshot truth;
-  scenarios::truthSnapshot(record(), truth);
+  sim::truthSnapshot(record(), truth);
   const render::Scene scene =
       render::buildScene(*scene_model_, truth, record().beliefs, render::TargetTrails{}, size);
   canvas_->draw(scene, image_);
@@ -168,7 +169,7 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
           "record_line",
           [](py::handle self) {
             const PySimulation& s = simulationOf(self);
-            return scenarios::recordLine(s.sim().spec().labels, s.record());
+            return sim::recordLine(s.sim().spec().labels, s.record());
           },
           "The last step as the line record.jsonl holds for it (JSON text).")
       .def(

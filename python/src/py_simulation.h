@@ -1,5 +1,5 @@
 #pragma once
-// canopy.Simulation: a scenarios::Simulation driven from Python. Constructing one runs step 0
+// canopy.Simulation: a sim::Simulation driven from Python. Constructing one runs step 0
 // (the initial sensing), so the readers always have a step to show and every step() advances
 // the world by dt; step(commands) replaces the planner's (or path's) command for that one step
 // (Simulation::commandNext), clamped to each UAV's v_max.
@@ -14,20 +14,20 @@
 #include "render/canvas.h"
 #include "render/image.h"
 #include "render/scene_builder.h"
-#include "scenarios/simulation.h"
+#include "sim/simulation.h"
 
 namespace canopy::python {
 
 class PySimulation {
  public:
-  explicit PySimulation(scenarios::ScenarioSpec spec);
+  explicit PySimulation(spec::ScenarioSpec spec);
 
   /// One step. commands: None, or an (n_uav, 2) array-like of velocities (m/s). Raises
   /// ValueError for a wrong shape or a non-finite command, RuntimeError when done.
   void step(const pybind11::handle& commands);
 
-  const scenarios::Simulation& sim() const { return *sim_; }
-  const scenarios::StepRecord& record() const { return sim_->lastStep(); }
+  const sim::Simulation& sim() const { return *sim_; }
+  const sim::StepRecord& record() const { return sim_->lastStep(); }
   /// The truth views (bind_readers.cpp), made on first use and handed out again every step: the
   /// record's per-UAV and per-target vectors never move, so reading them allocates nothing.
   /// Their owner is a capsule sharing the simulation, not this object, so there is no cycle.
@@ -46,7 +46,7 @@ class PySimulation {
   void applyCommands(const pybind11::handle& commands);
   void keepPlan();
 
-  std::shared_ptr<scenarios::Simulation> sim_;
+  std::shared_ptr<sim::Simulation> sim_;
   pybind11::object owner_;  // capsule holding a share of sim_
   Views views_;
   std::optional<agents::planning::TeamPlan> last_plan_;

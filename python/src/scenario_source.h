@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "scenarios/loader.h"
-#include "scenarios/spec.h"
+#include "spec/loader.h"
+#include "spec/scenario_spec.h"
 
 namespace canopy::python {
 
 /// LoadOptions from Python's arguments: extra readable folders (--allow-path) and the seed.
-inline scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
-                                          std::optional<std::uint64_t> seed) {
-  scenarios::LoadOptions options;
+inline spec::LoadOptions loadOptions(const std::vector<std::string>& allowed_roots,
+                                     std::optional<std::uint64_t> seed) {
+  spec::LoadOptions options;
   options.seed = seed;
   for (const std::string& root : allowed_roots) options.allowed_roots.emplace_back(root);
   return options;
@@ -26,9 +26,9 @@ inline scenarios::LoadOptions loadOptions(const std::vector<std::string>& allowe
 /// The spec of `scenario` (anything with a `_spec()` method returning the loader's result for its
 /// current configuration, cached by python/canopy/scenario.py while the configuration is
 /// unchanged); `seed` replaces the scenario's seed, as `--seed` does. Throws
-/// scenarios::ScenarioError. effective_config keeps the scenario's own seed: for a Simulation,
+/// spec::ScenarioError. effective_config keeps the scenario's own seed: for a Simulation,
 /// which does not read it, not for writing a manifest.
-scenarios::ScenarioSpec specOf(const pybind11::object& scenario,
-                               std::optional<std::uint64_t> seed = std::nullopt);
+spec::ScenarioSpec specOf(const pybind11::object& scenario,
+                          std::optional<std::uint64_t> seed = std::nullopt);
 
 }  // namespace canopy::python

@@ -59,7 +59,7 @@ TEST(OwnershipChange, SharedOwnershipIsNotAChange) {
 }
 
 TEST(OwnershipState, NamedStatesThenMissesThenOther) {
-  const std::vector<scenarios::NamedOwnership> named{
+  const std::vector<spec::NamedOwnership> named{
       {"M0", {{0, 2}, {1, 3}}, false},
       {"M*", {{0, 1}, {2, 3}}, true},
   };

@@ -20,7 +20,7 @@ ConfigStatistics configWith(std::vector<std::string> point) {
 ExperimentResult experiment(const std::string& scenario, std::vector<std::string> targets) {
   ExperimentResult r;
   r.experiment.scenario = scenario;
-  scenarios::ScenarioSpec spec;
+  spec::ScenarioSpec spec;
   for (const std::string& name : targets) spec.targets.push_back({name, 1, {}});
   r.analysis.specs.push_back(spec);
   return r;
@@ -60,14 +60,12 @@ TEST(Findings, ReactionTimesAreTheFirstStepsBelowTheirThresholdsPerDecisionPerio
   const std::vector<int> late = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0};  // from k = 13
   const std::vector<int> never = std::vector<int>(14, 1);
   je.analysis.configs = {
-      withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=1.0"},
-                 {late, late}),
+      withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=1.0"}, {late, late}),
       withTrials({"planner.occlusion_map=\"dynamic\"", "planner.replan_period=1.0"},
                  {never, never}),
       withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=0.2"},
                  {early, early}),
-      withTrials({"planner.occlusion_map=\"dynamic\"", "planner.replan_period=0.2"},
-                 {late, late})};
+      withTrials({"planner.occlusion_map=\"dynamic\"", "planner.replan_period=0.2"}, {late, late})};
   const Findings f = computeFindings({je});
   ASSERT_EQ(f.reaction.size(), 4u);  // per decision period, a-priori then dynamic
   const std::string second = decisionPeriods()[0].label, step = decisionPeriods()[1].label;
@@ -121,8 +119,8 @@ TEST(Findings, FirstOcclusionRankingNeedsStrictOrderAndClearsOnlyOutsideTheInter
       "", {0.77, {0.65, 0.88}}, {0.97, {0.94, 1.01}}, {1.0, {1.0, 1.0}}};
   EXPECT_TRUE(seen.holds());
   EXPECT_FALSE(seen.clear());  // 1.01 is above the no-map value 1.00
-  EXPECT_TRUE((FirstOcclusionRanking{
-      "", {0.5, {0.4, 0.6}}, {0.8, {0.7, 0.9}}, {1.0, {1.0, 1.0}}}.clear()));
+  EXPECT_TRUE(
+      (FirstOcclusionRanking{"", {0.5, {0.4, 0.6}}, {0.8, {0.7, 0.9}}, {1.0, {1.0, 1.0}}}.clear()));
   EXPECT_FALSE((FirstOcclusionRanking{"", {0.8, {}}, {0.8, {}}, {1.0, {}}}.holds()));  // a tie
   EXPECT_FALSE((FirstOcclusionRanking{"", {0.9, {}}, {0.8, {}}, {1.0, {}}}.holds()));
 }

@@ -4,13 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include "scenarios/error.h"
+#include "spec/error.h"
 
 namespace canopy::analysis {
 namespace {
 
-scenarios::ScenarioSpec spec(bool with_m_star) {
-  scenarios::ScenarioSpec s;
+spec::ScenarioSpec spec(bool with_m_star) {
+  spec::ScenarioSpec s;
   s.uavs.resize(2);
   s.targets.resize(2);
   s.targets[0].name = "I";
@@ -189,7 +189,8 @@ TEST(HeatmapMetric, BeforeHidingAveragesTheWindowBeforeTheFirstHiddenStep) {
   const std::optional<HeatmapMetric> metric = heatmapMetric(a, {"", 0.4});
   ASSERT_TRUE(metric);
   EXPECT_EQ(metric->before_hiding_s, 0.4);
-  EXPECT_EQ(metric->label, "mean footprints on the occluded target in the 0.4 s before it is hidden");
+  EXPECT_EQ(metric->label,
+            "mean footprints on the occluded target in the 0.4 s before it is hidden");
   const std::vector<Heatmap> maps = sensitivityMaps(a, *metric);
   const HeatmapCell& cell = *maps[0].cells[0][0];
   EXPECT_DOUBLE_EQ(cell.value.value, 1.0);
@@ -202,7 +203,7 @@ TEST(HeatmapMetric, BeforeHidingAveragesTheWindowBeforeTheFirstHiddenStep) {
   try {
     heatmapMetric(a, {"", 0.6});
     FAIL() << "expected a ScenarioError";
-  } catch (const scenarios::ScenarioError& e) {
+  } catch (const spec::ScenarioError& e) {
     EXPECT_EQ(e.field(), "--before-hiding");
   }
 }
@@ -213,7 +214,7 @@ TEST(HeatmapMetric, AnUnknownStateNamesTheOptionAndTheStatesThereAre) {
   try {
     heatmapMetric(a, {"M9"});
     FAIL() << "expected a ScenarioError";
-  } catch (const scenarios::ScenarioError& e) {
+  } catch (const spec::ScenarioError& e) {
     EXPECT_EQ(e.field(), "--state");
     EXPECT_NE(std::string(e.what()).find("M0, M*, Miss 1, Miss >1, Other"), std::string::npos);
   }

@@ -17,13 +17,13 @@
 
 #include "agents/occlusion_map.h"
 #include "agents/planning/nominal_cost.h"
-#include "scenarios/loader.h"
-#include "scenarios/simulation.h"
+#include "sim/simulation.h"
+#include "spec/loader.h"
 
 namespace canopy::agents::planning {
 namespace {
 
-using scenarios::ScenarioSpec;
+using spec::ScenarioSpec;
 
 // A planning problem on the truth at time t0: every track's mean exact, P = variance · I.
 struct Problem {
@@ -49,13 +49,13 @@ std::string describe(const CostVariant& v) {
 Problem problemAt(const ScenarioSpec& spec, double t0, const std::vector<Vec2>& uav_positions,
                   int horizon, double variance, const CostVariant& variant) {
   Problem p;
-  for (const scenarios::TargetSpec& t : spec.targets) {
+  for (const spec::TargetSpec& t : spec.targets) {
     TargetGaussian g;
     g.x << t.path.positionAt(t0), t.path.velocityAt(t0);
     g.P = variance * Mat4::Identity();
     p.targets.push_back(g);
   }
-  p.uavs = scenarios::teamConfig(spec).uavs;
+  p.uavs = sim::teamConfig(spec).uavs;
   for (std::size_t i = 0; i < p.uavs.size(); ++i) p.uavs[i].position = uav_positions[i];
   p.map = OcclusionMap(spec.trees);  // the a-priori map: the true trees
   PlannerConfig config = spec.planner;
@@ -146,7 +146,7 @@ TEST(PaperScenarioCosts, ResourceAllocationSmallUavCannotCoverIWithinFiveSeconds
   // Closed form: I walks east at 1 m/s from (35, −7); UAV1 starts at (0, 0) with v_max 5 m/s and
   // a 12 × 12 m footprint. To hold I it must reach x ≥ 35 + t − 6, i.e. 5 t ≥ 29 + t at best:
   // t ≥ 7.25 s > H·Δ = 5 s, whatever it does.
-  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation_v1");
+  const ScenarioSpec spec = spec::loadScenario("resource_allocation_v1");
   const double half = 0.5 * spec.uavs[0].sensor.footprint.size.x();
   const double gap = spec.targets[0].path.positionAt(0).x() - spec.uavs[0].body.start.x() - half;
   const double t_min = gap / (spec.uavs[0].body.v_max - spec.targets[0].path.velocityAt(0).x());
@@ -155,7 +155,7 @@ TEST(PaperScenarioCosts, ResourceAllocationSmallUavCannotCoverIWithinFiveSeconds
 }
 
 TEST(PaperScenarioCosts, ResourceAllocationKeepingM0CostsLessThanTheSwap) {
-  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation_v1");
+  const ScenarioSpec spec = spec::loadScenario("resource_allocation_v1");
   for (const CostVariant& variant : kVariants) {
     for (const int horizon : {5, 10}) {
       for (const double variance : {1.0, 0.05}) {
@@ -172,7 +172,7 @@ TEST(PaperScenarioCosts, ResourceAllocationKeepingM0CostsLessThanTheSwap) {
 TEST(PaperScenarioCosts, JointEffectJoiningIIWhileIIsHiddenGainsLessThanTheSwarmTolerance) {
   // The swarm counts an iteration as stalled when the best cost moves by less than
   // ftol·(1 + |J|): a gain below that does not keep it searching, and its warm start follows I.
-  const ScenarioSpec spec = scenarios::loadScenario("joint_effect_v1");
+  const ScenarioSpec spec = spec::loadScenario("joint_effect_v1");
   const double ftol = spec.planner.pso.ftol;
   for (const CostVariant& variant : kVariants) {
     for (const double t0 : {1.0, 2.0}) {
@@ -193,7 +193,7 @@ TEST(PaperScenarioCosts, CalibratedJointEffectPaysForJoiningButOnlyFromThePlanIn
   // the last plan instant before I hides at 2.2 s; leaving in the action from 1 s (a = 1) costs
   // more (with the position trace, more than staying). So the cost does not reward leaving
   // before 2.0 s (report.md's reaction table; the paper: about 1.6 s).
-  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
+  const ScenarioSpec spec = spec::loadScenario("joint_effect");
   const double ftol = spec.planner.pso.ftol;
   for (const CostVariant& variant : kVariants) {
     for (const double variance : {1.0, 0.05}) {
@@ -218,16 +218,17 @@ TEST(PaperScenarioCosts, CalibratedJointEffectDecidedInsideAnActionLeavesIAtOnce
   // staying (the test above). A departure decided before I hides needs a decision between 1.2 s
   // and 2.2 s; with decisions every 1 s the plan from 1.0 s can only drift toward II while
   // keeping I in view at 2.0 s (docs/calibration.md, "Joint Effect: the second search").
-  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
+  const ScenarioSpec spec = spec::loadScenario("joint_effect");
   const double ftol = spec.planner.pso.ftol;
   for (const CostVariant& variant : kVariants) {
     for (const double variance : {1.0, 0.05}) {
       const Costs now = jointEffectCosts(spec, 1.4, variance, variant, 1);
       const Costs at_one = jointEffectCosts(spec, 1.0, variance, variant, 1);
-      std::printf("JE calibrated %s, P = %.2f I: t0 = 1.4 s stay %.4f, join at once %.4f; "
-                  "t0 = 1.0 s stay %.4f, join at once %.4f\n",
-                  describe(variant).c_str(), variance, now.alone, now.cooperative, at_one.alone,
-                  at_one.cooperative);
+      std::printf(
+          "JE calibrated %s, P = %.2f I: t0 = 1.4 s stay %.4f, join at once %.4f; "
+          "t0 = 1.0 s stay %.4f, join at once %.4f\n",
+          describe(variant).c_str(), variance, now.alone, now.cooperative, at_one.alone,
+          at_one.cooperative);
       EXPECT_LT(now.cooperative, now.alone - ftol * (1.0 + now.alone)) << describe(variant);
       EXPECT_GT(at_one.cooperative, at_one.alone) << describe(variant);
     }

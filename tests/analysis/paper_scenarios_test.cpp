@@ -3,21 +3,21 @@
 #include <gtest/gtest.h>
 
 #include "analysis/behaviours.h"
-#include "scenarios/loader.h"
-#include "scenarios/simulation.h"
 #include "sensing/footprint.h"
+#include "sim/simulation.h"
+#include "spec/loader.h"
 
 namespace canopy::analysis {
 namespace {
 
-using scenarios::ScenarioSpec;
+using spec::ScenarioSpec;
 
 // Steps at which each target is strictly under a crown, as second intervals [first, last].
 std::vector<std::vector<Interval>> occludedIntervals(const ScenarioSpec& spec) {
-  scenarios::Simulation sim(spec);
+  sim::Simulation sim(spec);
   std::vector<TargetSet> occluded;
   while (!sim.done()) {
-    const scenarios::StepRecord& step = sim.tick();
+    const sim::StepRecord& step = sim.tick();
     TargetSet s = 0;
     for (int t = 0; t < static_cast<int>(step.targets.size()); ++t) {
       if (step.targets[t].occluded) s |= bit(t);
@@ -32,11 +32,11 @@ std::vector<std::vector<Interval>> occludedIntervals(const ScenarioSpec& spec) {
 
 // M_0 with the UAVs hovering at their starts for the first m steps.
 std::vector<TargetSet> initialOwnership(const ScenarioSpec& spec) {
-  scenarios::Simulation sim(spec);
+  sim::Simulation sim(spec);
   SetHistory visible;
   for (int k = 0; k < spec.analysis.m; ++k) {
     std::vector<TargetSet> row;
-    for (const scenarios::UavRecord& uav : sim.tick().uavs) {
+    for (const sim::UavRecord& uav : sim.tick().uavs) {
       TargetSet s = 0;
       for (const int t : uav.scan.visible) s |= bit(t);
       row.push_back(s);
@@ -51,7 +51,7 @@ sensing::Footprint footprintAt(const ScenarioSpec& spec, int uav, const Vec2& ce
 }
 
 TEST(PaperScenarios, TrajectoryHandoverStartsInM0AndEndsWithPairsApart) {
-  const ScenarioSpec spec = scenarios::loadScenario("trajectory_handover");
+  const ScenarioSpec spec = spec::loadScenario("trajectory_handover");
   EXPECT_EQ(ownershipState(initialOwnership(spec), spec.analysis.states, 4), "M0");
   const double L = spec.duration;
   auto at = [&](int t) { return spec.targets[t].path.positionAt(L); };
@@ -74,7 +74,7 @@ TEST(PaperScenarios, TrajectoryHandoverStartsInM0AndEndsWithPairsApart) {
 
 TEST(PaperScenarios, ResourceAllocationHasEveryPropertyWithATwoMetreMargin) {
   // The calibrated layout (docs/calibration.md): each prose property holds with ≥ 2 m to spare.
-  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation");
+  const ScenarioSpec spec = spec::loadScenario("resource_allocation");
   const std::vector<TargetSet> M0 = initialOwnership(spec);
   EXPECT_EQ(ownershipState(M0, spec.analysis.states, 3), "M0");
   EXPECT_EQ((M0[0] | M0[1]) & bit(2), 0u);  // III seen by nobody
@@ -104,7 +104,7 @@ TEST(PaperScenarios, ResourceAllocationHasEveryPropertyWithATwoMetreMargin) {
 }
 
 TEST(PaperScenarios, ResourceAllocationV1LeavesIIIUnseenButCoverableByTheLargeFootprint) {
-  const ScenarioSpec spec = scenarios::loadScenario("resource_allocation_v1");
+  const ScenarioSpec spec = spec::loadScenario("resource_allocation_v1");
   const std::vector<TargetSet> M0 = initialOwnership(spec);
   EXPECT_EQ(ownershipState(M0, spec.analysis.states, 3), "M0");
   const Vec2 II = spec.targets[1].path.positionAt(0), III = spec.targets[2].path.positionAt(0);
@@ -120,7 +120,7 @@ TEST(PaperScenarios, ResourceAllocationV1LeavesIIIUnseenButCoverableByTheLargeFo
 }
 
 TEST(PaperScenarios, JointEffectHidesIFrom2_2To5_0sWithTheTreeOutsideTheInitialFootprints) {
-  const ScenarioSpec spec = scenarios::loadScenario("joint_effect");
+  const ScenarioSpec spec = spec::loadScenario("joint_effect");
   EXPECT_EQ(ownershipState(initialOwnership(spec), spec.analysis.states, 2), "M0");
   const auto runs = occludedIntervals(spec);
   ASSERT_EQ(runs[0].size(), 1u);
@@ -131,7 +131,8 @@ TEST(PaperScenarios, JointEffectHidesIFrom2_2To5_0sWithTheTreeOutsideTheInitialF
   EXPECT_LE(runs[0][0].first * spec.dt, 2.4 + 1e-9);
   EXPECT_GE(runs[0][0].last * spec.dt, 4.8 - 1e-9);
   EXPECT_LE(runs[0][0].last * spec.dt, 5.0 + 1e-9);
-  const Vec2 entry = spec.targets[0].path.positionAt(2.2), exit = spec.targets[0].path.positionAt(5.0);
+  const Vec2 entry = spec.targets[0].path.positionAt(2.2),
+             exit = spec.targets[0].path.positionAt(5.0);
   EXPECT_NEAR((entry - spec.trees[0].centre).norm(), spec.trees[0].radius, 1e-9);
   EXPECT_NEAR((exit - spec.trees[0].centre).norm(), spec.trees[0].radius, 1e-9);
   EXPECT_TRUE(runs[1].empty());
@@ -156,7 +157,7 @@ TEST(PaperScenarios, JointEffectHidesIFrom2_2To5_0sWithTheTreeOutsideTheInitialF
 }
 
 TEST(PaperScenarios, OcclusionSharingHidesIThenIIIUnderOneTree) {
-  const ScenarioSpec spec = scenarios::loadScenario("occlusion_sharing");
+  const ScenarioSpec spec = spec::loadScenario("occlusion_sharing");
   const std::vector<TargetSet> M0 = initialOwnership(spec);
   EXPECT_EQ(ownershipState(M0, spec.analysis.states, 3), "M0");
   EXPECT_EQ((M0[0] | M0[1]) & bit(1), 0u);  // II owned by nobody

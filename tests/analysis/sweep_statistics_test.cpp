@@ -12,11 +12,11 @@
 namespace canopy::analysis {
 namespace {
 
-constexpr scenarios::TargetBits I = 1, II = 2;
+constexpr experiments::TargetBits I = 1, II = 2;
 
 // Two UAVs, two targets, m = 1 (ownership = visibility): M0 = ({I}, {II}), M* = ({II}, {I}).
-scenarios::ScenarioSpec twoByTwo() {
-  scenarios::ScenarioSpec spec;
+spec::ScenarioSpec twoByTwo() {
+  spec::ScenarioSpec spec;
   spec.dt = 0.2;
   spec.uavs.resize(2);
   spec.uavs[0].name = "UAV1";
@@ -31,9 +31,9 @@ scenarios::ScenarioSpec twoByTwo() {
 
 // A trial of five steps (K = 4, Sankey columns at k = 0..4): visible[k] per UAV, the number of
 // footprints on I per step (UAV1's footprint first), and a constant OSPA.
-scenarios::TrialResult trial(const std::vector<std::vector<scenarios::TargetBits>>& visible,
-                             const std::vector<int>& footprints_on_I, double ospa) {
-  scenarios::TrialResult t;
+experiments::TrialResult trial(const std::vector<std::vector<experiments::TargetBits>>& visible,
+                               const std::vector<int>& footprints_on_I, double ospa) {
+  experiments::TrialResult t;
   t.dt = 0.2;
   t.uavs = 2;
   t.targets = 2;
@@ -45,12 +45,12 @@ scenarios::TrialResult trial(const std::vector<std::vector<scenarios::TargetBits
   return t;
 }
 
-const std::vector<scenarios::TargetBits> kM0{I, II}, kMStar{II, I}, kMiss1{I, 0};
+const std::vector<experiments::TargetBits> kM0{I, II}, kMStar{II, I}, kMiss1{I, 0};
 
 // A: M0, Miss 1, M*, M*, M0 — in M* at L/2 and reached it by then, back to M0 at L.
 // B: M0 throughout.
 // C: M0, M0, M0, M*, M* — reaches M* only after L/2.
-std::vector<scenarios::TrialResult> threeTrials() {
+std::vector<experiments::TrialResult> threeTrials() {
   return {trial({kM0, kMiss1, kMStar, kMStar, kM0}, {1, 1, 1, 1, 1}, 1.0),
           trial({kM0, kM0, kM0, kM0, kM0}, {2, 2, 2, 2, 2}, 2.0),
           trial({kM0, kM0, kM0, kMStar, kMStar}, {0, 0, 1, 2, 0}, 3.0)};

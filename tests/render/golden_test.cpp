@@ -8,12 +8,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "app/run_coverage.h"
 #include "render/coverage.h"
 #include "render/frame_writer.h"
-#include "scenarios/loader.h"
-#include "scenarios/run.h"
-#include "scenarios/simulation.h"
+#include "render/run_coverage.h"
+#include "sim/run.h"
+#include "sim/simulation.h"
+#include "spec/loader.h"
 #include "tests/render/golden_csv.h"
 
 namespace canopy::render {
@@ -46,16 +46,16 @@ std::vector<Case> cases() {
 // The rendered coverage of every step of the run, as `canopy coverage` prints it: the run is
 // written to a temporary folder and read back by the command's own code.
 std::string coverageCsv(const Case& c) {
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   load.overrides = c.overrides;
-  const scenarios::ScenarioSpec spec = scenarios::loadScenario(c.scenario, load);
+  const spec::ScenarioSpec spec = spec::loadScenario(c.scenario, load);
   const fs::path dir =
       fs::temp_directory_path() / ("canopy_golden_" + c.name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  scenarios::RunOptions options;
+  sim::RunOptions options;
   options.out_dir = dir;
-  scenarios::runScenario(spec, options);
-  std::string csv = app::coverageCsvOfRun(dir, c.size);
+  sim::runScenario(spec, options);
+  std::string csv = render::coverageCsvOfRun(dir, c.size);
   fs::remove_all(dir);
   return csv;
 }
@@ -87,41 +87,41 @@ TEST(CoverageGolden, DemoCoversSomethingEveryStep) {
 }
 
 TEST(RunFrames, ARunWithFramesUsesOneGlContextAndARunWithoutNone) {
-  scenarios::LoadOptions load;
+  spec::LoadOptions load;
   load.overrides = {"clock.duration=4"};
-  const scenarios::ScenarioSpec spec = scenarios::loadScenario("demo", load);
+  const spec::ScenarioSpec spec = spec::loadScenario("demo", load);
   const fs::path dir =
       fs::temp_directory_path() / ("canopy_run_frames_" + std::to_string(::getpid()));
   fs::remove_all(dir);
 
   const int before = glContextsCreated();
-  scenarios::RunOptions plain;
+  sim::RunOptions plain;
   plain.out_dir = dir / "plain";
-  scenarios::runScenario(spec, plain);
+  sim::runScenario(spec, plain);
   EXPECT_EQ(glContextsCreated(), before);
 
   SceneModel model;
   model.aoi = spec.aoi;
   model.trees = spec.trees;
-  for (const scenarios::UavSpec& uav : spec.uavs) model.sensors.push_back(uav.sensor);
+  for (const spec::UavSpec& uav : spec.uavs) model.sensors.push_back(uav.sensor);
   FrameOptions frames;
   frames.dir = dir / "framed" / "frames";
   frames.every = 5;
   frames.size = {240, 160};
   FrameWriter writer(model, frames);
-  scenarios::RunOptions framed;
+  sim::RunOptions framed;
   framed.out_dir = dir / "framed";
-  struct Frames final : scenarios::StepObserver {
+  struct Frames final : sim::StepObserver {
     FrameWriter& writer;
     explicit Frames(FrameWriter& w) : writer(w) {}
-    void onStep(const scenarios::StepRecord& record) override {
+    void onStep(const sim::StepRecord& record) override {
       world::WorldSnapshot truth;
-      scenarios::truthSnapshot(record, truth);
+      sim::truthSnapshot(record, truth);
       writer.onStep(truth, record.beliefs);
     }
   } frames_observer(writer);
   framed.observers = {&frames_observer};
-  scenarios::runScenario(spec, framed);
+  sim::runScenario(spec, framed);
   EXPECT_EQ(glContextsCreated(), before + 1);
   EXPECT_EQ(writer.framesWritten(), 5);  // steps 0, 5, 10, 15, 20 of 0..20
   EXPECT_TRUE(fs::exists(dir / "framed" / "frames" / "frame_000020.png"));

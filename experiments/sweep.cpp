@@ -1,0 +1,307 @@
+#include "experiments/sweep.h"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "core/random.h"
+#include "core/text_file.h"
+#include "spec/budget.h"
+#include "spec/json_reader.h"
+
+namespace canopy::experiments {
+namespace fs = std::filesystem;
+using spec::Field;
+using spec::Json;
+using spec::ObjectReader;
+
+namespace {
+
+// "planner.horizon" = 5 → "horizon-5", "planner.algorithm" = "sma" → "algorithm-sma"; characters
+// unsafe in a directory name become '_'.
+std::string slug(const std::string& path, const std::string& value) {
+  const bool quoted = value.size() >= 2 && value.front() == '"' && value.back() == '"';
+  std::string text =
+      path.substr(path.rfind('.') + 1) + "-" + (quoted ? value.substr(1, value.size() - 2) : value);
+  for (char& c : text) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+  }
+  return text;
+}
+
+// The hexadecimal FNV-1a of `text`, for ids and fingerprints.
+std::string hexHash(const std::string& text, int digits) {
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a64(text)));
+  return std::string(hex).substr(16 - digits);
+}
+
+// A value's part of a directory name stays short; a long one is cut and keeps a hash of itself.
+std::string boundedSlug(const std::string& path, const std::string& value) {
+  constexpr std::size_t kMaxSlug = 60;
+  std::string text = slug(path, value);
+  if (text.size() > kMaxSlug) text = text.substr(0, kMaxSlug - 9) + "~" + hexHash(value, 8);
+  return text;
+}
+
+// Each axis once, each of its values once (as JSON values: 1 and 1.0 are the same value).
+void requireDistinct(const Field& axes, const std::vector<SweepAxis>& read) {
+  // A read-only view (no effective-config slot): the fields were recorded when first read.
+  const std::vector<Field> axis_fields =
+      Field(axes.json(), axes.file(), axes.path(), nullptr).elements();
+  for (std::size_t a = 0; a < read.size(); ++a) {
+    for (std::size_t b = 0; b < a; ++b) {
+      if (read[a].path == read[b].path) {
+        axis_fields[a].fail("expected each axis once, \"" + read[a].path + "\" is also axes[" +
+                            std::to_string(b) + "]");
+      }
+    }
+    const Field values = axis_fields[a].object().required("values");
+    const std::vector<Field> value_fields = values.elements();
+    for (std::size_t i = 0; i < value_fields.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (value_fields[i].json() == value_fields[j].json()) {
+          value_fields[i].fail("expected each value once on an axis, this one repeats values[" +
+                               std::to_string(j) + "]");
+        }
+      }
+    }
+  }
+}
+
+void requireFeasibleSweep(const Field& root, const SweepSpec& sweep) {
+  const spec::WorkLimits limits = spec::workLimits(sweep.load.budget_scale);
+  double configurations = 1.0;
+  for (const SweepAxis& axis : sweep.axes)
+    configurations *= static_cast<double>(axis.values.size());
+  if (configurations > limits.sweep_configurations) {
+    throw spec::ScenarioError(
+        root.file(), "axes",
+        spec::budgetMessage(configurations, limits.sweep_configurations,
+                            "configurations (the product of the axes' lengths)"));
+  }
+  // Each configuration holds its own copy of the fixed overrides and of one value per axis, and
+  // later its loaded scenario (a few kB for the library's).
+  double bytes = 4096.0;
+  for (const std::string& fixed : sweep.fixed) bytes += static_cast<double>(fixed.size());
+  for (const SweepAxis& axis : sweep.axes) {
+    std::size_t largest = 0;
+    for (std::size_t v = 0; v < axis.values.size(); ++v) {
+      std::size_t size = axis.path.size() + axis.values[v].size();
+      if (!axis.set.empty()) {
+        for (const std::string& o : axis.set[v]) size += o.size();
+      }
+      largest = std::max(largest, size);
+    }
+    bytes += static_cast<double>(largest);
+  }
+  if (configurations * bytes > limits.sweep_bytes) {
+    throw spec::ScenarioError(
+        root.file(), "axes",
+        spec::budgetMessage(configurations * bytes, limits.sweep_bytes,
+                            "bytes of configurations (configurations × (their "
+                            "overrides' text + 4 kB))"));
+  }
+  if (configurations * sweep.trials > limits.sweep_trials) {
+    throw spec::ScenarioError(
+        root.file(), "trials",
+        spec::budgetMessage(configurations * sweep.trials, limits.sweep_trials,
+                            "trials (configurations × trials)"));
+  }
+}
+
+}  // namespace
+
+SweepSpec loadSweepText(const std::string& text, const std::string& file,
+                        const spec::LoadOptions& load) {
+  Json document = spec::parseJson(text, file);
+  Json effective = Json::object();
+  spec::ObjectReader root = Field(document, file, "", &effective).object();
+  SweepSpec sweep;
+  sweep.load = load;
+  sweep.name = root.string("name", fs::path(file).stem().string());
+  const std::string scenario = root.required("scenario").string();
+  // A file beside the sweep, else a path or library name as given; stored resolved so that
+  // DIR/sweep.json reloads from anywhere.
+  const fs::path beside = fs::path(file).parent_path() / scenario;
+  std::error_code error;
+  sweep.scenario =
+      fs::is_regular_file(beside, error)     ? fs::absolute(beside).lexically_normal().string()
+      : fs::is_regular_file(scenario, error) ? fs::absolute(scenario).lexically_normal().string()
+                                             : scenario;
+  try {
+    spec::resolveScenario(sweep.scenario);
+  } catch (const spec::ScenarioError&) {
+    root.required("scenario")
+        .fail("expected a scenario file or a built-in scenario name, got \"" + scenario + "\"");
+  }
+  effective["scenario"] = sweep.scenario;
+  sweep.trials = root.integer("trials", 1, 1, 1000000);
+  if (auto seed = root.optional("seed")) sweep.seed = seed->unsignedInteger();
+  if (auto set = root.optional("set")) {
+    spec::ObjectReader fixed = set->object();
+    for (const auto& [key, value] : set->json().items()) {
+      fixed.optional(key)->keepAsIs();
+      sweep.fixed.push_back(key + "=" + value.dump());
+    }
+    fixed.finish();
+  }
+  if (auto axes = root.optional("axes")) {
+    for (const Field& element : axes->elements()) {
+      spec::ObjectReader axis_reader = element.object();
+      SweepAxis axis;
+      const auto name = axis_reader.optional("name");
+      axis.path = name ? name->string() : axis_reader.required("path").string();
+      for (const Field& value : axis_reader.required("values").elements(1)) {
+        value.keepAsIs();
+        axis.values.push_back(value.json().dump());
+      }
+      if (name) {
+        const Field groups = axis_reader.required("set");
+        const std::vector<Field> per_value = groups.elements(1);
+        if (per_value.size() != axis.values.size()) {
+          groups.fail("expected one object of overrides per value (" +
+                      std::to_string(axis.values.size()) + "), got " +
+                      std::to_string(per_value.size()));
+        }
+        for (const Field& group : per_value) {
+          spec::ObjectReader group_reader = group.object();
+          std::vector<std::string> overrides;
+          for (const auto& [key, value] : group.json().items()) {
+            group_reader.optional(key)->keepAsIs();
+            overrides.push_back(key + "=" + value.dump());
+          }
+          group_reader.finish();
+          axis.set.push_back(std::move(overrides));
+        }
+      }
+      axis_reader.finish();
+      sweep.axes.push_back(std::move(axis));
+    }
+    requireDistinct(*axes, sweep.axes);
+  }
+  root.finish();
+  requireFeasibleSweep(root.field(), sweep);
+  effective["seed"] = sweep.seed;
+  sweep.effective_json = effective.dump(2);
+  return sweep;
+}
+
+SweepSpec loadSweep(const std::string& path, const spec::LoadOptions& load) {
+  return loadSweepText(spec::readJsonFile(path).dump(), path, load);
+}
+
+SweepSpec withTrialsAndSeed(SweepSpec sweep, int trials, std::uint64_t seed) {
+  Json effective = Json::parse(sweep.effective_json);
+  effective["trials"] = sweep.trials = trials;
+  effective["seed"] = sweep.seed = seed;
+  sweep.effective_json = effective.dump(2);
+  return sweep;
+}
+
+std::vector<SweepConfig> configurations(const SweepSpec& sweep) {
+  std::vector<SweepConfig> configs{{"", sweep.fixed, {}}};
+  for (const SweepAxis& axis : sweep.axes) {
+    std::vector<SweepConfig> next;
+    for (const SweepConfig& config : configs) {
+      for (std::size_t v = 0; v < axis.values.size(); ++v) {
+        const std::string& value = axis.values[v];
+        SweepConfig point = config;
+        point.id += (point.id.empty() ? "" : "_") + boundedSlug(axis.path, value);
+        point.point.push_back(axis.path + "=" + value);
+        if (axis.set.empty()) {
+          point.overrides.push_back(axis.path + "=" + value);
+        } else {
+          point.overrides.insert(point.overrides.end(), axis.set[v].begin(), axis.set[v].end());
+        }
+        next.push_back(std::move(point));
+      }
+    }
+    configs = std::move(next);
+  }
+  if (configs.size() == 1 && configs.front().id.empty()) configs.front().id = "base";
+  // Readable ids can coincide ("a b" and "a_b" both read a_b): those get a hash of their point.
+  std::map<std::string, int> uses;
+  for (const SweepConfig& config : configs) ++uses[config.id];
+  for (SweepConfig& config : configs) {
+    if (uses[config.id] < 2) continue;
+    std::string point;
+    for (const std::string& p : config.point) point += p + "\n";
+    config.id += "~" + hexHash(point, 8);
+  }
+  std::set<std::string> ids;
+  for (const SweepConfig& config : configs) {
+    if (!ids.insert(config.id).second)  // two points whose hashes also coincide
+      throw spec::ScenarioError(sweep.name, "axes", "two configurations share the id " + config.id);
+  }
+  return configs;
+}
+
+std::string scenarioFingerprint(const spec::ScenarioSpec& spec) {
+  return hexHash(spec.effective_config, 16);
+}
+
+std::uint64_t trialSeed(std::uint64_t sweep_seed, int index) {
+  return RandomStream(sweep_seed, "trial-seed", static_cast<std::uint64_t>(index)).nextU64();
+}
+
+fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "trial_%04d.json", index);
+  return out_dir / "trials" / config_id / name;
+}
+
+SweepResults loadSweepResults(const fs::path& out_dir, const spec::LoadOptions& load) {
+  SweepResults results;
+  const fs::path manifest = out_dir / "sweep.json";
+  if (!fs::is_regular_file(manifest)) {
+    throw spec::ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
+  }
+  results.sweep = loadSweepText(readTextFile(manifest).value_or(""), manifest.string(), load);
+  results.configs = configurations(results.sweep);
+  for (const SweepConfig& config : results.configs) {
+    std::vector<TrialResult> trials;
+    for (int t = 0; t < results.sweep.trials; ++t) {
+      const fs::path path = trialPath(out_dir, config.id, t);
+      if (const auto text = readTextFile(path))
+        trials.push_back(trialFromJson(*text, path.string()));
+    }
+    results.trials.push_back(std::move(trials));
+  }
+  return results;
+}
+
+std::string summariseSweep(const SweepResults& results) {
+  Json configs = Json::array();
+  for (std::size_t c = 0; c < results.configs.size(); ++c) {
+    double ospa = 0.0, trace = 0.0, visible = 0.0, samples = 0.0;
+    for (const TrialResult& trial : results.trials[c]) {
+      for (int k = 0; k < trial.steps(); ++k) {
+        TargetBits seen = 0;
+        for (const TargetBits s : trial.visible[k]) seen |= s;
+        ospa += trial.ospa[k];
+        trace += trial.trace[k];
+        visible += trial.targets ? static_cast<double>(std::popcount(seen)) / trial.targets : 0.0;
+        samples += 1.0;
+      }
+    }
+    const double n = std::max(1.0, samples);
+    configs.push_back({{"id", results.configs[c].id},
+                       {"overrides", results.configs[c].overrides},
+                       {"trials", results.trials[c].size()},
+                       {"mean_ospa_m", ospa / n},
+                       {"mean_trace_pos_m2", trace / n},
+                       {"mean_visible_fraction", visible / n}});
+  }
+  return Json{{"sweep", results.sweep.name},
+              {"scenario", results.sweep.scenario},
+              {"trials_per_config", results.sweep.trials},
+              {"configs", configs}}
+             .dump(2) +
+         "\n";
+}
+
+}  // namespace canopy::experiments

@@ -1,0 +1,53 @@
+#pragma once
+// OSPA, the optimal sub-pattern assignment distance between a set of true positions and a set
+// of estimates (Schuhmacher, Vo & Vo 2008), the tracking-quality metric of summary.json, and the
+// assignment it shares with GOSPA (scenarios/gospa.h).
+#include <span>
+#include <vector>
+
+#include "agents/fusion/hungarian.h"
+#include "core/types.h"
+
+namespace canopy::metrics {
+
+/// The cut-off assignment of two point sets, with m ≤ n the sizes of the smaller and the larger:
+///   min_π Σ_{i≤m} min(c, |x_i − y_π(i)|)^p.
+/// OSPA and GOSPA with α = 2 are both read off one solve (with α = 2 an assignment beyond c costs
+/// c^p, the same as leaving both points unassigned, so the cut-off assignment is GOSPA's too).
+class CutoffAssignment {
+ public:
+  CutoffAssignment(double cutoff = 50.0, double order = 2.0) : c_(cutoff), p_(order) {}
+  void solve(std::span<const Vec2> truth, std::span<const Vec2> estimates);
+
+  /// Of the last solve: ( (1/n) · (assignment + c^p · (n − m)) )^{1/p}; 0 when both sets are
+  /// empty and c when exactly one is.
+  double ospa() const;
+  /// Of the last solve: ( assignment + (c^p / 2) · (n − m) )^{1/p}; 0 when both sets are empty.
+  double gospa() const;
+
+ private:
+  double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
+
+  double c_, p_;
+  int m_ = 0, n_ = 0;
+  agents::fusion::Hungarian hungarian_;
+  std::vector<double> cost_;  // row-major m × n, reused
+  std::span<const int> assignment_;
+};
+
+/// OSPA of order p with cut-off c (m), for |X| = m ≤ n = |Y| (else swap):
+///   d = ( (1/n) · ( min_π Σ_{i≤m} min(c, |x_i − y_π(i)|)^p + c^p · (n − m) ) )^{1/p},
+/// 0 when both sets are empty and c when exactly one is.
+class Ospa {
+ public:
+  Ospa(double cutoff = 50.0, double order = 2.0) : assignment_(cutoff, order) {}
+  double operator()(std::span<const Vec2> truth, std::span<const Vec2> estimates) {
+    assignment_.solve(truth, estimates);
+    return assignment_.ospa();
+  }
+
+ private:
+  CutoffAssignment assignment_;
+};
+
+}  // namespace canopy::metrics

@@ -1,0 +1,63 @@
+#include "render/frame_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+#include "core/printable.h"
+#include "sensing/footprint.h"
+#include "spec/error.h"
+
+namespace canopy::render {
+
+Aabb actionBox(const spec::ScenarioSpec& spec) {
+  Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
+  const auto grow = [&](const Vec2& p) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  };
+  const int steps = spec.steps();
+  double reach = 0.0;  // m, how far a footprint reaches from its UAV
+  for (const spec::UavSpec& uav : spec.uavs) {
+    reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
+    grow(uav.body.start);
+    if (!uav.path || spec.planner.algorithm != agents::PlannerAlgorithm::none) continue;
+    for (int k = 0; k < steps; ++k) grow(uav.path->positionAt(k * spec.dt));
+  }
+  for (const spec::TargetSpec& target : spec.targets) {
+    for (int k = 0; k < steps; ++k) grow(target.path.positionAt(k * spec.dt));
+  }
+  if (!lo.allFinite() || !hi.allFinite()) return spec.aoi;
+  lo -= Vec2::Constant(reach);
+  hi += Vec2::Constant(reach);
+  const double pad = std::max(2.0, 0.1 * std::max(hi.x() - lo.x(), hi.y() - lo.y()));
+  // Never beyond the AOI: everything scripted starts and stays inside it.
+  const Vec2 view_lo = (lo - Vec2::Constant(pad)).cwiseMax(spec.aoi.lo);
+  const Vec2 view_hi = (hi + Vec2::Constant(pad)).cwiseMin(spec.aoi.hi);
+  if (!(view_hi.x() > view_lo.x() && view_hi.y() > view_lo.y())) return spec.aoi;
+  return {view_lo, view_hi};
+}
+
+Aabb viewFor(const std::string& text, const spec::ScenarioSpec& spec) {
+  if (text == "aoi") return spec.aoi;
+  if (text == "action") return actionBox(spec);
+  std::vector<double> v;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x)) break;
+    v.push_back(x);
+  }
+  if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) {
+    throw spec::ScenarioError(
+        "command line", "--view",
+        "expected aoi, action or x0,y0,x1,y1 (m) with x1 > x0 and y1 > y0, got '" +
+            printable(text, 100) + "'");
+  }
+  return {Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+}
+
+}  // namespace canopy::render

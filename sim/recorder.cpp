@@ -1,0 +1,276 @@
+#include "sim/recorder.h"
+
+#include <nlohmann/json.hpp>
+
+#include "sim/json_line.h"
+
+namespace canopy::sim {
+namespace {
+
+// Keys are written in the order dump() of a std::map-backed object gives: sorted by byte.
+
+void vec(JsonLine& j, const Vec2& v) {
+  j.beginArray();
+  j.number(v.x());
+  j.number(v.y());
+  j.endArray();
+}
+void sym(JsonLine& j, const Mat2& m) {  // upper triangle
+  j.beginArray();
+  j.number(m(0, 0));
+  j.number(m(0, 1));
+  j.number(m(1, 1));
+  j.endArray();
+}
+template <typename Vector>
+void values(JsonLine& j, const Vector& x) {
+  j.beginArray();
+  for (int r = 0; r < x.size(); ++r) j.number(x(r));
+  j.endArray();
+}
+template <typename Matrix>
+void upperTriangle(JsonLine& j, const Matrix& P) {  // row by row: P00, P01, …, P0n, P11, …
+  j.beginArray();
+  for (int r = 0; r < P.rows(); ++r) {
+    for (int c = r; c < P.cols(); ++c) j.number(P(r, c));
+  }
+  j.endArray();
+}
+void key(JsonLine& j, const agents::TrackKey& k) {
+  j.beginArray();
+  j.integer(k.origin);
+  j.integer(k.serial);
+  j.endArray();
+}
+void integers(JsonLine& j, const std::vector<int>& list) {
+  j.beginArray();
+  for (int i : list) j.integer(i);
+  j.endArray();
+}
+void velocities(JsonLine& j, const agents::planning::Plan& plan) {
+  j.beginArray();
+  for (const Vec2& v : plan.velocities) vec(j, v);
+  j.endArray();
+}
+
+}  // namespace
+
+/// Labels as dump() escapes them, each escaped once, when it is first written (so a label that
+/// dump() would refuse fails the run at the same step as before).
+class RecordLineWriter {
+ public:
+  explicit RecordLineWriter(const std::vector<std::string>& labels)
+      : names_(labels), labels_(labels.size()) {}
+
+  /// Appends the step's line (without the newline) to `out`.
+  void write(const StepRecord& record, std::string& out);
+
+ private:
+  const std::string& label(sensing::LabelId id) {
+    std::optional<std::string>& escaped = labels_.at(static_cast<std::size_t>(id));
+    if (!escaped) escaped = JsonLine::escaped(names_.at(static_cast<std::size_t>(id)));
+    return *escaped;
+  }
+  void belief(JsonLine& j, const agents::AgentBelief& belief);
+  void scan(JsonLine& j, const sensing::Scan& scan);
+
+  std::vector<std::string> names_;                  // the scenario's labels, by LabelId
+  std::vector<std::optional<std::string>> labels_;  // escaped, once written
+  DoubleTextCache numbers_;                         // the text of recent doubles
+};
+
+void RecordLineWriter::belief(JsonLine& j, const agents::AgentBelief& belief) {
+  j.beginObject();
+  j.key("map");
+  j.beginArray();
+  for (const agents::TreeEstimate& t : belief.trees) {
+    j.beginObject();
+    j.key("P");
+    upperTriangle(j, t.belief.P);
+    j.key("key");
+    key(j, t.key);
+    j.key("x");
+    values(j, t.belief.x);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("planned_path");
+  j.beginArray();
+  for (const Vec2& p : belief.planned_path) vec(j, p);
+  j.endArray();
+  j.key("tracks");
+  j.beginArray();
+  for (const agents::TrackEstimate& t : belief.tracks) {
+    j.beginObject();
+    j.key("P");
+    upperTriangle(j, t.belief.P);
+    j.key("key");
+    key(j, t.key);
+    j.key("label");
+    j.escapedString(label(t.label));
+    j.key("x");
+    values(j, t.belief.x);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+void RecordLineWriter::scan(JsonLine& j, const sensing::Scan& scan) {
+  j.beginObject();
+  j.key("in_footprint");
+  integers(j, scan.in_footprint);
+  j.key("obs");
+  j.beginArray();
+  for (const sensing::Observation& o : scan.observations) {
+    j.beginObject();
+    j.key("R");
+    sym(j, o.R);
+    j.key("label");
+    j.escapedString(label(o.label));
+    if (o.label == sensing::kTreeLabel) {
+      j.key("radius");
+      j.number(o.radius);
+    }
+    j.key("truth");
+    j.integer(o.truth);
+    j.key("z");
+    vec(j, o.z);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("uav");
+  j.integer(scan.uav);
+  j.key("visible");
+  integers(j, scan.visible);
+  j.endObject();
+}
+
+namespace {
+
+void plan(JsonLine& j, const agents::planning::TeamPlan& plan) {
+  j.beginObject();
+  j.key("agents");
+  j.beginArray();
+  for (const auto& report : plan.reports) {
+    j.beginObject();
+    j.key("agent");
+    j.integer(report.agent);
+    j.key("cost");
+    j.number(report.cost);
+    j.key("evaluations");
+    j.integer(report.evaluations);
+    j.key("iterations");
+    j.integer(report.iterations);
+    j.key("joint_epoch");
+    integers(j, report.joint_epoch);
+    j.key("velocities");
+    velocities(j, report.plan);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("epoch");
+  j.integer(plan.epoch);
+  j.key("messages");
+  j.beginArray();
+  for (const auto& m : plan.messages) {
+    j.beginObject();
+    j.key("agent");
+    j.integer(m.agent);
+    j.key("epoch");
+    j.integer(m.epoch);
+    j.key("from");
+    j.integer(m.from);
+    j.key("velocities");
+    velocities(j, m.plan);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+}  // namespace
+
+void RecordLineWriter::write(const StepRecord& record, std::string& out) {
+  JsonLine j(out, &numbers_);
+  j.beginObject();
+  j.key("agents");
+  j.beginArray();
+  for (const agents::AgentBelief& b : record.beliefs) belief(j, b);
+  j.endArray();
+  j.key("k");
+  j.integer(record.step);
+  if (record.plan) {
+    j.key("plan");
+    plan(j, *record.plan);
+  }
+  j.key("scans");
+  j.beginArray();
+  for (const UavRecord& uav : record.uavs) scan(j, uav.scan);
+  j.endArray();
+  j.key("t");
+  j.number(record.time);
+  j.key("targets");
+  j.beginArray();
+  for (const TargetRecord& target : record.targets) {
+    j.beginObject();
+    j.key("p");
+    vec(j, target.position);
+    j.key("v");
+    vec(j, target.velocity);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("uavs");
+  j.beginArray();
+  for (const UavRecord& uav : record.uavs) {
+    j.beginObject();
+    j.key("cmd");
+    vec(j, uav.command);
+    j.key("p");
+    vec(j, uav.position);
+    j.key("v");
+    vec(j, uav.velocity);
+    j.key("yaw");
+    j.number(uav.yaw);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+std::string recordLine(const std::vector<std::string>& labels, const StepRecord& record) {
+  RecordLineWriter writer(labels);
+  std::string line;
+  writer.write(record, line);
+  return line;
+}
+
+Recorder::Recorder(const std::filesystem::path& dir, const spec::ScenarioSpec& spec)
+    : record_(dir / "record.jsonl"),
+      timings_(dir / "timings.jsonl"),
+      lines_(std::make_unique<RecordLineWriter>(spec.labels)) {}
+
+Recorder::~Recorder() = default;
+
+void Recorder::onStep(const StepRecord& record) {
+  line_.clear();  // keeps its capacity: no allocation per step once the longest line was seen
+  lines_->write(record, line_);
+  line_ += '\n';
+  record_.write(line_);
+  if (record.plan) {
+    using Json = nlohmann::json;
+    Json seconds = Json::array();
+    for (const auto& report : record.plan->reports) seconds.push_back(report.seconds);
+    timings_.write(
+        Json{{"k", record.step}, {"epoch", record.plan->epoch}, {"plan_seconds", seconds}}.dump() +
+        '\n');
+  }
+}
+
+void Recorder::commit() {
+  record_.commit();
+  timings_.commit();
+}
+
+}  // namespace canopy::sim

@@ -1,0 +1,42 @@
+#pragma once
+// record.jsonl: one JSON line per step with the truth, every UAV's pose and command, every scan
+// (footprint membership, visibility, observations), every agent's fused tracks and occlusion map,
+// and on planning epochs the team's plans and intention messages. Same seed, same bytes: wall
+// times, which differ from run to run, go to timings.jsonl instead.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/output_file.h"
+#include "sim/step_observer.h"
+#include "spec/scenario_spec.h"
+
+namespace canopy::sim {
+
+class RecordLineWriter;
+
+class Recorder final : public StepObserver {
+ public:
+  /// Streams record.jsonl and timings.jsonl of `dir` into new temporaries (AtomicFile): nothing
+  /// appears under either name until commit(), and a recorder destroyed without it leaves
+  /// nothing. Throws WriteError when it cannot write. Each line is streamed into one reused
+  /// buffer (no JSON document per step); the bytes are those of nlohmann's dump(). Keeps a copy
+  /// of the spec's labels.
+  Recorder(const std::filesystem::path& dir, const spec::ScenarioSpec& spec);
+  ~Recorder();
+  void onStep(const StepRecord& record) override;
+  /// Publishes both files, once, after the last step.
+  void commit();
+
+ private:
+  AtomicFile record_;
+  AtomicFile timings_;
+  std::unique_ptr<RecordLineWriter> lines_;
+  std::string line_;
+};
+
+/// One step as a JSON line (without the newline); labels: the scenario's, by LabelId.
+std::string recordLine(const std::vector<std::string>& labels, const StepRecord& record);
+
+}  // namespace canopy::sim

@@ -1,0 +1,34 @@
+#pragma once
+// `canopy run`: a scenario to manifest.json, record.jsonl and summary.json in one directory.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sim/step_observer.h"
+#include "spec/scenario_spec.h"
+
+namespace canopy::sim {
+
+struct RunOptions {
+  std::filesystem::path out_dir;         // created if missing
+  std::string command_line;              // recorded in the manifest
+  std::vector<StepObserver*> observers;  // after the record and summary, e.g. the frames
+};
+
+struct RunResult {
+  int steps = 0;
+  double wall_seconds = 0.0;
+  std::string summary_json;
+};
+
+/// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
+/// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
+/// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
+/// from an observer) removes whatever of these it wrote, so out_dir never holds a partial record or
+/// a summary of a run that did not finish.
+RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options);
+
+/// manifest.json's content: version, scenario, hash of the effective config, seed, config.
+std::string manifestJson(const spec::ScenarioSpec& spec, const std::string& command_line);
+
+}  // namespace canopy::sim

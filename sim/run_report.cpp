@@ -1,0 +1,85 @@
+#include "sim/run_report.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/printable.h"
+
+namespace canopy::sim {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+double number(const Json& object, const char* key) {
+  return object.contains(key) && object[key].is_number() ? object[key].get<double>() : 0.0;
+}
+
+}  // namespace
+
+std::string runTable(const std::string& summary_json) {
+  const Json summary = Json::parse(summary_json);
+  std::size_t width = 6;  // "target"
+  for (const Json& t : summary.at("targets"))
+    width = std::max(width, printable(t.at("name").get<std::string>(), 40).size());
+  std::string text = "target" + std::string(width - 6, ' ') + "  visible  covered\n";
+  for (const Json& t : summary.at("targets")) {
+    std::string name = printable(t.at("name").get<std::string>(), 40);
+    name.resize(width, ' ');
+    text += name + format("  %6.1f %%  %5.1f %%\n", 100.0 * number(t, "visible_fraction"),
+                          100.0 * number(t, "in_footprint_fraction"));
+  }
+  const Json& team = summary.at("team");
+  text += format("OSPA %.3g m", number(team, "ospa_mean_m"));
+  if (team.contains("gospa_mean_m")) text += format(", GOSPA %.3g m", number(team, "gospa_mean_m"));
+  text += format(" (mean over UAVs and steps; cut-off %g m, order %g)\n",
+                 number(team, "ospa_cutoff_m"), number(team, "ospa_order"));
+  const Json& planning = summary.at("timing").at("planning");
+  if (planning.empty()) {
+    text += "planning: none (scripted paths)\n";
+  } else {
+    double epochs = 0, weighted = 0, worst = 0;
+    for (const Json& p : planning) {
+      epochs += number(p, "epochs");
+      weighted += number(p, "epochs") * number(p, "mean_s");
+      worst = std::max(worst, number(p, "max_s"));
+    }
+    text +=
+        format("planning: %.3g s per epoch on average, %.3g s at most (%g epochs over all UAVs)\n",
+               epochs > 0 ? weighted / epochs : 0.0, worst, epochs);
+  }
+  return text;
+}
+
+std::vector<std::string> runWarnings(const std::string& summary_json) {
+  const Json summary = Json::parse(summary_json);
+  std::vector<std::string> warnings;
+  if (summary.contains("fusion_diagnostics")) {
+    const double failures = number(summary["fusion_diagnostics"], "numerical_failures");
+    if (failures > 0) {
+      warnings.push_back(
+          format("fusion had %g numerical failures (summary.json: "
+                 "fusion_diagnostics.numerical_failures)",
+                 failures));
+    }
+  }
+  for (const Json& uav : summary.at("uavs")) {
+    if (!uav.contains("tracking_diagnostics")) continue;
+    const double bad = number(uav["tracking_diagnostics"], "non_positive_covariances");
+    if (bad > 0) {
+      warnings.push_back(printable(uav.at("name").get<std::string>(), 40) +
+                         format(": %g covariances were not positive definite (summary.json: "
+                                "tracking_diagnostics.non_positive_covariances)",
+                                bad));
+    }
+  }
+  return warnings;
+}
+
+}  // namespace canopy::sim

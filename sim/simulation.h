@@ -1,0 +1,78 @@
+#pragma once
+// The one place where a tick is wired (architecture.md, "One tick"): commands → world step →
+// truth snapshot → per UAV: footprint and scan → per agent: pose and local tracking → fusion,
+// adopted by every agent → occlusion maps → on planning epochs, the team's plan → commands for
+// the next step → the step's record. Each tick fills one StepRecord (scenarios/step_record.h),
+// the only thing observers see.
+#include <vector>
+
+#include "agents/team.h"
+#include "core/random.h"
+#include "sensing/sensor.h"
+#include "sim/step_record.h"
+#include "spec/scenario_spec.h"
+#include "world/world.h"
+
+namespace canopy::sim {
+
+/// The team's configuration a scenario gives: tracking, fusion and planner sections, each UAV's
+/// limits and camera at its start, the true trees when the planner uses the a-priori map.
+agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec);
+
+class Simulation {
+ public:
+  /// Keeps its own copy of the spec: a simulation built from a temporary is safe.
+  explicit Simulation(spec::ScenarioSpec spec);
+
+  /// Runs step k = nextStep(): for k = 0 senses the initial state, otherwise applies the
+  /// commands set at step k − 1 and advances the world by dt first. Returns the step's record,
+  /// valid until the next tick (its storage is reused: copy it to keep it).
+  const StepRecord& tick();
+  /// External command (a custom controller, a Python binding): UAV `uav` flies `velocity` (m/s)
+  /// during the next step, the one the next tick() runs, instead of its planner's or scripted
+  /// command; like those it is clamped to the UAV's v_max (World::commandUav). It holds for that
+  /// one step: the tick after it commands the UAV from its planner (the command held since the
+  /// last planning epoch) or its path again, so a controller calls it before every tick it wants
+  /// to steer. Planning epochs are untouched: the planner still plans on its schedule from the
+  /// true positions, and its plan and intentions are recorded and published as if flown. What was
+  /// flown is the next step's record (uavs[i].velocity); world().commandedVelocity(uav) reports
+  /// the clamped command until then. Call between ticks, after the first and before done();
+  /// throws std::logic_error otherwise, std::out_of_range for an unknown UAV and
+  /// std::invalid_argument for a non-finite velocity.
+  void commandNext(int uav, const Vec2& velocity);
+  /// True once steps 0..K have all run.
+  bool done() const { return next_step_ > spec_.steps(); }
+  /// The step the next tick() runs.
+  int nextStep() const { return next_step_; }
+
+  /// The record of the step the last tick() ran (the one tick() returned).
+  const StepRecord& lastStep() const { return record_; }
+
+  const spec::ScenarioSpec& spec() const { return spec_; }
+  const world::World& world() const { return world_; }
+  const agents::Team& team() const { return team_; }
+  /// Steps between planning epochs (plan_period / dt).
+  int stepsPerPlan() const { return steps_per_plan_; }
+
+ private:
+  void readTruth();
+  void sense();
+  void commandScriptedUavs();
+  void commandFromPlan();
+  void commandUavs();
+  void readTeam();
+
+  const spec::ScenarioSpec spec_;
+  world::World world_;
+  agents::Team team_;
+  std::vector<sensing::LabelId> target_labels_;
+  std::vector<RandomStream> sensing_rng_;  // one "sensing" stream per UAV
+  sensing::SenseScratch scratch_;
+  world::WorldSnapshot truth_;  // this step's, as sensing reads it
+  std::vector<Vec2> commands_;  // m/s, per UAV: its planner's or path's command, before clamping
+  StepRecord record_;           // this step's, refilled in place by every tick
+  int steps_per_plan_ = 1;
+  int next_step_ = 0;
+};
+
+}  // namespace canopy::sim

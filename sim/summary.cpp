@@ -1,0 +1,164 @@
+#include "sim/summary.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+namespace canopy::sim {
+
+SummaryBuilder::SummaryBuilder(const spec::ScenarioSpec& spec)
+    : names_{spec.name, spec.seed, spec.dt, spec.trees.size(), {}, {}, {}},
+      targets_(spec.targets.size()),
+      uavs_(spec.uavs.size()),
+      ospa_(spec.uavs.size()),
+      gospa_(spec.uavs.size()),
+      plan_seconds_(spec.uavs.size()) {
+  for (const spec::TargetSpec& target : spec.targets) {
+    names_.targets.push_back(target.name);
+    names_.target_labels.push_back(spec.labels[target.label]);
+  }
+  for (const spec::UavSpec& uav : spec.uavs) names_.uavs.push_back(uav.name);
+}
+
+namespace {
+double mean(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (const double v : x) sum += v;
+  return x.empty() ? 0.0 : sum / static_cast<double>(x.size());
+}
+double median(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const std::size_t n = x.size();
+  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+}  // namespace
+
+void SummaryBuilder::onStep(const StepRecord& record) {
+  if (!last_uav_position_.empty()) {
+    for (std::size_t i = 0; i < uavs_.size(); ++i) {
+      uavs_[i].distance += (record.uavs[i].position - last_uav_position_[i]).norm();
+    }
+  }
+  last_uav_position_.clear();
+  for (const UavRecord& uav : record.uavs) last_uav_position_.push_back(uav.position);
+
+  visible_by_.assign(targets_.size(), 0);
+  in_footprint_of_.assign(targets_.size(), 0);
+  for (const UavRecord& uav : record.uavs) {
+    const sensing::Scan& scan = uav.scan;
+    UavTally& tally = uavs_[scan.uav];
+    tally.visible += static_cast<long>(scan.visible.size());
+    tally.observations += static_cast<long>(scan.observations.size());
+    for (const int t : scan.visible) ++visible_by_[t];
+    for (const int t : scan.in_footprint) ++in_footprint_of_[t];
+  }
+  for (std::size_t t = 0; t < targets_.size(); ++t) {
+    targets_[t].steps_visible += visible_by_[t] > 0;
+    targets_[t].steps_in_footprint += in_footprint_of_[t] > 0;
+    targets_[t].coverage += in_footprint_of_[t];
+  }
+
+  truth_positions_.clear();
+  for (const TargetRecord& target : record.targets) truth_positions_.push_back(target.position);
+  for (std::size_t i = 0; i < record.beliefs.size(); ++i) {
+    estimates_.clear();
+    for (const agents::TrackEstimate& track : record.beliefs[i].tracks) {
+      estimates_.push_back(track.belief.x.head<2>());
+    }
+    assignment_.solve(truth_positions_, estimates_);  // one assignment for both metrics
+    ospa_[i].push_back(assignment_.ospa());
+    gospa_[i].push_back(assignment_.gospa());
+  }
+  if (record.plan) {
+    for (const auto& report : record.plan->reports)
+      plan_seconds_[report.agent].push_back(report.seconds);
+  }
+  counts_at_end_ = record.counts;
+  fusion_at_end_ = record.fusion;
+  intentions_at_end_ = record.intentions;
+  ++steps_;
+}
+
+std::string SummaryBuilder::json(double wall_seconds) const {
+  using Json = nlohmann::json;
+  const double steps = std::max(1, steps_);
+  Json summary;
+  summary["scenario"] = names_.scenario;
+  summary["seed"] = names_.seed;
+  summary["steps"] = steps_;
+  summary["dt"] = names_.dt;
+  summary["trees"] = names_.trees;
+  Json targets = Json::array();
+  double visible_sum = 0.0;
+  for (std::size_t t = 0; t < targets_.size(); ++t) {
+    const TargetTally& tally = targets_[t];
+    visible_sum += tally.steps_visible / steps;
+    targets.push_back({{"name", names_.targets[t]},
+                       {"label", names_.target_labels[t]},
+                       {"visible_fraction", tally.steps_visible / steps},
+                       {"in_footprint_fraction", tally.steps_in_footprint / steps},
+                       {"mean_coverage", static_cast<double>(tally.coverage) / steps}});
+  }
+  summary["targets"] = targets;
+  Json uavs = Json::array();
+  double ospa_sum = 0.0, gospa_sum = 0.0;
+  Json plan_timing = Json::array();
+  for (std::size_t i = 0; i < uavs_.size(); ++i) {
+    Json uav = {{"name", names_.uavs[i]},
+                {"distance_m", uavs_[i].distance},
+                {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
+                {"observations", uavs_[i].observations},
+                {"ospa_mean_m", mean(ospa_[i])},
+                {"ospa_m", ospa_[i]},
+                {"gospa_mean_m", mean(gospa_[i])},
+                {"gospa_m", gospa_[i]}};
+    if (i < counts_at_end_.size()) {
+      const AgentCounts& end = counts_at_end_[i];
+      uav["tracks_at_end"] = end.tracks;
+      uav["trees_in_map_at_end"] = end.trees_in_map;
+      uav["tracking_diagnostics"] = {
+          {"births", end.tracking.births},
+          {"deletions", end.tracking.deletions},
+          {"approximated_clusters", end.tracking.approximated_clusters},
+          {"non_positive_covariances", end.tracking.non_positive_covariances}};
+    }
+    uavs.push_back(std::move(uav));
+    ospa_sum += mean(ospa_[i]);
+    gospa_sum += mean(gospa_[i]);
+    if (!plan_seconds_[i].empty()) {
+      plan_timing.push_back(
+          {{"name", names_.uavs[i]},
+           {"epochs", plan_seconds_[i].size()},
+           {"mean_s", mean(plan_seconds_[i])},
+           {"median_s", median(plan_seconds_[i])},
+           {"max_s", *std::max_element(plan_seconds_[i].begin(), plan_seconds_[i].end())}});
+    }
+  }
+  summary["uavs"] = uavs;
+  summary["team"] = {
+      {"mean_visible_fraction",
+       targets_.empty() ? 0.0 : visible_sum / static_cast<double>(targets_.size())},
+      {"ospa_mean_m", uavs_.empty() ? 0.0 : ospa_sum / static_cast<double>(uavs_.size())},
+      {"ospa_cutoff_m", 50.0},
+      {"ospa_order", 2},
+      {"gospa_mean_m", uavs_.empty() ? 0.0 : gospa_sum / static_cast<double>(uavs_.size())},
+      {"gospa_alpha", 2}};
+  if (steps_ > 0) {
+    const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
+    summary["fusion_diagnostics"] = {{"messages", d.messages},
+                                     {"lost_messages", d.lost_messages},
+                                     {"adoptions", d.adoptions},
+                                     {"rekeys", d.rekeys},
+                                     {"numerical_failures", d.numerical_failures}};
+    // Per kind, on links within comm_range: sent, of which lost, and of those that arrived, late
+    // (read at a later step than sent: fusion.comm_latency > 0).
+    const agents::planning::MessageCounts& p = intentions_at_end_;
+    summary["messages"] = {
+        {"consensus", {{"sent", d.messages}, {"lost", d.lost_messages}, {"late", d.late_messages}}},
+        {"intentions", {{"sent", p.sent}, {"lost", p.lost}, {"late", p.late}}}};
+  }
+  summary["timing"] = {{"wall_seconds", wall_seconds}, {"planning", plan_timing}};
+  return summary.dump(2);
+}
+
+}  // namespace canopy::sim

@@ -1,0 +1,67 @@
+#pragma once
+// summary.json: what a run amounted to, accumulated step by step.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "agents/fusion/fusion_diagnostics.h"
+#include "agents/planning/intention_links.h"
+#include "metrics/ospa.h"
+#include "sim/step_observer.h"
+#include "spec/scenario_spec.h"
+
+namespace canopy::sim {
+
+/// Keeps values only: the names it reports, copied from the spec, and the team's counts as of the
+/// last step added; it holds no reference to the spec, a record or the simulation.
+class SummaryBuilder final : public StepObserver {
+ public:
+  explicit SummaryBuilder(const spec::ScenarioSpec& spec);
+  void onStep(const StepRecord& record) override;
+  /// The summary as pretty JSON; wall times go under "timing" (the only non-deterministic
+  /// fields).
+  std::string json(double wall_seconds) const;
+
+  struct TargetTally {
+    int steps_visible = 0;       // visible to at least one UAV
+    int steps_in_footprint = 0;  // inside at least one footprint
+    long coverage = 0;           // Σ_k number of footprints containing the target
+  };
+  struct UavTally {
+    double distance = 0.0;  // m flown
+    long visible = 0;       // Σ_k |V_{i,k}|
+    long observations = 0;  // target, clutter and tree detections
+  };
+  const std::vector<TargetTally>& targets() const { return targets_; }
+  const std::vector<UavTally>& uavs() const { return uavs_; }
+  int steps() const { return steps_; }
+  /// ospa()[i][k]: OSPA (c = 50 m, p = 2) between the true target positions and agent i's
+  /// confirmed track positions at step k (m).
+  const std::vector<std::vector<double>>& ospa() const { return ospa_; }
+
+ private:
+  struct Names {
+    std::string scenario;
+    std::uint64_t seed = 0;
+    double dt = 0.0;  // s
+    std::size_t trees = 0;
+    std::vector<std::string> targets, target_labels, uavs;
+  };
+  Names names_;
+  std::vector<TargetTally> targets_;
+  std::vector<UavTally> uavs_;
+  std::vector<Vec2> last_uav_position_;
+  std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
+  std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
+  metrics::CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
+  std::vector<std::vector<double>> ospa_;            // [agent][k], m
+  std::vector<std::vector<double>> gospa_;           // [agent][k], m
+  std::vector<std::vector<double>> plan_seconds_;    // [agent][epoch], s
+  std::vector<Vec2> truth_positions_, estimates_;    // scratch
+  std::vector<AgentCounts> counts_at_end_;  // the last step's; empty until a step was added
+  agents::fusion::FusionDiagnostics fusion_at_end_;
+  agents::planning::MessageCounts intentions_at_end_;
+  int steps_ = 0;
+};
+
+}  // namespace canopy::sim

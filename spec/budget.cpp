@@ -1,0 +1,91 @@
+#include "spec/budget.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "spec/error.h"
+
+namespace canopy::spec {
+namespace {
+
+std::string roughly(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, x < 1e6 ? "%.6g" : "%.1e", x);
+  return text;
+}
+
+void require(const ScenarioSpec& spec, const std::string& field, double amount, double limit,
+             const std::string& what) {
+  if (amount > limit)
+    throw ScenarioError(spec.file.string(), field, budgetMessage(amount, limit, what));
+}
+
+}  // namespace
+
+WorkLimits workLimits(double scale) {
+  WorkLimits limits;
+  for (double* limit : {&limits.trees, &limits.world_units, &limits.record_bytes,
+                        &limits.tracking_units, &limits.fusion_units, &limits.planning_units,
+                        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
+    *limit *= scale;
+  }
+  return limits;
+}
+
+std::string budgetMessage(double amount, double limit, const std::string& what) {
+  return "expected at most " + roughly(limit) + " " + what + ", this file asks for about " +
+         roughly(amount) + " (--budget K raises every work limit K-fold)";
+}
+
+WorkEstimate estimateWork(const ScenarioSpec& spec) {
+  const double steps = spec.steps() + 1.0;
+  const double uavs = static_cast<double>(spec.uavs.size());
+  const double targets = static_cast<double>(spec.targets.size());
+  const double clutter = spec.sensing.clutter_rate;
+  WorkEstimate work;
+  // Sensing: every UAV looks at every target and its clutter; the world moves every body.
+  work.world_units = steps * (uavs + targets + uavs * (targets + clutter));
+  // record.jsonl: per step and UAV a fixed part (pose, plan, intentions) and a part per track
+  // held (targets, clutter-born tentatives); set above the sizes measured on the library
+  // scenarios (tests/scenarios/budget_test.cpp).
+  work.record_bytes = steps * uavs * (1000.0 + 600.0 * (targets + clutter));
+  // JPDA: gating is tracks × measurements; a cluster enumerates at most max_hypotheses events.
+  const double measurements = targets + clutter;
+  work.tracking_units =
+      steps * uavs *
+      (measurements * measurements + (measurements > 1.0 ? spec.tracking.max_hypotheses : 0.0));
+  work.fusion_units = steps * spec.fusion.rounds * uavs * uavs * std::max(1.0, targets);
+  const agents::PlannerConfig& p = spec.planner;
+  if (p.algorithm != agents::PlannerAlgorithm::none) {
+    const double epochs = spec.duration / p.replan_period + 1.0;
+    const double particles = static_cast<double>(p.pso.particles_per_step) * p.horizon;
+    const bool blocks = p.algorithm != agents::PlannerAlgorithm::sma &&
+                        p.joint_search == agents::JointSearch::block_coordinate;
+    const double swarms_per_call = blocks ? p.joint_rounds * uavs : 1.0;
+    // Upper bound: every swarm runs to max_iterations (the stall rule usually stops it sooner).
+    const double evaluations = epochs * uavs * swarms_per_call * particles * p.pso.max_iterations;
+    work.planning_units = evaluations * p.horizon * p.cost_substeps * std::max(1.0, targets) * uavs;
+  }
+  return work;
+}
+
+void checkWork(const ScenarioSpec& spec, double budget_scale) {
+  const WorkLimits limits = workLimits(budget_scale);
+  const WorkEstimate work = estimateWork(spec);
+  require(spec, "occluders", static_cast<double>(spec.trees.size()), limits.trees,
+          "trees in all (every layout and include together)");
+  require(spec, "clock.duration", work.world_units, limits.world_units,
+          "world units per trial (steps × (UAVs + targets + UAVs × (targets + clutter_rate)))");
+  require(spec, "clock.duration", work.record_bytes, limits.record_bytes,
+          "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate)))");
+  require(spec, "tracking.max_hypotheses", work.tracking_units, limits.tracking_units,
+          "tracking units per trial (steps × UAVs × ((targets + sensing.clutter_rate)² + "
+          "max_hypotheses))");
+  require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
+          "fusion units per trial (steps × rounds × UAVs² × targets)");
+  require(spec, "planner.pso", work.planning_units, limits.planning_units,
+          "planning units per trial (epochs × UAVs × particles × max_iterations × horizon × "
+          "cost_substeps × targets × UAVs)");
+}
+
+}  // namespace canopy::spec

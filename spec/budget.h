@@ -1,0 +1,45 @@
+#pragma once
+// Load-time work limits. From a scenario's validated fields, the work one trial will do is
+// bounded before any of it is allocated or run; a file that asks for more is a ScenarioError
+// ("expected at most …, this file asks for about …") naming the field that drives it. The
+// limits sit about a thousand times above the paper's scenarios; `--budget K` multiplies every
+// one of them by K for those who mean it.
+#include <string>
+
+#include "spec/scenario_spec.h"
+
+namespace canopy::spec {
+
+/// Upper bounds, per trial unless said otherwise. A "unit" is one inner-loop term of that stage.
+struct WorkLimits {
+  double trees = 2e6;                 // points one layout generator draws; trees in a scenario
+  double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
+  double record_bytes = 4e9;          // estimated size of record.jsonl
+  double tracking_units = 2e11;       // steps × UAVs × (measurements² + joint-event cap)
+  double fusion_units = 2e11;         // steps × rounds × UAVs² × targets
+  double planning_units = 2e11;       // evaluations × H × substeps × targets × UAVs
+  double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
+  double sweep_trials = 1e7;          // configurations × trials
+  double sweep_bytes = 1e9;           // configurations × (their overrides' text + 4 kB)
+};
+
+/// The limits multiplied by `scale` (> 0).
+WorkLimits workLimits(double scale = 1.0);
+
+/// What one trial of `spec` asks for, in the units of WorkLimits.
+struct WorkEstimate {
+  double world_units = 0.0;
+  double record_bytes = 0.0;
+  double tracking_units = 0.0;
+  double fusion_units = 0.0;
+  double planning_units = 0.0;
+};
+WorkEstimate estimateWork(const ScenarioSpec& spec);
+
+/// "expected at most LIMIT WHAT, this file asks for about AMOUNT (--budget K raises the limit)".
+std::string budgetMessage(double amount, double limit, const std::string& what);
+
+/// Throws ScenarioError (spec.file, the driving field) when one trial of `spec` exceeds a limit.
+void checkWork(const ScenarioSpec& spec, double budget_scale);
+
+}  // namespace canopy::spec

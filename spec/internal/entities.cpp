@@ -1,0 +1,253 @@
+// Reading UAVs, targets and their scripted paths.
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "core/angles.h"
+#include "spec/internal/referenced_file.h"
+#include "spec/internal/sections.h"
+#include "spec/track_csv.h"
+
+namespace canopy::spec::internal {
+namespace {
+
+std::string aoiText(const Aabb& aoi) {
+  std::ostringstream text;
+  text << "[" << aoi.lo.x() << ", " << aoi.lo.y() << ", " << aoi.hi.x() << ", " << aoi.hi.y()
+       << "]";
+  return text.str();
+}
+
+void requireInside(const Field& field, const Vec2& p, const Aabb& aoi, const std::string& what) {
+  if (!aoi.contains(p)) {
+    std::ostringstream text;
+    text << "expected " << what << " inside the AOI " << aoiText(aoi) << ", got (" << p.x() << ", "
+         << p.y() << ")";
+    field.fail(text.str());
+  }
+}
+
+// Strictly increasing times, each a finite number.
+void requireIncreasing(const std::vector<world::TimedPoint>& points,
+                       const std::vector<Field>& times) {
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (!(points[i].t > points[i - 1].t)) {
+      std::ostringstream text;
+      text << "expected a time greater than the previous point's (" << points[i - 1].t
+           << " s): times must increase strictly, got " << points[i].t;
+      times[i].fail(text.str());
+    }
+  }
+}
+
+// A recorded track from a CSV file the scenario names (scenarios/track_csv.h).
+std::vector<world::TimedPoint> readTrackCsv(const Field& field) {
+  const ReferencedFile file = readReferencedFile(field, "track file");
+  try {
+    return parseTrackCsv(file.text, file.shown);
+  } catch (const ScenarioError& e) {
+    field.fail(std::string("in the track file ") + e.what());
+  }
+}
+
+}  // namespace
+
+world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside) {
+  ObjectReader reader = field.object();
+  const std::string kind = reader.oneOf({"waypoints", "velocity", "track"});
+  world::Path path;
+  if (kind == "waypoints") {
+    const Field list = reader.required("waypoints");
+    std::vector<world::TimedPoint> points;
+    std::vector<Field> times, positions;
+    for (const Field& element : list.elements(1)) {
+      ObjectReader waypoint = element.object();
+      times.push_back(waypoint.required("t"));
+      positions.push_back(waypoint.required("p"));
+      points.push_back({times.back().number(Bound::non_negative), positions.back().vec2()});
+      waypoint.finish();
+    }
+    requireIncreasing(points, times);
+    if (check_inside) {
+      for (std::size_t i = 0; i < points.size(); ++i)
+        requireInside(positions[i], points[i].p, aoi, "a waypoint");
+    }
+    path = world::Path::throughPoints(std::move(points));
+  } else if (kind == "velocity") {
+    const Field start = reader.required("start");
+    const Vec2 p0 = start.vec2();
+    const Vec2 v = reader.required("velocity").vec2();
+    if (check_inside) {
+      requireInside(start, p0, aoi, "a start");
+      requireInside(field, p0 + v * duration, aoi,
+                    "the position at the end of the run (start + velocity · duration)");
+    }
+    path = world::Path::constantVelocity(p0, v);
+  } else if (kind == "track") {
+    const Field track = reader.required("track");
+    std::vector<world::TimedPoint> points;
+    if (track.json().is_string()) {
+      points = readTrackCsv(track);
+    } else {
+      std::vector<Field> times;
+      for (const Field& row : track.elements(1)) {
+        const std::vector<Field> txy = row.elements(3, 3);
+        times.push_back(txy[0]);
+        points.push_back(
+            {txy[0].number(Bound::non_negative), Vec2(txy[1].number(), txy[2].number())});
+      }
+      requireIncreasing(points, times);
+    }
+    if (check_inside) {
+      for (const world::TimedPoint& q : points) requireInside(track, q.p, aoi, "every track point");
+    }
+    path = world::Path::throughPoints(std::move(points));
+  } else {
+    field.fail(
+        "expected a path: {\"waypoints\": [{\"t\": …, \"p\": [x, y]}, …]}, "
+        "{\"start\": [x, y], \"velocity\": [vx, vy]} or {\"track\": \"file.csv\"}");
+  }
+  reader.finish();
+  return path;
+}
+
+// A ground robot's forward camera: {"range": r, "angle": θ}, a sector of radius r opening θ about
+// the heading.
+void readSector(ObjectReader& robot, sensing::FootprintDef& footprint) {
+  footprint.shape = sensing::FootprintShape::sector;
+  footprint.radius = 25.0;      // m, default range
+  footprint.angle = 0.5 * kPi;  // rad, default field of view (90°)
+  auto fov_field = robot.optional("fov");
+  if (!fov_field) {
+    (*robot.field().out())["fov"] = Json{{"range", footprint.radius}, {"angle", footprint.angle}};
+    return;
+  }
+  ObjectReader fov = fov_field->object();
+  footprint.radius = fov.number("range", footprint.radius, Bound::positive);
+  if (footprint.radius > 1e7) fov.required("range").fail("expected at most 1e7 m");
+  footprint.angle = fov.number("angle", footprint.angle, Bound::positive);
+  if (footprint.angle > kTwoPi) fov.required("angle").fail("expected at most 2π rad (a full turn)");
+  fov.finish();
+}
+
+void readUavs(ObjectReader& root, ScenarioSpec& spec) {
+  const Field list = root.required("uavs");
+  std::set<std::string> names;
+  const std::vector<Field> elements = list.elements(1, 256);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    ObjectReader reader = elements[i].object();
+    UavSpec uav;
+    uav.name = reader.string("name", "uav" + std::to_string(i + 1));
+    if (!names.insert(uav.name).second) {
+      reader.required("name").fail("expected a unique UAV name, got \"" + uav.name + "\" twice");
+    }
+    uav.body.kind = reader.enumeration("kind", world::kAgentKindNames, uav.body.kind);
+    const bool ground = uav.body.kind == world::AgentKind::ground;
+    if (auto path = reader.optional("path"))
+      uav.path = readPath(*path, spec.aoi, spec.duration, true);
+    if (auto start = reader.optional("start")) {
+      uav.body.start = start->vec2();
+      requireInside(*start, uav.body.start, spec.aoi, "a start");
+    } else if (uav.path) {
+      uav.body.start = uav.path->positionAt(0.0);
+    } else {
+      reader.required("start");
+    }
+    if (auto yaw = reader.optional("yaw"); yaw && yaw->json().is_string()) {
+      yaw->choice({"velocity"});
+      uav.body.yaw_mode = world::YawMode::velocity;
+    } else if (yaw) {
+      uav.body.yaw = yaw->number();
+    } else {
+      reader.number("yaw", 0.0);
+    }
+    if (ground) {  // its heading is its body's: it always faces the way it drives
+      uav.body.yaw_mode = world::YawMode::velocity;
+      uav.body.turn_rate = reader.number("turn_rate", uav.body.turn_rate, Bound::positive);
+    }
+    uav.body.v_max = reader.number("v_max", uav.body.v_max, Bound::positive);
+
+    uav.sensor.ground_level = ground;
+    if (ground) {
+      readSector(reader, uav.sensor.footprint);
+    } else if (auto fov_field = reader.optional("fov")) {
+      ObjectReader fov = fov_field->object();
+      const std::string kind = fov.oneOf({"size", "radius"});
+      if (kind == "radius") {
+        uav.sensor.footprint.shape = sensing::FootprintShape::disc;
+        uav.sensor.footprint.radius = fov.required("radius").number(Bound::positive);
+        if (uav.sensor.footprint.radius > 1e7)
+          fov.required("radius").fail("expected at most 1e7 m");
+      } else if (kind == "size") {
+        uav.sensor.footprint.size = fov.required("size").vec2(Bound::positive);
+        if (uav.sensor.footprint.size.maxCoeff() > 2e7)
+          fov.required("size").fail("expected at most 2e7 m a side");
+      } else {
+        fov_field->fail("expected {\"size\": [w, h]} or {\"radius\": r}");
+      }
+      fov.finish();
+    } else {
+      const Vec2& size = uav.sensor.footprint.size;  // sensing/footprint.h's default
+      (*reader.field().out())["fov"] = Json{{"size", {size.x(), size.y()}}};
+    }
+    uav.sensor.quality.alpha = reader.number("quality", uav.sensor.quality.alpha, Bound::positive);
+    uav.sensor.quality.r0 = reader.number("r0", uav.sensor.quality.r0, Bound::positive);
+    reader.finish();
+    spec.uavs.push_back(std::move(uav));
+  }
+}
+
+std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec) {
+  std::vector<std::string> labels;
+  const auto list = root.optional("targets");
+  if (!list) {
+    (*root.field().out())["targets"] = Json::array();
+    return labels;
+  }
+  std::set<std::string> names;
+  const std::vector<Field> elements = list->elements(0, 100000);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    ObjectReader reader = elements[i].object();
+    TargetSpec target;
+    target.name = reader.string("name", "T" + std::to_string(i + 1));
+    if (!names.insert(target.name).second) {
+      reader.required("name").fail("expected a unique target name, got \"" + target.name +
+                                   "\" twice");
+    }
+    const std::string label = reader.string("label", "human");
+    if (label == "tree" || label.empty()) {
+      reader.required("label").fail(
+          "expected a target label other than \"tree\" (reserved for "
+          "occluders) and not empty");
+    }
+    target.path = readPath(reader.required("path"), spec.aoi, spec.duration, true);
+    reader.finish();
+    labels.push_back(label);
+    spec.targets.push_back(std::move(target));
+  }
+  return labels;
+}
+
+int uavIndex(const Field& field, const ScenarioSpec& spec) {
+  if (field.json().is_string()) {
+    const std::string name = field.string();
+    for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
+      if (spec.uavs[i].name == name) return static_cast<int>(i);
+    }
+    field.fail("expected the name of a UAV, got \"" + name + "\"");
+  }
+  return field.integer(0, static_cast<int>(spec.uavs.size()) - 1);
+}
+
+int targetIndex(const Field& field, const ScenarioSpec& spec) {
+  if (field.json().is_string()) {
+    const std::string name = field.string();
+    for (std::size_t t = 0; t < spec.targets.size(); ++t) {
+      if (spec.targets[t].name == name) return static_cast<int>(t);
+    }
+    field.fail("expected the name of a target, got \"" + name + "\"");
+  }
+  return field.integer(0, static_cast<int>(spec.targets.size()) - 1);
+}
+
+}  // namespace canopy::spec::internal

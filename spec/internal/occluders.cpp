@@ -1,0 +1,213 @@
+// Reading occluder layouts: explicit discs and polygons, Poisson / grid / cluster generators,
+// and includes of layout files.
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "spec/budget.h"
+#include "spec/forest.h"
+#include "spec/internal/referenced_file.h"
+#include "spec/internal/sections.h"
+#include "spec/loader.h"
+
+namespace canopy::spec::internal {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr int kMaxIncludeDepth = 16;
+constexpr double kMinPolygonEdge = 0.05;  // m; Box2D welds vertices closer than its linear slop
+
+RadiusRange readRadius(const Field& field) {
+  if (field.json().is_array()) {
+    const std::vector<Field> lohi = field.elements(2, 2);
+    const RadiusRange range{lohi[0].number(Bound::positive), lohi[1].number(Bound::positive)};
+    if (range.hi < range.lo) field.fail("expected [min, max] with max >= min");
+    return range;
+  }
+  const double r = field.number(Bound::positive);
+  return {r, r};
+}
+
+Aabb readRegion(ObjectReader& reader, const Aabb& aoi) {
+  const auto field = reader.optional("region");
+  if (!field) {
+    (*reader.field().out())["region"] = Json{aoi.lo.x(), aoi.lo.y(), aoi.hi.x(), aoi.hi.y()};
+    return aoi;
+  }
+  const std::vector<Field> v = field->elements(4, 4);
+  const Aabb region{Vec2(v[0].number(), v[1].number()), Vec2(v[2].number(), v[3].number())};
+  if (!(region.hi.x() > region.lo.x() && region.hi.y() > region.lo.y())) {
+    field->fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
+  }
+  if (!aoi.contains(region.lo) || !aoi.contains(region.hi)) {
+    field->fail("expected a region inside the AOI");
+  }
+  return region;
+}
+
+std::optional<double> readMinGap(ObjectReader& reader) {
+  if (auto gap = reader.optional("min_gap")) return gap->number(Bound::non_negative);
+  return std::nullopt;
+}
+
+double treeLimit(const Field& field) {
+  return workLimits(field.context() ? field.context()->budget_scale : 1.0).trees;
+}
+
+// The expected number of points a generator draws (before thinning or clipping), against the
+// limit; and the limit handed to the generator, which bounds each draw as well.
+std::size_t requireFeasibleCount(const Field& field, double expected_points, const char* what) {
+  const double limit = treeLimit(field);
+  if (!(expected_points <= limit)) field.fail(budgetMessage(expected_points, limit, what));
+  return static_cast<std::size_t>(limit);
+}
+
+template <typename Generate>
+auto drawBounded(const Field& field, Generate generate) {
+  try {
+    return generate();
+  } catch (const ForestTooLarge& e) {
+    field.fail("expected a layout of at most " + std::to_string(e.max_points) + " " +
+               e.what_counted +
+               ", this seed's draw needs more (the expected count is within the limit, this "
+               "draw is not); change the seed or raise the limit with --budget K");
+  }
+}
+
+void requireCentresInside(const Field& field, const std::vector<world::TreeDef>& trees,
+                          const Aabb& aoi) {
+  for (std::size_t k = 0; k < trees.size(); ++k) {
+    if (!aoi.contains(trees[k].centre)) {
+      std::ostringstream text;
+      text << "expected every tree inside the AOI; tree " << k << " of this layout is at ("
+           << trees[k].centre.x() << ", " << trees[k].centre.y() << ")";
+      field.fail(text.str());
+    }
+  }
+}
+
+world::TreeDef readPolygon(ObjectReader& reader) {
+  const Field list = reader.required("vertices");
+  std::vector<Vec2> vertices;
+  for (const Field& v : list.elements(3, 8)) vertices.push_back(v.vec2());
+  if (!world::isStrictlyConvex(vertices)) {
+    list.fail("expected the vertices of a convex polygon in order, with no three in a line");
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if ((vertices[(i + 1) % vertices.size()] - vertices[i]).norm() < kMinPolygonEdge) {
+      list.fail("expected polygon edges of at least 0.05 m");
+    }
+  }
+  return world::TreeDef::polygon(std::move(vertices));
+}
+
+void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& aoi,
+                   std::vector<world::TreeDef>& out) {
+  const Field& field = reader.field();
+  if (type == "disc") {
+    const Field centre_field = reader.required("centre");
+    const Vec2 centre = centre_field.vec2();
+    const double radius = reader.required("radius").number(Bound::positive);
+    out.push_back(world::TreeDef::disc(centre, radius));
+    requireCentresInside(centre_field, {out.back()}, aoi);
+  } else if (type == "polygon") {
+    out.push_back(readPolygon(reader));
+    requireCentresInside(field, {out.back()}, aoi);
+  } else if (type == "poisson") {
+    PoissonForestDef def;
+    def.region = readRegion(reader, aoi);
+    def.lambda = reader.required("lambda").number(Bound::non_negative);
+    def.radius = readRadius(reader.required("radius"));
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    def.min_gap = readMinGap(reader);
+    def.max_points = requireFeasibleCount(field, def.lambda * poissonDrawRegion(def).area(),
+                                          "trees drawn (λ × the region dilated by 2 r_max + "
+                                          "min_gap)");
+    const auto trees = drawBounded(field, [&] { return poissonForest(def); });
+    out.insert(out.end(), trees.begin(), trees.end());
+  } else if (type == "grid") {
+    GridForestDef def;
+    def.origin = reader.required("origin").vec2();
+    def.spacing = reader.required("spacing").vec2(Bound::non_negative);
+    def.rows = reader.integer("rows", 1, 1, 100000);
+    def.cols = reader.integer("cols", 1, 1, 100000);
+    def.angle = reader.number("angle", 0.0);
+    def.radius = readRadius(reader.required("radius"));
+    def.jitter = reader.number("jitter", 0.0, Bound::non_negative);
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    requireFeasibleCount(field, static_cast<double>(def.rows) * def.cols, "trees (rows × cols)");
+    const auto trees = gridForest(def);
+    requireCentresInside(field, trees, aoi);
+    out.insert(out.end(), trees.begin(), trees.end());
+  } else if (type == "cluster") {
+    ClusterForestDef def;
+    def.region = readRegion(reader, aoi);
+    def.parent_lambda = reader.required("parent_lambda").number(Bound::non_negative);
+    def.mean_trees = reader.required("mean_trees").number(Bound::non_negative);
+    def.spread = reader.required("spread").number(Bound::positive);
+    def.radius = readRadius(reader.required("radius"));
+    def.seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    def.min_gap = readMinGap(reader);
+    const double parents = def.parent_lambda * clusterParentRegion(def).area();
+    requireFeasibleCount(reader.required("parent_lambda"), parents,
+                         "cluster parents (parent_lambda × the region dilated by 5 spread)");
+    requireFeasibleCount(reader.required("mean_trees"), def.mean_trees, "trees per cluster");
+    def.max_points = requireFeasibleCount(field, parents * (1.0 + def.mean_trees),
+                                          "points drawn (parents × (1 + mean_trees))");
+    const auto trees = drawBounded(field, [&] { return clusterForest(def); });
+    out.insert(out.end(), trees.begin(), trees.end());
+  }
+}
+
+}  // namespace
+
+void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
+                   Json& effective, std::vector<std::string>& include_stack) {
+  for (const Field& element : list.elements()) {
+    Json element_out = Json::object();
+    const Field item(element.json(), element.file(), element.path(), &element_out,
+                     element.context());
+    ObjectReader reader = item.object();
+    if (reader.has("include")) {
+      const Field name_field = reader.required("include");
+      reader.finish();
+      const ReferencedFile file = readReferencedFile(name_field, "layout file", libraryDir());
+      const std::string canonical = file.path.string();
+      if (std::find(include_stack.begin(), include_stack.end(), canonical) != include_stack.end()) {
+        name_field.fail("include cycle: " + file.quoted + " is already being read");
+      }
+      if (static_cast<int>(include_stack.size()) > kMaxIncludeDepth) {
+        name_field.fail("includes nested more than 16 deep");
+      }
+      // Errors inside the included file name it, behind the field that includes it.
+      try {
+        const Json document = parseJson(file.text, file.shown);
+        const bool wrapped = document.is_object();
+        if (wrapped) {
+          ObjectReader layout = Field(document, file.shown, "", nullptr).object();
+          layout.optional("description");
+          layout.required("occluders");
+          layout.finish();
+        }
+        const Json& inner = wrapped ? document.at("occluders") : document;
+        include_stack.push_back(canonical);
+        // The included file's fields are those of the including list: not logged twice.
+        LoadContext quiet = name_field.context() ? *name_field.context() : LoadContext{};
+        quiet.log = nullptr;
+        readOccluders(Field(inner, file.path.string(), wrapped ? "occluders" : "", nullptr,
+                            name_field.context() ? &quiet : nullptr),
+                      aoi, trees, effective, include_stack);
+        include_stack.pop_back();
+      } catch (const ScenarioError& e) {
+        name_field.fail(std::string("in the layout file ") + e.what());
+      }
+      continue;
+    }
+    static const std::vector<std::string> kTypes{"disc", "polygon", "poisson", "grid", "cluster"};
+    readGenerator(kTypes[reader.required("type").choice(kTypes)], reader, aoi, trees);
+    reader.finish();
+    effective.push_back(element_out);
+  }
+}
+
+}  // namespace canopy::spec::internal

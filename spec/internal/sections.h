@@ -1,0 +1,34 @@
+#pragma once
+// Private to scenarios/: readers for each section of a scenario file.
+#include <string>
+#include <vector>
+
+#include "spec/json_reader.h"
+#include "spec/scenario_spec.h"
+
+namespace canopy::spec::internal {
+
+/// Applies one "dotted.path=value" override to the raw document.
+void applyOverride(Json& document, const std::string& assignment);
+
+world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside);
+void readUavs(ObjectReader& root, ScenarioSpec& spec);
+/// Returns each target's label name (ids are assigned once all labels are known).
+std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec);
+/// Reads the occluder list (explicit trees, generators, includes); appends to spec.trees.
+/// `effective` receives the flattened effective list (includes inlined).
+void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
+                   Json& effective, std::vector<std::string>& include_stack);
+
+/// Returns the clutter label's name.
+std::string readSensing(ObjectReader& root, ScenarioSpec& spec);
+void readTracking(ObjectReader& root, ScenarioSpec& spec);
+void readFusion(ObjectReader& root, ScenarioSpec& spec);
+void readPlanner(ObjectReader& root, ScenarioSpec& spec);
+void readAnalysis(ObjectReader& root, ScenarioSpec& spec);
+
+/// Index of the UAV or target named by `field` (a name or an index).
+int uavIndex(const Field& field, const ScenarioSpec& spec);
+int targetIndex(const Field& field, const ScenarioSpec& spec);
+
+}  // namespace canopy::spec::internal

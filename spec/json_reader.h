@@ -1,0 +1,156 @@
+#pragma once
+// Private to scenarios/: a JSON walker that knows where it is. Every read names the file and the
+// field path in its errors, records what it read (or the default it used) into the effective
+// configuration, and finish() rejects fields nobody read.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/enum_names.h"
+#include "core/types.h"
+#include "spec/error.h"
+#include "spec/field_log.h"
+
+namespace canopy::spec {
+
+// std::map-backed: slots of the effective config keep their address while siblings are added.
+using Json = nlohmann::json;
+
+constexpr int kMaxJsonDepth = 64;                             // nested arrays and objects
+constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
+
+/// Thrown by parseBoundedJson for input nested deeper than kMaxJsonDepth.
+struct JsonTooDeep : std::length_error {
+  JsonTooDeep() : std::length_error("JSON nested too deep") {}
+};
+
+/// Thrown by parseBoundedJson for an object that gives a key twice.
+struct JsonDuplicateKey : std::invalid_argument {
+  explicit JsonDuplicateKey(std::string k)
+      : std::invalid_argument("duplicate JSON key"), key(std::move(k)) {}
+  std::string key;
+};
+
+/// The JSON library's parse (comments allowed), refusing nesting deeper than kMaxJsonDepth before
+/// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; a key twice
+/// in one object: JsonDuplicateKey; the library's own exceptions for anything else.
+Json parseBoundedJson(const std::string& text);
+
+/// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError
+/// naming file:line:column.
+Json parseJson(const std::string& text, const std::string& file);
+/// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
+Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
+
+/// "a string \"x\"", "the number -3", "an array", ... for messages.
+std::string describe(const Json& value);
+
+/// Constraint on a number, checked after the type.
+enum class Bound { any, positive, non_negative, probability, open_probability, unit_interval };
+
+class ObjectReader;
+
+/// What every field of one load shares: where the files a scenario names (includes, track CSVs)
+/// may be read from, as canonical folders (the scenario's own folder, the scenario library, and
+/// any the user allowed), and the factor on the work limits of scenarios/budget.h.
+struct LoadContext {
+  std::vector<std::filesystem::path> roots;
+  double budget_scale = 1.0;
+  FieldLog* log = nullptr;  // records every read (scenarios/field_log.h) when set
+};
+
+/// A value at a known place: its file, its field path, and the slot of the effective config it
+/// fills.
+class Field {
+ public:
+  Field(const Json& value, std::string file, std::string path, Json* out,
+        const LoadContext* context = nullptr)
+      : value_(&value),
+        file_(std::move(file)),
+        path_(std::move(path)),
+        out_(out),
+        context_(context) {}
+
+  const Json& json() const { return *value_; }
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  Json* out() const { return out_; }  // this value's slot in the effective config (may be null)
+  const LoadContext* context() const { return context_; }  // null: no file may be read through it
+  [[noreturn]] void fail(const std::string& message) const;
+  /// Records this field's type and range in the context's log (no-op without one).
+  void note(const std::string& type, const std::string& range,
+            const std::vector<std::string>& choices = {}) const;
+
+  double number(Bound bound = Bound::any) const;
+  int integer(int min_value, int max_value) const;
+  std::uint64_t unsignedInteger() const;
+  bool boolean() const;
+  std::string string() const;
+  /// One of `choices`; returns its index.
+  int choice(const std::vector<std::string>& choices) const;
+  Vec2 vec2(Bound bound = Bound::any) const;
+  /// A JSON array: its elements as Fields (the effective config gets an array of the same size).
+  std::vector<Field> elements(std::size_t min_size = 0, std::size_t max_size = SIZE_MAX) const;
+  ObjectReader object() const;
+  /// Copies the value unchanged into the effective config.
+  void keepAsIs() const;
+
+ private:
+  const Json* value_;
+  std::string file_;
+  std::string path_;
+  Json* out_;
+  const LoadContext* context_;
+};
+
+/// Reads the members of one JSON object.
+class ObjectReader {
+ public:
+  ObjectReader(const Field& field);
+  const Field& field() const { return field_; }
+  bool has(const std::string& key) const;
+  /// A member that must be present.
+  Field required(const std::string& key);
+  /// A member that may be absent.
+  std::optional<Field> optional(const std::string& key);
+
+  double number(const std::string& key, double fallback, Bound bound = Bound::any);
+  int integer(const std::string& key, int fallback, int min_value, int max_value);
+  bool boolean(const std::string& key, bool fallback);
+  std::string string(const std::string& key, const std::string& fallback);
+  int choice(const std::string& key, const std::vector<std::string>& choices, int fallback);
+  /// One of the spellings in `names` (core/enum_names.h); when absent, `fallback` — the config
+  /// struct's default — recorded by its spelling.
+  template <class Enum, std::size_t N>
+  Enum enumeration(const std::string& key, const EnumNames<Enum, N>& names, Enum fallback) {
+    std::vector<std::string> spellings;
+    int fallback_index = -1;
+    for (const EnumName<Enum>& entry : names) {
+      if (entry.value == fallback) fallback_index = static_cast<int>(spellings.size());
+      spellings.emplace_back(entry.name);
+    }
+    if (fallback_index < 0) throw std::logic_error("enumeration: the default has no spelling");
+    return names[static_cast<std::size_t>(choice(key, spellings, fallback_index))].value;
+  }
+  /// Fails when two of the keys are present; returns the one present, or "" when none (after
+  /// rejecting any unknown member, which is likely a misspelt alternative).
+  std::string oneOf(const std::vector<std::string>& keys);
+  /// Rejects every member not read. Call once, after all reads.
+  void finish() const;
+
+ private:
+  /// Records a default in the effective config for a member that was absent, and in the log.
+  void recordDefault(const std::string& key, const Json& value, const std::string& type,
+                     const std::string& range, const std::vector<std::string>& choices = {});
+  /// Logs that `key` may be absent with `value` as its default.
+  void logDefault(const std::string& key, const Json& value);
+
+  Field field_;
+  std::set<std::string> read_;
+};
+
+}  // namespace canopy::spec

@@ -1,0 +1,233 @@
+#include "spec/loader.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "core/printable.h"
+#include "spec/budget.h"
+#include "spec/internal/referenced_file.h"
+#include "spec/internal/sections.h"
+
+namespace canopy::spec {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kMaxCoordinate = 1e7;  // m
+
+Aabb readAoi(ObjectReader& root) {
+  const Field field = root.required("aoi");
+  const std::vector<Field> v = field.elements(4, 4);
+  const Aabb aoi{Vec2(v[0].number(), v[1].number()), Vec2(v[2].number(), v[3].number())};
+  if (!(aoi.hi.x() > aoi.lo.x() && aoi.hi.y() > aoi.lo.y())) {
+    field.fail("expected [x_min, y_min, x_max, y_max] with x_max > x_min and y_max > y_min");
+  }
+  // Box2D holds positions in single precision: beyond 10⁷ m a step is coarser than a metre.
+  if (aoi.lo.cwiseAbs().maxCoeff() > kMaxCoordinate ||
+      aoi.hi.cwiseAbs().maxCoeff() > kMaxCoordinate)
+    field.fail("expected an AOI within ±1e7 m of the origin (Box2D keeps positions as floats)");
+  return aoi;
+}
+
+void readClock(ObjectReader& root, ScenarioSpec& spec) {
+  const auto field = root.optional("clock");
+  if (!field) {
+    root.field().out()->operator[]("clock") = Json{{"dt", spec.dt}, {"duration", spec.duration}};
+    return;
+  }
+  ObjectReader clock = field->object();
+  spec.dt = clock.number("dt", spec.dt, Bound::positive);
+  spec.duration = clock.number("duration", spec.duration, Bound::positive);
+  clock.finish();
+  if (spec.duration < spec.dt) {
+    throw ScenarioError(
+        field->file(), field->path() + ".duration",
+        "expected a duration of at least one step (dt = " + std::to_string(spec.dt) + " s)");
+  }
+  if (spec.duration / spec.dt > 1e7) {
+    throw ScenarioError(field->file(), field->path() + ".duration",
+                        "expected at most 10 million steps of dt");
+  }
+}
+
+// Labels: "tree" first, then the targets' labels in order of first appearance, then clutter's.
+void resolveLabels(const std::vector<std::string>& target_labels, const std::string& clutter_label,
+                   ScenarioSpec& spec) {
+  spec.labels = {"tree"};
+  auto idOf = [&spec](const std::string& label) {
+    const auto it = std::find(spec.labels.begin(), spec.labels.end(), label);
+    if (it != spec.labels.end()) return static_cast<sensing::LabelId>(it - spec.labels.begin());
+    spec.labels.push_back(label);
+    return static_cast<sensing::LabelId>(spec.labels.size() - 1);
+  };
+  for (std::size_t t = 0; t < spec.targets.size(); ++t)
+    spec.targets[t].label = idOf(target_labels[t]);
+  spec.sensing.clutter_label = idOf(clutter_label);
+}
+
+ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOptions& options) {
+  for (const std::string& assignment : options.overrides)
+    internal::applyOverride(document, assignment);
+
+  ScenarioSpec spec;
+  spec.file = file;
+  Json effective = Json::object();
+  LoadContext context = internal::loadContextFor(file, options.allowed_roots);
+  context.budget_scale = options.budget_scale;
+  context.log = options.field_log;
+  ObjectReader root = Field(document, file, "", &effective, &context).object();
+
+  // Each section is read even when an earlier one failed, so that one pass reports every error
+  // it can; sections that depend on a failed one are skipped (their errors would be echoes).
+  std::vector<ScenarioError> errors;
+  auto attempt = [&errors](auto&& read) {
+    try {
+      read();
+      return true;
+    } catch (const ScenarioErrors& e) {
+      errors.insert(errors.end(), e.errors().begin(), e.errors().end());
+    } catch (const ScenarioError& e) {
+      errors.push_back(e);
+    }
+    return false;
+  };
+  attempt([&] { spec.name = root.string("name", fs::path(file).stem().string()); });
+  attempt([&] { spec.description = root.string("description", ""); });
+  attempt([&] {
+    if (options.seed) {
+      spec.seed = *options.seed;
+      effective["seed"] = spec.seed;
+      root.optional("seed");  // accepted, replaced by the command line
+    } else if (auto seed = root.optional("seed")) {
+      spec.seed = seed->unsignedInteger();
+    } else {
+      effective["seed"] = spec.seed;
+    }
+  });
+  const bool aoi_ok = attempt([&] { spec.aoi = readAoi(root); });
+  const bool frame_ok = attempt([&] { readClock(root, spec); }) && aoi_ok;  // both read
+  if (!frame_ok) throw ScenarioErrors(std::move(errors));  // everything below needs both
+  std::string clutter_label;
+  bool bodies_ok = attempt([&] { clutter_label = internal::readSensing(root, spec); });
+  bodies_ok = attempt([&] { internal::readUavs(root, spec); }) && bodies_ok;
+  std::vector<std::string> target_labels;
+  bodies_ok = attempt([&] { target_labels = internal::readTargets(root, spec); }) && bodies_ok;
+
+  attempt([&] {
+    Json occluders_effective = Json::array();
+    if (auto list = root.optional("occluders")) {
+      std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
+      internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
+    }
+    effective["occluders"] = occluders_effective;
+  });
+  attempt([&] { internal::readTracking(root, spec); });
+  attempt([&] { internal::readFusion(root, spec); });
+  if (bodies_ok) {
+    // Labels, the planner and the analysis name UAVs and targets.
+    resolveLabels(target_labels, clutter_label, spec);
+    attempt([&] { internal::readPlanner(root, spec); });
+    attempt([&] { internal::readAnalysis(root, spec); });
+  } else {
+    root.optional("planner");  // skipped above, not unknown
+    root.optional("analysis");
+  }
+  attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
+  if (errors.size() == 1) throw errors[0];
+  if (!errors.empty()) throw ScenarioErrors(std::move(errors));
+  checkWork(spec, options.budget_scale);
+
+  spec.effective_config = effective.dump(2);
+  return spec;
+}
+
+}  // namespace
+
+ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
+                              const LoadOptions& options) {
+  return loadDocument(parseJson(text, file), file, options);
+}
+
+ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options) {
+  const fs::path path = resolveScenario(scenario);
+  return loadDocument(readJsonFile(path.string()), path.string(), options);
+}
+
+fs::path libraryDir() {
+  return fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library";
+}
+
+std::vector<fs::path> scenarioSearchPath() {
+  std::vector<fs::path> dirs;
+  if (const char* list = std::getenv("CANOPY_PATH"); list && *list) {
+    std::string text = list;
+    for (std::size_t start = 0; start <= text.size();) {
+      const std::size_t colon = std::min(text.find(':', start), text.size());
+      if (colon > start) dirs.emplace_back(text.substr(start, colon - start));
+      start = colon + 1;
+    }
+  }
+  if (const char* dir = std::getenv("CANOPY_LIBRARY_DIR"); dir && *dir) dirs.emplace_back(dir);
+  dirs.push_back(libraryDir());
+  return dirs;
+}
+
+std::vector<std::string> libraryScenarios() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const auto& entry : fs::directory_iterator(dir, error)) {
+      if (entry.is_regular_file() && entry.path().extension() == ".json") {
+        names.push_back(entry.path().stem().string());
+      }
+    }
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+fs::path resolveScenario(const std::string& scenario) {
+  std::error_code error;
+  if (fs::is_regular_file(scenario, error)) return scenario;
+  for (const fs::path& dir : scenarioSearchPath()) {
+    for (const fs::path& candidate : {dir / scenario, dir / (scenario + ".json")}) {
+      if (fs::is_regular_file(candidate, error)) return candidate;
+    }
+  }
+  if (fs::exists(scenario, error)) {
+    throw ScenarioError(printable(scenario, 200), "",
+                        "not a regular file (expected a scenario JSON file or a built-in name)");
+  }
+  throw ScenarioError(printable(scenario, 200), "",
+                      "no such scenario file, and no scenario of that name in $CANOPY_PATH or "
+                      "the built-in library (see `canopy list`)");
+}
+
+namespace {
+
+std::vector<world::TreeDef> readLayout(const Json& document, const std::string& file,
+                                       const LoadContext* context) {
+  const Json list =
+      document.is_object() && document.contains("occluders") ? document["occluders"] : document;
+  std::vector<world::TreeDef> trees;
+  Json effective = Json::array();
+  std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
+  const Aabb everywhere{Vec2::Constant(-1e9), Vec2::Constant(1e9)};
+  internal::readOccluders(Field(list, file, "occluders", nullptr, context), everywhere, trees,
+                          effective, include_stack);
+  return trees;
+}
+
+}  // namespace
+
+std::vector<world::TreeDef> loadLayout(const std::string& path) {
+  const LoadContext context = internal::loadContextFor(path, {});
+  return readLayout(readJsonFile(path), path, &context);
+}
+
+std::vector<world::TreeDef> layoutFromText(const std::string& text, const std::string& file) {
+  return readLayout(parseJson(text, file), file, nullptr);
+}
+
+}  // namespace canopy::spec

@@ -1,0 +1,134 @@
+// Every observer of a run sees the same steps, 0..K, once each and in order, each as the record
+// of what the simulation held after that tick.
+#include "sim/step_observer.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+#include "sim/recorder.h"
+#include "sim/run.h"
+#include "sim/simulation.h"
+#include "sim/summary.h"
+#include "spec/loader.h"
+
+namespace canopy::sim {
+namespace {
+namespace fs = std::filesystem;
+
+struct Probe final : StepObserver {
+  std::vector<int> steps;
+  std::vector<double> times;
+  void onStep(const StepRecord& record) override {
+    steps.push_back(record.step);
+    times.push_back(record.time);
+  }
+};
+
+// Keeps a copy of every record it is handed.
+struct Copier final : StepObserver {
+  std::vector<StepRecord> records;
+  void onStep(const StepRecord& record) override { records.push_back(record); }
+};
+
+struct Thrower final : StepObserver {
+  int at;
+  explicit Thrower(int step) : at(step) {}
+  void onStep(const StepRecord& record) override {
+    if (record.step == at) throw std::runtime_error("observer failed");
+  }
+};
+
+spec::ScenarioSpec demo() {
+  spec::LoadOptions load;
+  load.overrides = {"clock.duration=2"};
+  return spec::loadScenario("demo", load);
+}
+
+TEST(StepObserver, AllObserversSeeStepsZeroToKInOrder) {
+  const spec::ScenarioSpec spec = demo();
+  Simulation sim(spec);
+  Probe a, b;
+  SummaryBuilder summary(spec);
+  StepObserver* const observers[] = {&a, &summary, &b};
+  runToEnd(sim, observers);
+  std::vector<int> expected;
+  for (int k = 0; k <= spec.steps(); ++k) expected.push_back(k);
+  EXPECT_EQ(a.steps, expected);
+  EXPECT_EQ(b.steps, expected);
+  EXPECT_EQ(a.times, b.times);
+  EXPECT_EQ(summary.steps(), spec.steps() + 1);
+  EXPECT_NEAR(a.times.back(), spec.steps() * spec.dt, 1e-9);  // t accumulates dt
+}
+
+TEST(StepObserver, EveryObserverSeesTheRecordTheSimulationHadAtThatStep) {
+  // Trajectory Handover plans (SMA), so records carry plans on epochs. A second simulation of the
+  // same spec, ticked by hand, gives the reference through its world's and team's accessors.
+  spec::LoadOptions load;
+  load.overrides = {"clock.duration=3"};
+  const spec::ScenarioSpec spec = spec::loadScenario("trajectory_handover", load);
+  Simulation sim(spec);
+  Copier first, last;
+  SummaryBuilder summary(spec);
+  StepObserver* const observers[] = {&first, &summary, &last};
+  runToEnd(sim, observers);
+
+  Simulation reference(spec);
+  ASSERT_EQ(static_cast<int>(first.records.size()), spec.steps() + 1);
+  ASSERT_EQ(last.records.size(), first.records.size());
+  for (int k = 0; k <= spec.steps(); ++k) {
+    reference.tick();
+    const world::WorldSnapshot truth = reference.world().snapshot();
+    const StepRecord& seen = first.records[k];
+    EXPECT_EQ(seen.step, k);
+    EXPECT_EQ(seen.time, truth.time);
+    for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
+      EXPECT_EQ(seen.uavs[i].position, truth.uavs[i].position) << "step " << k;
+      EXPECT_EQ(seen.uavs[i].yaw, truth.uavs[i].yaw);
+      EXPECT_EQ(seen.uavs[i].command, reference.world().commandedVelocity(static_cast<int>(i)));
+    }
+    for (std::size_t t = 0; t < spec.targets.size(); ++t)
+      EXPECT_EQ(seen.targets[t].position, truth.targets[t].position);
+    EXPECT_EQ(seen.fusion.messages, reference.team().fusion().diagnostics().messages);
+    EXPECT_EQ(seen.plan.has_value(), k % reference.stepsPerPlan() == 0);
+    // Both observers saw the same record, to the last bit of its line.
+    EXPECT_EQ(recordLine(spec.labels, last.records[k]), recordLine(spec.labels, seen));
+  }
+  EXPECT_EQ(summary.steps(), spec.steps() + 1);
+}
+
+TEST(StepObserver, RunScenarioHandsItsStepsToExtraObservers) {
+  const spec::ScenarioSpec spec = demo();
+  const fs::path dir = fs::temp_directory_path() / "canopy_observer_run";
+  fs::remove_all(dir);
+  Probe probe;
+  RunOptions options;
+  options.out_dir = dir;
+  options.observers = {&probe};
+  const RunResult result = runScenario(spec, options);
+  EXPECT_EQ(static_cast<int>(probe.steps.size()), result.steps);
+  EXPECT_EQ(probe.steps.front(), 0);
+  EXPECT_EQ(probe.steps.back(), spec.steps());
+  fs::remove_all(dir);
+}
+
+TEST(StepObserver, AFailingObserverStopsTheRunAndLeavesNoResult) {
+  const spec::ScenarioSpec spec = demo();
+  const fs::path dir = fs::temp_directory_path() / "canopy_observer_throw";
+  fs::remove_all(dir);
+  Thrower thrower(3);
+  Probe after;
+  RunOptions options;
+  options.out_dir = dir;
+  options.observers = {&thrower, &after};
+  EXPECT_THROW(runScenario(spec, options), std::runtime_error);
+  EXPECT_EQ(after.steps, (std::vector<int>{0, 1, 2}));  // step 3 never reached it
+  EXPECT_FALSE(fs::exists(dir / "record.jsonl"));
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace canopy::sim

@@ -1,0 +1,100 @@
+#include "spec/budget.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "sim/run.h"
+#include "spec/error.h"
+#include "spec/loader.h"
+
+namespace canopy::spec {
+namespace {
+
+// The limits must never bite the scenarios researchers start from: every library scenario sits
+// at least 100 times below each of them.
+TEST(WorkBudget, EveryLibraryScenarioIsFarBelowEveryLimit) {
+  const WorkLimits limits = workLimits();
+  for (const std::string& name : libraryScenarios()) {
+    const ScenarioSpec spec = loadScenario(name);
+    const WorkEstimate work = estimateWork(spec);
+    std::printf(
+        "%-24s world %.2e record %.2e B tracking %.2e fusion %.2e planning %.2e trees %zu\n",
+        name.c_str(), work.world_units, work.record_bytes, work.tracking_units, work.fusion_units,
+        work.planning_units, spec.trees.size());
+    EXPECT_LT(100 * work.world_units, limits.world_units) << name;
+    EXPECT_LT(100 * work.record_bytes, limits.record_bytes) << name;
+    EXPECT_LT(100 * work.tracking_units, limits.tracking_units) << name;
+    EXPECT_LT(100 * work.fusion_units, limits.fusion_units) << name;
+    EXPECT_LT(100 * work.planning_units, limits.planning_units) << name;
+    EXPECT_LT(100.0 * static_cast<double>(spec.trees.size()), limits.trees) << name;
+  }
+}
+
+// The record-size estimate is an upper bound, and not a loose one: measured by running three
+// library scenarios (with clutter, with planning, with trees).
+TEST(WorkBudget, RecordSizeEstimateBoundsTheRecordWithinAFactorOfFour) {
+  for (const std::string name : {"demo", "occlusion_sharing", "resource_allocation"}) {
+    const ScenarioSpec spec = loadScenario(name);
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("canopy_budget_" + name);
+    std::filesystem::remove_all(dir);
+    sim::runScenario(spec, {dir, "test", {}});
+    const double bytes = static_cast<double>(std::filesystem::file_size(dir / "record.jsonl"));
+    const double estimate = estimateWork(spec).record_bytes;
+    EXPECT_GE(estimate, bytes) << name;
+    EXPECT_LE(estimate, 4.0 * bytes) << name;
+    std::filesystem::remove_all(dir);
+  }
+}
+
+// The estimates by hand for a small scenario: 11 steps (duration 2 s, dt 0.2 s), 2 UAVs,
+// 3 targets, clutter 1 per scan, 5 fusion rounds, SMA-NBO H = 2 with 10 particles per step
+// (20 particles), max_iterations 7, plan period 1 s (3 epochs: t = 0, 1, 2).
+TEST(WorkBudget, EstimatesMatchTheirFormulasOnASmallScenario) {
+  const ScenarioSpec spec = loadScenarioText(R"({
+    "aoi": [0, 0, 100, 100], "clock": {"dt": 0.2, "duration": 2.0},
+    "sensing": {"clutter_rate": 1},
+    "uavs": [{"start": [10, 10]}, {"start": [20, 10]}],
+    "targets": [{"path": {"start": [30, 30], "velocity": [1, 0]}},
+                {"path": {"start": [40, 30], "velocity": [1, 0]}},
+                {"path": {"start": [50, 30], "velocity": [1, 0]}}],
+    "tracking": {"max_hypotheses": 100},
+    "fusion": {"rounds": 5},
+    "planner": {"algorithm": "sma", "horizon": 2, "pso": {"particles_per_step": 10, "max_iterations": 7}}
+  })",
+                                             "small.json");
+  const WorkEstimate work = estimateWork(spec);
+  EXPECT_DOUBLE_EQ(work.world_units, 11.0 * (2 + 3 + 2 * (3 + 1)));             // 143
+  EXPECT_DOUBLE_EQ(work.record_bytes, 11.0 * 2 * (1000 + 600 * 4));             // 74 800
+  EXPECT_DOUBLE_EQ(work.tracking_units, 11.0 * 2 * (4 * 4 + 100));              // 2 552
+  EXPECT_DOUBLE_EQ(work.fusion_units, 11.0 * 5 * 2 * 2 * 3);                    // 660
+  EXPECT_DOUBLE_EQ(work.planning_units, 3.0 * 2 * 1 * 20 * 7 * 2 * 1 * 3 * 2);  // 10 080
+}
+
+// A limit is exceeded by the field that drives it, and --budget (the scale) lifts it.
+TEST(WorkBudget, ExceedingALimitNamesTheFieldAndTheScaleLiftsIt) {
+  const std::string text = R"({
+    "aoi": [0, 0, 100, 100], "clock": {"dt": 0.2, "duration": 100.0},
+    "uavs": [{"start": [10, 10]}, {"start": [20, 10]}],
+    "targets": [{"path": {"start": [30, 30], "velocity": [0.1, 0]}}],
+    "planner": {"algorithm": "sma", "horizon": 50, "pso": {"particles_per_step": 10000, "max_iterations": 1000000}}
+  })";
+  try {
+    loadScenarioText(text, "days.json");
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.file(), "days.json");
+    EXPECT_EQ(e.field(), "planner.pso");
+    EXPECT_NE(e.message().find("expected at most 2.0e+11 planning units"), std::string::npos)
+        << e.message();
+  }
+  // 101 epochs × 2 UAVs × 500 000 particles × 10⁶ iterations × 50 × 1 × 1 × 2 ≈ 1.0e19.
+  LoadOptions generous;
+  generous.budget_scale = 1e9;
+  EXPECT_NO_THROW(loadScenarioText(text, "days.json", generous));
+}
+
+}  // namespace
+}  // namespace canopy::spec
