@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/outlines.h"
 #include "render/scene.h"
-#include "render/scene_builder.h"
 
 namespace canopy::render {
 namespace {

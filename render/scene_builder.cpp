@@ -1,11 +1,14 @@
+// buildScene: the frame's layout (the legend band, the map's viewport above it) and the map's
+// layers in drawing order — trees, footprints, occlusion maps and plans, estimates, the bodies
+// and their names. What it draws over the map in pixels is internal/overlay.cpp; the outlines it
+// draws (ellipses, footprints) are outlines.cpp.
 #include "render/scene_builder.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
 
+#include "render/internal/overlay.h"
+#include "render/internal/scene_sizes.h"
 #include "render/internal/text.h"
 
 namespace canopy::render {
@@ -16,24 +19,15 @@ double textWidthPx(const std::string& text, double scale) {
 
 namespace {
 
+using internal::addLegend;
+using internal::addScaleBar;
+using internal::addTimeStamp;
 using internal::kTextLineHeight;
+using internal::legendEntries;
+using internal::nameOr;
+using internal::rectangle;
+using internal::Sizes;
 using internal::textWidth;
-
-constexpr Rgba kLegendInk{70, 70, 70, 255};  // neutral colour of the legend's belief symbols
-
-std::string nameOr(const std::vector<std::string>& names, std::size_t i, const char* prefix) {
-  return i < names.size() && !names[i].empty() ? names[i] : prefix + std::to_string(i + 1);
-}
-
-std::vector<Vec2> rectangle(const Vec2& lo, const Vec2& hi) {
-  return {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
-}
-
-// Pixel sizes scale with the text: u = 1 at the default 800 px wide frame.
-struct Sizes {
-  double text;  // font units → px
-  double u;     // px per nominal px
-};
 
 // Disc crowns, then polygon crowns, then the polygons' outlines: grouped so that the canvas
 // switches GL state a few times rather than per tree (crowns share one colour, so the order
@@ -181,208 +175,7 @@ void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
   }
 }
 
-// One entry of the legend band: a symbol drawn by `draw` at a centre, then a label.
-struct LegendEntry {
-  std::string label;
-  std::vector<Primitive> symbol;  // around (0, 0), px
-};
-
-std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs, double u) {
-  std::vector<LegendEntry> entries;
-  const auto entry = [&entries](std::string label) -> std::vector<Primitive>& {
-    entries.push_back({std::move(label), {}});
-    return entries.back().symbol;
-  };
-  const Vec2 o = Vec2::Zero();
-  for (std::size_t i = 0; i < uavs; ++i) {
-    const Rgba c = uavColour(static_cast<int>(i));
-    std::vector<Primitive>& symbol = entry(nameOr(model.uav_names, i, "uav"));
-    add(symbol, Marker{o, MarkerShape::square, 14.0 * u, 0.0, withAlpha(c, 60), c, 1.5 * u});
-    add(symbol,
-        Marker{o, MarkerShape::arrow, 11.0 * u, 0.5 * std::numbers::pi, c, palette::kTarget, u});
-  }
-  std::vector<Primitive>& person = entry("person + trail");
-  add(person, Polyline{{Vec2(-8.0 * u, 4.0 * u), o}, 2.0 * u, palette::kTrail, false});
-  add(person,
-      Marker{o, MarkerShape::dot, 10.0 * u, 0.0, palette::kTarget, palette::kWhite, 1.5 * u});
-  std::vector<Primitive>& tree = entry("tree");
-  add(tree, Disc{o, 6.0 * u, palette::kTreeFill, palette::kTreeEdge, u});
-  // Every entry a run can need, whatever this step holds: the band keeps its height.
-  std::vector<Primitive>& estimate = entry("estimate, 2-sigma");
-  add(estimate, Ring{o, 7.0 * u, 1.5 * u, kLegendInk});
-  add(estimate, Marker{o, MarkerShape::cross, 10.0 * u, 0.0, kLegendInk, palette::kWhite, u});
-  add(entry("occlusion map"), Ring{o, 6.0 * u, 1.2 * u, kLegendInk});
-  if (model.plans) {
-    std::vector<Primitive>& plan = entry("plan");
-    add(plan, Polyline{{Vec2(-8.0 * u, 0.0), Vec2(8.0 * u, 0.0)}, 1.5 * u, kLegendInk, false});
-    add(plan,
-        Marker{Vec2(8.0 * u, 0.0), MarkerShape::dot, 5.0 * u, 0.0, kLegendInk, kLegendInk, 0.0});
-  }
-  return entries;
-}
-
-// Moves a legend symbol from (0, 0) to `at` (px).
-Primitive placed(Primitive p, const Vec2& at) {
-  std::visit(
-      [&](auto& q) {
-        using T = std::decay_t<decltype(q)>;
-        if constexpr (std::is_same_v<T, Polygon>) {
-          for (Vec2& v : q.vertices) v += at;
-        } else if constexpr (std::is_same_v<T, Polyline>) {
-          for (Vec2& v : q.points) v += at;
-        } else if constexpr (std::is_same_v<T, Disc> || std::is_same_v<T, Ring>) {
-          q.centre += at;
-
-        } else {
-          q.at += at;
-        }
-      },
-      p);
-  return p;
-}
-
-// Lays the entries out left to right in rows along the bottom; returns the band's height (px).
-double addLegend(const std::vector<LegendEntry>& entries, ImageSize size, const Sizes& z,
-                 std::vector<Primitive>& out) {
-  const double pad = 4.0 * z.u, row = kTextLineHeight * z.text + 10.0 * z.u, symbol = 20.0 * z.u;
-  const double gap = 14.0 * z.u;
-  std::vector<Vec2> origins;  // top-left of each entry, relative to the band's top-left
-  double x = pad, y = pad;
-  for (const LegendEntry& e : entries) {
-    const double w = symbol + 4.0 * z.u + textWidth(e.label) * z.text;
-    if (x > pad && x + w > size.width - pad) {
-      x = pad;
-      y += row;
-    }
-    origins.push_back(Vec2(x, y));
-    x += w + gap;
-  }
-  const double band = y + row + pad;
-  const double top = size.height - band;
-  add(out, Polygon{rectangle(Vec2(0.0, top), Vec2(size.width, size.height)), palette::kPanel});
-  add(out, Polyline{{Vec2(0.0, top), Vec2(size.width, top)}, z.u, palette::kPanelEdge, false});
-  for (std::size_t k = 0; k < entries.size(); ++k) {
-    const Vec2 at = origins[k] + Vec2(0.0, top);
-    for (const Primitive& p : entries[k].symbol)
-      out.push_back(placed(p, at + Vec2(0.5 * symbol, 0.5 * row)));
-    add(out, Text{at + Vec2(symbol + 4.0 * z.u, 0.5 * (row - kTextLineHeight * z.text)),
-                  Vec2::Zero(), entries[k].label, z.text, palette::kText});
-  }
-  return band;
-}
-
-void addTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
-                  std::vector<Primitive>& out) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%s%st = %.2f s   k = %d", model.title.c_str(),
-                model.title.empty() ? "" : "   ", truth.time, truth.step);
-  const double pad = 4.0 * z.u;
-  const Vec2 lo(pad, pad),
-      hi = lo + Vec2(textWidth(text) * z.text + 2.0 * pad, kTextLineHeight * z.text + 2.0 * pad);
-  add(out, Polygon{rectangle(lo, hi), palette::kPanel});
-  add(out, Polyline{rectangle(lo, hi), z.u, palette::kPanelEdge, true});
-  add(out, Text{lo + Vec2(pad, pad), Vec2::Zero(), text, z.text, palette::kText});
-}
-
-// A bar of scaleBarLength(map width) metres at the bottom left of the map, above the legend.
-void addScaleBar(const Viewport& v, ImageSize size, double band, const Sizes& z,
-                 std::vector<Primitive>& out) {
-  const double length = scaleBarLength(size.width * v.pixel_size);
-  if (!(length > 0.0)) return;
-  const double px = length / v.pixel_size, pad = 8.0 * z.u, tick = 5.0 * z.u;
-  const double y = size.height - band - pad;
-  const Vec2 left(pad + 4.0 * z.u, y), right = left + Vec2(px, 0.0);
-  const std::string label = scaleBarLabel(length);
-  const double line = kTextLineHeight * z.text;
-  const Vec2 lo(pad, y - line - tick - 6.0 * z.u),
-      hi(std::max(right.x(), left.x() + textWidth(label) * z.text) + 4.0 * z.u, y + 3.0 * z.u);
-  add(out, Polygon{rectangle(lo, hi), palette::kPanel});
-  add(out, Polyline{{left - Vec2(0, tick), left, right, right - Vec2(0, tick)},
-                    2.0 * z.u,
-                    palette::kText,
-                    false});
-  add(out, Text{Vec2(left.x(), y - tick - line - 2.0 * z.u), Vec2::Zero(), label, z.text,
-                palette::kText});
-}
-
 }  // namespace
-
-double scaleBarLength(double width_m) {
-  if (!(width_m > 0.0) || !std::isfinite(width_m)) return 0.0;
-  const double limit = 0.25 * width_m;
-  const double decade = std::pow(10.0, std::floor(std::log10(limit)));
-  for (const double step : {5.0, 2.0, 1.0}) {
-    if (step * decade <= limit * (1.0 + 1e-12)) return step * decade;
-  }
-  return decade;
-}
-
-std::string scaleBarLabel(double length_m) {
-  char text[32];
-  if (length_m >= 1000.0) {
-    std::snprintf(text, sizeof text, "%g km", length_m / 1000.0);
-  } else {
-    std::snprintf(text, sizeof text, "%g m", length_m);
-  }
-  return text;
-}
-
-std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points) {
-  if (!P.allFinite() || !centre.allFinite() || points < 3) return {};
-  const Eigen::SelfAdjointEigenSolver<Mat2> eigen(0.5 * (P + P.transpose()));
-  Mat2 V = eigen.eigenvectors();
-  if (V.determinant() < 0.0)
-    V.col(1) = -V.col(1);  // a rotation, so the points run counter-clockwise
-  // P = V Λ Vᵀ: the points c + V (2√λ₁ cos θ, 2√λ₂ sin θ) satisfy (p − c)ᵀ P⁻¹ (p − c) = 4.
-  const Vec2 axes = 2.0 * eigen.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-  std::vector<Vec2> out;
-  out.reserve(static_cast<std::size_t>(points));
-  for (int k = 0; k < points; ++k) {
-    const double theta = 2.0 * std::numbers::pi * k / points;
-    out.push_back(centre + V * Vec2(axes.x() * std::cos(theta), axes.y() * std::sin(theta)));
-  }
-  return out;
-}
-
-std::vector<Vec2> footprintCorners(const sensing::Footprint& f) {
-  if (f.shape == sensing::FootprintShape::disc) return {};
-  if (f.shape == sensing::FootprintShape::sector) {
-    constexpr double kArcStep = std::numbers::pi / 180.0;  // rad, 1°
-    const int arcs = std::max(2, static_cast<int>(std::ceil(2.0 * f.half_angle / kArcStep)));
-    std::vector<Vec2> out{f.centre};
-    for (int k = 0; k <= arcs; ++k)
-      out.push_back(f.sectorPoint(f.half_angle * (2.0 * k / arcs - 1.0)));
-    return out;
-  }
-  const Vec2 along = f.half.x() * Vec2(f.cos_yaw, f.sin_yaw);
-  const Vec2 across = f.half.y() * Vec2(-f.sin_yaw, f.cos_yaw);
-  return {f.centre + along + across, f.centre - along + across, f.centre - along - across,
-          f.centre + along - across};
-}
-
-std::vector<Vec2> visibleSector(const sensing::Footprint& sector,
-                                const std::vector<world::TreeDef>& trees) {
-  std::vector<Vec2> out = footprintCorners(sector);
-  if (out.empty()) return out;
-  const Aabb box = sector.bounds();
-  std::vector<const world::TreeDef*> near;
-  for (const world::TreeDef& tree : trees) {
-    const Aabb b = world::bounds(tree);
-    if (b.lo.x() <= box.hi.x() && box.lo.x() <= b.hi.x() && b.lo.y() <= box.hi.y() &&
-        box.lo.y() <= b.hi.y())
-      near.push_back(&tree);
-  }
-  const Vec2 apex = out.front();
-  for (std::size_t k = 1; k < out.size(); ++k) {
-    double first = 1.0;  // the fraction of the ray apex → arc point before any crown
-    for (const world::TreeDef* tree : near) {
-      const double s = world::segmentEntry(*tree, apex, out[k]);
-      if (s >= 0.0 && s < first) first = s;
-    }
-    out[k] = apex + first * (out[k] - apex);
-  }
-  return out;
-}
 
 Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
                  std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "agents/belief.h"
+#include "render/outlines.h"
 #include "render/scene.h"
 #include "render/trails.h"
 #include "sensing/sensor.h"
@@ -48,24 +49,11 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
                  std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,
                  ImageSize size, const SceneOptions& options = {});
 
-/// The points of the 2-σ ellipse of a position covariance P (m²) around `centre`: the level set
-/// (p − c)ᵀ P⁻¹ (p − c) = 4, as `points` vertices counter-clockwise. Empty when P is not finite.
-std::vector<Vec2> covarianceEllipse(const Vec2& centre, const Mat2& P, int points = 36);
-
 /// The length (m) of a scale bar for a map `width_m` wide: the largest 1, 2 or 5 × 10^k at most a
 /// quarter of the width.
 double scaleBarLength(double width_m);
 
 /// "20 m", "500 m", "0.5 m", "2 km" for a scale bar.
 std::string scaleBarLabel(double length_m);
-
-/// The corners of a rectangular footprint; for a sector its apex, then points along its arc no
-/// more than 1° apart; an empty list for a disc. Star-shaped from its first point either way.
-std::vector<Vec2> footprintCorners(const sensing::Footprint& footprint);
-
-/// What a ground robot's sector camera sees past the crowns: the sector's outline with each arc
-/// point pulled back along its ray from the apex to where the ray first enters a crown.
-std::vector<Vec2> visibleSector(const sensing::Footprint& sector,
-                                const std::vector<world::TreeDef>& trees);
 
 }  // namespace canopy::render

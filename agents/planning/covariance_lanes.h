@@ -2,7 +2,7 @@
 // Four covariance recursions side by side: each of the ten unique entries of P holds one
 // recursion per lane of a four-double vector (core/lanes.h), so one instruction advances four.
 // The NBO cost runs the particles of the swarm four at a time this way, a track at a time
-// (agents/planning/nominal_cost.cpp). Each lane performs the scalar operations of
+// (agents/planning/nominal_cost_evaluate.cpp). Each lane performs the scalar operations of
 // symmetric_covariance.h in the same order, so a lane's bits are those of the scalar recursion
 // (tests/agents/planning/covariance_lanes_test.cpp). The prediction is symmetric_covariance.h's
 // template itself; the update below repeats the scalar update's operations on whole lanes, with a

@@ -92,6 +92,8 @@ class NominalCost {
   int freeCount() const { return static_cast<int>(free_.size()); }
 
  private:
+  static constexpr int kLanes = 4;  // candidates evaluated side by side
+
   struct Mover {                      // a UAV's kinematics and camera, as the cost moves it
     Vec2 position;                    // m, p_{i,0}
     double cos_yaw, sin_yaw;          // ψ now
@@ -110,7 +112,8 @@ class NominalCost {
   bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
     return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
   }
-  // Moves a UAV through H actions: sink(t, p, (cos ψ, sin ψ)) at each of the H·S samples t.
+  // Moves a UAV through H actions: sink(t, p, (cos ψ, sin ψ)) at each of the H·S samples t
+  // (nominal_cost_motion.h).
   template <class Sink>
   void fly(const Mover& uav, std::span<const Vec2> actions, Sink&& sink) const;
   // fly() for a ground robot: each action as the world's unicycle moves it.

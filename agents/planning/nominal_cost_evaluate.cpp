@@ -1,0 +1,139 @@
+// NominalCost::evaluate: the free UAVs' candidate plans, four side by side (one per lane of
+// core/lanes.h), flown, then each reachable track's recursion run from where prepare() left it;
+// compiled once for the x86-64 baseline and once for AVX2, chosen by the CPU (core/cpu.h).
+#include <algorithm>
+#include <bit>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "agents/planning/nominal_cost.h"
+#include "agents/planning/nominal_cost_motion.h"
+#include "core/cpu.h"
+
+namespace canopy::agents::planning {
+
+#if defined(__x86_64__)
+[[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
+                                                       std::span<double> costs) {
+  evaluateBody(actions, costs);
+}
+#else  // elsewhere the baseline build only
+void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<double> costs) {
+  evaluateBody(actions, costs);
+}
+#endif
+
+void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs) {
+  evaluateBody(actions, costs);
+}
+
+void NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions,
+                               std::span<double> costs) {
+  set == InstructionSet::avx2 ? evaluateAvx2(actions, costs) : evaluateBaseline(actions, costs);
+}
+
+double NominalCost::evaluate(std::span<const Vec2> actions) {
+  double cost = 0.0;
+  evaluate(actions, std::span<double>(&cost, 1));
+  return cost;
+}
+
+[[gnu::always_inline]] inline void NominalCost::evaluateBody(std::span<const Vec2> actions,
+                                                             std::span<double> costs) {
+  using lanes::load;
+  using lanes::store;
+  const int H = horizon_, S = substeps_, T = H * S;
+  const std::size_t per_candidate = free_.size() * H;
+  const std::size_t n_candidates = costs.size();
+  const int n_targets = static_cast<int>(start_.size());
+  const double tau = period_ / S;
+  if (actions.size() != per_candidate * n_candidates) {
+    std::fprintf(stderr, "NominalCost::evaluate: %zu actions for %zu candidates of %zu\n",
+                 actions.size(), n_candidates, per_candidate);
+    std::abort();
+  }
+  for (std::size_t first = 0; first < n_candidates; first += kLanes) {
+    // Lane l runs candidate first + l; past the last candidate a lane repeats it (and is dropped).
+    std::size_t candidate[kLanes];
+    for (int lane = 0; lane < kLanes; ++lane) {
+      candidate[lane] = std::min(first + lane, n_candidates - 1);
+    }
+    for (std::size_t f = 0; f < free_.size(); ++f) {
+      PoseLanes* poses = &free_pose_[f * T];
+      for (int lane = 0; lane < kLanes; ++lane) {
+        const auto plan = actions.subspan(candidate[lane] * per_candidate + f * H, H);
+        fly(free_[f], plan, [&](int t, const Vec2& p, const Vec2& heading) {
+          poses[t].x[lane] = p.x();
+          poses[t].y[lane] = p.y();
+          poses[t].c[lane] = heading.x();
+          poses[t].s[lane] = heading.y();
+        });
+        final_position_[lane * n_uavs_ + free_index_[f]] =
+            Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
+      }
+    }
+
+    for (const int j : reachable_) {
+      const int first_sample = start_[j];
+      CovarianceLanes P =
+          CovarianceLanes::of(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + first_sample]);
+      M4 seen_final = M4{};
+      int m = first_sample / S;         // the action (0-based) of the first sample
+      int left = S - first_sample % S;  // samples of it still to come, the first included
+      for (int t = first_sample; t < T; ++t) {
+        const std::size_t k = static_cast<std::size_t>(j) * T + t;
+        const Vec2& z = z_[k];
+        predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
+        // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
+        // tree on the segment p_{i,m} → z_{j,m}}; the fixed UAVs' part is fused in R_fix.
+        M4 seen = M4{};
+        if (fixed_seen_[k]) {
+          seen = M4{} - 1;
+          updatePosition(P, NoiseLanes::of(fixed_R_[k]), seen);
+        }
+        for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
+          const int f = std::countr_zero(bits);
+          const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
+          M4 sees = footprintHolds(free_[f].at_origin, pose, z);
+          if (free_[f].line_of_sight) {  // tested once here, not per lane in sightClear
+            for (int lane = 0; lane < kLanes; ++lane) {
+              if (sees[lane] != 0 && !sightClear(free_[f], Vec2(pose.x[lane], pose.y[lane]), z)) {
+                sees[lane] = 0;
+              }
+            }
+          }
+          if (!lanes::anyLane(sees)) continue;
+          NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, free_[f].quality);  // S·R
+          R.r00 = sees ? R.r00 : lanes::broadcast(1.0);  // I in a lane that does not see
+          R.r01 = sees ? R.r01 : V4{};
+          R.r10 = sees ? R.r10 : V4{};
+          R.r11 = sees ? R.r11 : lanes::broadcast(1.0);
+          updatePosition(P, R, sees);
+          seen |= sees;
+        }
+        if (--left == 0) {  // the plan instant t_m ends the action: γ^{m−1} tr(P_{j,m})
+          store(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + m)],
+                discount_[m] * stageTrace(P));
+          ++m;
+          left = S;
+        }
+        if (t == T - 1) seen_final = seen;
+      }
+      store(&trace_final_[kLanes * j], P.positionTrace());  // tr(P_{j,H}[pos])
+      std::memcpy(&in_view_final_[kLanes * j], &seen_final, sizeof seen_final);
+    }
+    // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
+    V4 J = V4{};
+    for (int j = 0; j < n_targets; ++j) {
+      J += cost_start_[j];
+      for (int k = start_[j] / S; k < H; ++k)
+        J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
+    }
+    for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
+      costs[first + lane] = addTerminalPenalty(lane, J[lane]);
+    }
+  }
+}
+
+}  // namespace canopy::agents::planning
