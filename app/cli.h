@@ -49,7 +49,7 @@ class Args {
 [[noreturn]] void usageError(const std::string& what, const std::string& message);
 
 /// The options shared by every command that loads scenarios: `--budget K` (every work limit of
-/// scenarios/budget.h times K) and `--allow-path DIR` (includes and track files may also be read
+/// spec/budget.h times K) and `--allow-path DIR` (includes and track files may also be read
 /// from DIR). Takes its value and returns true when `arg` is one of them.
 bool takeLoadOption(Args& args, const std::string& arg, spec::LoadOptions& load);
 

@@ -1,5 +1,5 @@
 // `canopy schema [--markdown]`: the JSON Schema of scenario files, or the reference page, both
-// from the loader's own field table (scenarios/schema.h).
+// from the loader's own field table (spec/schema.h).
 #include <cstdio>
 
 #include "app/commands.h"

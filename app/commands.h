@@ -26,7 +26,7 @@ render::ImageSize imageSizeValue(Args& args, const std::string& name);
 /// trials run now.
 int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                          int jobs, const experiments::Shard& shard = {});
-/// Runs a sweep over the MPI ranks (app/sweep_mpi.h); exit 2 naming --mpi without MPI.
+/// Runs a sweep over the MPI ranks (experiments/sweep_mpi.h); exit 2 naming --mpi without MPI.
 int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                     int jobs);
 

@@ -10,10 +10,10 @@ namespace canopy::app {
 namespace {
 
 // The options of run, validate, sweep and analyze that load scenarios (app/cli.h).
-#define CANOPY_LOAD_OPTIONS                                                                  \
-  {"--budget", "K", "1", "multiply every load-time work limit (scenarios/budget.h) by K"}, { \
-    "--allow-path", "DIR", "none",                                                           \
-        "also read layout includes and track files from DIR (repeatable)"                    \
+#define CANOPY_LOAD_OPTIONS                                                             \
+  {"--budget", "K", "1", "multiply every load-time work limit (spec/budget.h) by K"}, { \
+    "--allow-path", "DIR", "none",                                                      \
+        "also read layout includes and track files from DIR (repeatable)"               \
   }
 
 constexpr OptionHelp kRun[] = {

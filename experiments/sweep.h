@@ -52,7 +52,7 @@ struct SweepConfig {
 
 /// Reads and validates a sweep file (ScenarioError: file, field, expectation): axes unique, no
 /// value twice on an axis, and the number of configurations and trials within the work budget
-/// (scenarios/budget.h, scaled by load.budget_scale) before any configuration is built.
+/// (spec/budget.h, scaled by load.budget_scale) before any configuration is built.
 SweepSpec loadSweep(const std::string& path, const spec::LoadOptions& load = {});
 SweepSpec loadSweepText(const std::string& text, const std::string& file,
                         const spec::LoadOptions& load = {});

@@ -1,6 +1,6 @@
 #pragma once
 // The entry points of the fuzz targets, shared with their regression test
-// (tests/scenarios/fuzz_regression_test.cpp): each feeds raw bytes to one loader and returns true
+// (tests/spec/fuzz_regression_test.cpp): each feeds raw bytes to one loader and returns true
 // when they load, false on a ScenarioError. Those two are the contract; anything else escapes:
 // another exception, or a crash, leak, UB or hang that the sanitizers and libFuzzer catch.
 #include <filesystem>

@@ -1,7 +1,7 @@
 #pragma once
 // OSPA, the optimal sub-pattern assignment distance between a set of true positions and a set
 // of estimates (Schuhmacher, Vo & Vo 2008), the tracking-quality metric of summary.json, and the
-// assignment it shares with GOSPA (scenarios/gospa.h).
+// assignment it shares with GOSPA (metrics/gospa.h).
 #include <span>
 #include <vector>
 

@@ -1,123 +1,17 @@
 #include "render/run_coverage.h"
 
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <vector>
 
-#include "core/text_file.h"
 #include "render/coverage.h"
 #include "render/frame_writer.h"
-#include "spec/error.h"
-#include "spec/loader.h"
+#include "sim/record_reader.h"
 
 namespace canopy::render {
-namespace {
 
-namespace fs = std::filesystem;
-using Json = nlohmann::json;
-using spec::ScenarioError;
-
-std::string readText(const fs::path& path, const std::string& what) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) {
-    throw ScenarioError(path.string(), "",
-                        "missing: expected the " + what + " that `canopy run` writes");
-  }
-  std::optional<std::string> text = readTextFile(path);
-  if (!text) throw ScenarioError(path.string(), "", "cannot be read");
-  return std::move(*text);
-}
-
-spec::ScenarioSpec loadManifest(const fs::path& path) {
-  const Json manifest = Json::parse(readText(path, "manifest"), nullptr, false);
-  if (manifest.is_discarded()) throw ScenarioError(path.string(), "", "is not valid JSON");
-  if (!manifest.is_object() || !manifest.contains("effective_config") ||
-      !manifest["effective_config"].is_object()) {
-    throw ScenarioError(path.string(), "effective_config",
-                        "expected an object (the run's scenario)");
-  }
-  return spec::loadScenarioText(manifest["effective_config"].dump(),
-                                path.string() + ": effective_config");
-}
-
-// One record line's field, or a ScenarioError naming the line and the field.
-class LineReader {
- public:
-  LineReader(const fs::path& file, int line) : file_(file.string()), line_(line) {}
-
-  [[noreturn]] void fail(const std::string& field, const std::string& expected) const {
-    throw ScenarioError(file_,
-                        "line " + std::to_string(line_) + (field.empty() ? "" : ": " + field),
-                        "expected " + expected);
-  }
-  const Json& member(const Json& object, const std::string& key, const std::string& path) const {
-    if (!object.is_object() || !object.contains(key)) fail(path, "a field '" + key + "'");
-    return object[key];
-  }
-  double number(const Json& value, const std::string& path) const {
-    if (!value.is_number()) fail(path, "a number");
-    return value.get<double>();
-  }
-  Vec2 point(const Json& value, const std::string& path) const {
-    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number()) {
-      fail(path, "[x, y] (two numbers)");
-    }
-    return {value[0].get<double>(), value[1].get<double>()};
-  }
-  const Json& list(const Json& object, const std::string& key, std::size_t size) const {
-    const Json& value = member(object, key, key);
-    if (!value.is_array() || value.size() != size) {
-      fail(key, "a list of " + std::to_string(size) + " entries (as in the manifest's scenario)");
-    }
-    return value;
-  }
-
- private:
-  std::string file_;
-  int line_;
-};
-
-std::vector<world::WorldSnapshot> readRecord(const fs::path& path, const spec::ScenarioSpec& spec) {
-  std::stringstream text(readText(path, "record"));
-  std::vector<world::WorldSnapshot> steps;
-  std::string line;
-  for (int number = 1; std::getline(text, line); ++number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    const LineReader r(path, number);
-    const Json json = Json::parse(line, nullptr, false);
-    if (json.is_discarded() || !json.is_object()) r.fail("", "one JSON object per line");
-    world::WorldSnapshot& s = steps.emplace_back();
-    const Json& k = r.member(json, "k", "k");
-    if (!k.is_number_integer()) r.fail("k", "an integer step index");
-    s.step = k.get<int>();
-    s.time = r.number(r.member(json, "t", "t"), "t");
-    const Json& uavs = r.list(json, "uavs", spec.uavs.size());
-    for (std::size_t i = 0; i < uavs.size(); ++i) {
-      const std::string at = "uavs." + std::to_string(i);
-      world::UavState& uav = s.uavs.emplace_back();
-      uav.position = r.point(r.member(uavs[i], "p", at + ".p"), at + ".p");
-      uav.yaw = r.number(r.member(uavs[i], "yaw", at + ".yaw"), at + ".yaw");
-    }
-    const Json& targets = r.list(json, "targets", spec.targets.size());
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      const std::string at = "targets." + std::to_string(t) + ".p";
-      s.targets.emplace_back().position = r.point(r.member(targets[t], "p", at), at);
-    }
-  }
-  if (steps.empty()) throw ScenarioError(path.string(), "", "has no steps");
-  return steps;
-}
-
-}  // namespace
-
-std::string coverageCsvOfRun(const fs::path& run_dir, std::optional<render::ImageSize> size) {
-  std::error_code error;
-  if (!fs::is_directory(run_dir, error)) {
-    throw ScenarioError(run_dir.string(), "",
-                        "no such directory (expected the --out directory of `canopy run`)");
-  }
-  const spec::ScenarioSpec spec = loadManifest(run_dir / "manifest.json");
-  const std::vector<world::WorldSnapshot> steps = readRecord(run_dir / "record.jsonl", spec);
+std::string coverageCsvOfRun(const std::filesystem::path& run_dir,
+                             std::optional<render::ImageSize> size) {
+  const sim::RunRecord run = sim::readRun(run_dir);
+  const spec::ScenarioSpec& spec = run.spec;
 
   std::vector<sensing::SensorDef> sensors;
   for (const spec::UavSpec& uav : spec.uavs) sensors.push_back(uav.sensor);
@@ -127,7 +21,7 @@ std::string coverageCsvOfRun(const fs::path& run_dir, std::optional<render::Imag
       spec.aoi, size.value_or(render::fitSize(spec.aoi, render::kDefaultFrameLongSide)),
       spec.trees);
   std::string csv = render::coverageCsvHeader(names) + "\n";
-  for (const world::WorldSnapshot& step : steps) {
+  for (const world::WorldSnapshot& step : run.truth) {
     csv += render::coverageCsvRow(step.step, step.time,
                                   counter.count(step, sensors, spec.sensing.occlusion_model)) +
            "\n";

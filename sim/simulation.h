@@ -2,7 +2,7 @@
 // The one place where a tick is wired (architecture.md, "One tick"): commands → world step →
 // truth snapshot → per UAV: footprint and scan → per agent: pose and local tracking → fusion,
 // adopted by every agent → occlusion maps → on planning epochs, the team's plan → commands for
-// the next step → the step's record. Each tick fills one StepRecord (scenarios/step_record.h),
+// the next step → the step's record. Each tick fills one StepRecord (sim/step_record.h),
 // the only thing observers see.
 #include <vector>
 

@@ -47,7 +47,7 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   work.world_units = steps * (uavs + targets + uavs * (targets + clutter));
   // record.jsonl: per step and UAV a fixed part (pose, plan, intentions) and a part per track
   // held (targets, clutter-born tentatives); set above the sizes measured on the library
-  // scenarios (tests/scenarios/budget_test.cpp).
+  // scenarios (tests/spec/budget_test.cpp).
   work.record_bytes = steps * uavs * (1000.0 + 600.0 * (targets + clutter));
   // JPDA: gating is tracks × measurements; a cluster enumerates at most max_hypotheses events.
   const double measurements = targets + clutter;

@@ -1,5 +1,5 @@
 // The unit and one-line meaning of every field the scenario loader reads. Types, ranges and
-// defaults come from the loader itself (scenarios/field_log.h); tests/scenarios/schema_test.cpp
+// defaults come from the loader itself (spec/field_log.h); tests/sim/output_formats_test.cpp
 // fails when a field is read but not here, or here but never read. Elements of a list ("[]" at
 // the end of a path) are described by the list.
 #include "spec/schema.h"

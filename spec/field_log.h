@@ -1,7 +1,7 @@
 #pragma once
 // What the loader reads, field by field: each read names its path, JSON type, accepted range and
 // the default used when the field is absent. Filled while loading when LoadOptions::field_log is
-// set; scenarios/schema.h turns it into the JSON Schema and the reference page.
+// set; spec/schema.h turns it into the JSON Schema and the reference page.
 #include <map>
 #include <optional>
 #include <string>

@@ -1,9 +1,9 @@
 #pragma once
-// Private to scenarios/: a JSON walker that knows where it is. Every read names the file and the
-// field path in its errors, records what it read (or the default it used) into the effective
-// configuration, and finish() rejects fields nobody read.
+// A JSON walker that knows where it is: every read names the file and the field path in its
+// errors, records what it read (or the default it used) into the effective configuration, and
+// finish() rejects fields nobody read. The loader reads scenarios with it, experiments/ sweep
+// files and trial results.
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -14,40 +14,9 @@
 #include "core/types.h"
 #include "spec/error.h"
 #include "spec/field_log.h"
+#include "spec/json_text.h"
 
 namespace canopy::spec {
-
-// std::map-backed: slots of the effective config keep their address while siblings are added.
-using Json = nlohmann::json;
-
-constexpr int kMaxJsonDepth = 64;                             // nested arrays and objects
-constexpr std::size_t kMaxJsonBytes = std::size_t{64} << 20;  // 64 MiB
-
-/// Thrown by parseBoundedJson for input nested deeper than kMaxJsonDepth.
-struct JsonTooDeep : std::length_error {
-  JsonTooDeep() : std::length_error("JSON nested too deep") {}
-};
-
-/// Thrown by parseBoundedJson for an object that gives a key twice.
-struct JsonDuplicateKey : std::invalid_argument {
-  explicit JsonDuplicateKey(std::string k)
-      : std::invalid_argument("duplicate JSON key"), key(std::move(k)) {}
-  std::string key;
-};
-
-/// The JSON library's parse (comments allowed), refusing nesting deeper than kMaxJsonDepth before
-/// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; a key twice
-/// in one object: JsonDuplicateKey; the library's own exceptions for anything else.
-Json parseBoundedJson(const std::string& text);
-
-/// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError
-/// naming file:line:column.
-Json parseJson(const std::string& text, const std::string& file);
-/// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
-Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
-
-/// "a string \"x\"", "the number -3", "an array", ... for messages.
-std::string describe(const Json& value);
 
 /// Constraint on a number, checked after the type.
 enum class Bound { any, positive, non_negative, probability, open_probability, unit_interval };
@@ -56,11 +25,11 @@ class ObjectReader;
 
 /// What every field of one load shares: where the files a scenario names (includes, track CSVs)
 /// may be read from, as canonical folders (the scenario's own folder, the scenario library, and
-/// any the user allowed), and the factor on the work limits of scenarios/budget.h.
+/// any the user allowed), and the factor on the work limits of spec/budget.h.
 struct LoadContext {
   std::vector<std::filesystem::path> roots;
   double budget_scale = 1.0;
-  FieldLog* log = nullptr;  // records every read (scenarios/field_log.h) when set
+  FieldLog* log = nullptr;  // records every read (spec/field_log.h) when set
 };
 
 /// A value at a known place: its file, its field path, and the slot of the effective config it

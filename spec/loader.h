@@ -18,9 +18,9 @@ struct LoadOptions {
   /// Folders besides the scenario's own and the library from which includes and track files may
   /// be read (`--allow-path DIR`).
   std::vector<std::filesystem::path> allowed_roots;
-  /// Multiplies every work limit of scenarios/budget.h (`--budget K`); 1 keeps the defaults.
+  /// Multiplies every work limit of spec/budget.h (`--budget K`); 1 keeps the defaults.
   double budget_scale = 1.0;
-  /// When set, every field the loader reads is recorded here (scenarios/field_log.h).
+  /// When set, every field the loader reads is recorded here (spec/field_log.h).
   FieldLog* field_log = nullptr;
 };
 

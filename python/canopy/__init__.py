@@ -6,11 +6,11 @@
 
 The compiled part is canopy._canopy; everything here is thin Python over it.
 """
-from ._canopy import ScenarioError, Simulation, library_scenarios
+from ._canopy import ScenarioError, Simulation, library_scenarios, read_run
 from .scenario import Scenario, load
 from . import forest
 from .jobs import analyze, run, sweep
 from .env import TrackingEnv
 
 __all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios",
-           "run", "sweep", "analyze", "TrackingEnv"]
+           "run", "sweep", "analyze", "read_run", "TrackingEnv"]

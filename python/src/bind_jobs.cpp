@@ -2,6 +2,7 @@
 // optional frames), sweep (trials on a thread pool, resumable) and analyze (the CSV tables and
 // figures; python/canopy/jobs.py reads the tables into numpy arrays). The GIL is released while
 // they run: they touch no Python object.
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "render/frame_observer.h"
 #include "render/frame_view.h"
 #include "render/frame_writer.h"
+#include "sim/record_reader.h"
 #include "sim/run.h"
 #include "spec/loader.h"
 
@@ -73,6 +75,50 @@ void analyzeJob(const std::string& dir, const std::string& out,
   if (figures) analysis::writeFigures(result, out);
 }
 
+/// The truth of a finished run through the one record reader (sim/record_reader.h), as arrays:
+/// k (K), t (K), uav_positions (K, U, 2), uav_yaw (K, U), target_positions (K, T, 2).
+py::dict readRunJob(const std::string& dir) {
+  sim::RunRecord run;
+  {
+    py::gil_scoped_release release;
+    run = sim::readRun(dir);
+  }
+  const auto K = static_cast<py::ssize_t>(run.truth.size());
+  const auto U = static_cast<py::ssize_t>(run.spec.uavs.size());
+  const auto T = static_cast<py::ssize_t>(run.spec.targets.size());
+  py::array_t<long long> k(K);
+  py::array_t<double> t(K), uav_yaw({K, U}), uav_positions({K, U, py::ssize_t{2}}),
+      target_positions({K, T, py::ssize_t{2}});
+  auto k_ = k.mutable_unchecked<1>();
+  auto t_ = t.mutable_unchecked<1>();
+  auto yaw = uav_yaw.mutable_unchecked<2>();
+  auto up = uav_positions.mutable_unchecked<3>();
+  auto tp = target_positions.mutable_unchecked<3>();
+  for (py::ssize_t s = 0; s < K; ++s) {
+    const world::WorldSnapshot& step = run.truth[static_cast<std::size_t>(s)];
+    k_(s) = step.step;
+    t_(s) = step.time;
+    for (py::ssize_t i = 0; i < U; ++i) {
+      const world::UavState& uav = step.uavs[static_cast<std::size_t>(i)];
+      yaw(s, i) = uav.yaw;
+      up(s, i, 0) = uav.position.x();
+      up(s, i, 1) = uav.position.y();
+    }
+    for (py::ssize_t j = 0; j < T; ++j) {
+      const Vec2& p = step.targets[static_cast<std::size_t>(j)].position;
+      tp(s, j, 0) = p.x();
+      tp(s, j, 1) = p.y();
+    }
+  }
+  py::dict out;
+  out["k"] = k;
+  out["t"] = t;
+  out["uav_positions"] = uav_positions;
+  out["uav_yaw"] = uav_yaw;
+  out["target_positions"] = target_positions;
+  return out;
+}
+
 }  // namespace
 
 void bindJobs(py::module_& m) {
@@ -87,6 +133,11 @@ void bindJobs(py::module_& m) {
       py::arg("text"), py::arg("file"), py::arg("roots"), py::arg("out"), py::arg("seed"),
       py::arg("frames"), py::arg("every"), py::arg("width"), py::arg("height"));
   m.def("_sweep", &sweepJob, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("roots"));
+  m.def("read_run", &readRunJob, py::arg("dir"),
+        R"(The truth of a finished run (the --out folder of canopy.run or `canopy run`), read back
+from manifest.json and record.jsonl: a dict of numpy arrays k (K), t (K), uav_positions (K, U, 2),
+uav_yaw (K, U) and target_positions (K, T, 2). Raises ScenarioError naming the file, the line and
+the field when the folder is not a finished run.)");
   m.def("_analyze", &analyzeJob, py::arg("dir"), py::arg("out"), py::arg("roots"),
         py::arg("figures"));
 }

@@ -24,6 +24,25 @@ def test_run_writes_the_clis_record(tmp_path, cli):
     assert manifest["seed"] == 9 and manifest["effective_config"]["seed"] == 9
 
 
+def test_read_run_gives_the_records_truth(tmp_path):
+    canopy.run("demo", tmp_path, seed=4)
+    run = canopy.read_run(str(tmp_path))
+    lines = [json.loads(line) for line in (tmp_path / "record.jsonl").read_text().splitlines()]
+    assert list(run["k"]) == [line["k"] for line in lines]
+    assert run["uav_positions"].shape == (len(lines), len(lines[0]["uavs"]), 2)
+    for s, line in enumerate(lines):
+        assert run["t"][s] == line["t"]
+        for i, uav in enumerate(line["uavs"]):
+            assert list(run["uav_positions"][s, i]) == uav["p"] and run["uav_yaw"][s, i] == uav["yaw"]
+        for j, target in enumerate(line["targets"]):
+            assert list(run["target_positions"][s, j]) == target["p"]
+
+
+def test_read_run_names_the_file_it_cannot_read(tmp_path):
+    with np.testing.assert_raises_regex(canopy.ScenarioError, "manifest.json: missing"):
+        canopy.read_run(str(tmp_path))
+
+
 def test_run_writes_frames(tmp_path):
     s = canopy.load("demo", overrides={"clock.duration": 1.0})  # K = 5
     canopy.run(s, tmp_path, frames=True, frame_every=2, size=(64, 48))

@@ -40,7 +40,7 @@ void requireIncreasing(const std::vector<world::TimedPoint>& points,
   }
 }
 
-// A recorded track from a CSV file the scenario names (scenarios/track_csv.h).
+// A recorded track from a CSV file the scenario names (spec/track_csv.h).
 std::vector<world::TimedPoint> readTrackCsv(const Field& field) {
   const ReferencedFile file = readReferencedFile(field, "track file");
   try {

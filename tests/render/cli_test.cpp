@@ -213,7 +213,7 @@ TEST_F(CanopyCli, CoverageOfABadRunDirectoryIsAClearError) {
   std::ofstream(record) << "";
   expectError(run("good"), "record.jsonl: has no steps");
   std::ofstream(dir_ / "good" / "manifest.json") << "{\"seed\": 1";
-  expectError(run("good"), "manifest.json: is not valid JSON");
+  expectError(run("good"), "manifest.json: line 1, column 11: invalid JSON");
 }
 
 }  // namespace

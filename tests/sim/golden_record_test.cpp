@@ -1,6 +1,6 @@
 // Golden determinism: the bytes of record.jsonl for fixed runs, against hashes stored in
 // tests/data/record_golden/cases.json. Regenerate deliberately with
-//   CANOPY_UPDATE_GOLDENS=1 build/release/tests/scenarios/scenarios_test --gtest_filter='Golden.*'
+//   CANOPY_UPDATE_GOLDENS=1 build/release/tests/sim/sim_test --gtest_filter='Golden.*'
 // (see the README.md there).
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -139,7 +139,7 @@ const std::vector<Case>& cases() {
             R"(, "occluders": [{"type": "poisson", "lambda": 1000, "radius": 1}])"),
        {"occluders[0]: expected at most 2.0e+06 trees drawn",
         "asks for about 5.0e+06"}},  // 1000 × 100 × 50
-      // Work budget (scenarios/budget.h): each estimate by hand in the comment.
+      // Work budget (spec/budget.h): each estimate by hand in the comment.
       {"PoissonGapDilatesTheDrawRegion",  // λ 1 × (100 + 2·1002) × (50 + 2·1002) = 4.3e6
        base("[{\"start\": [10, 10]}]", "[]",
             R"(, "occluders": [{"type": "poisson", "lambda": 1, "radius": 1, "min_gap": 1000}])"),
