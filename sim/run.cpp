@@ -76,12 +76,27 @@ RunResult simulate(const spec::ScenarioSpec& spec, const RunOptions& options) {
   return result;
 }
 
+// Frames of an earlier run in the same folder (frames/frame_NNNNNN.png) would be taken for this
+// run's: they go before it starts. A run with --frames writes its own after this; the folder
+// itself stays (its writer may have made it already), and a link in its place is not followed.
+void removeStaleFrames(const std::filesystem::path& out_dir) {
+  const std::filesystem::path frames = out_dir / "frames";
+  std::error_code error;
+  if (!std::filesystem::is_directory(std::filesystem::symlink_status(frames, error))) return;
+  for (const auto& entry : std::filesystem::directory_iterator(frames, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with("frame_") && entry.path().extension() == ".png")
+      removeOutputFile(entry.path());
+  }
+}
+
 }  // namespace
 
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options) {
   makeOutputDirectories(options.out_dir, options.out_dir);
   // The files of an earlier run would be read as this run's if this one failed part way.
   for (const char* name : kRunFiles) removeOutputFile(options.out_dir / name);
+  removeStaleFrames(options.out_dir);  // (a frame writer writes its first frame at the first step)
   try {
     return simulate(spec, options);
   } catch (...) {

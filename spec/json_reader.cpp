@@ -256,28 +256,29 @@ void ObjectReader::recordDefault(const std::string& key, const Json& value, cons
 
 double ObjectReader::number(const std::string& key, double fallback, Bound bound) {
   logDefault(key, fallback);
-  if (auto f = optional(key)) return f->number(bound);
+  if (auto f = optional(key)) return orFallback(fallback, [&] { return f->number(bound); });
   recordDefault(key, fallback, "number", rangeText(bound));
   return fallback;
 }
 
 int ObjectReader::integer(const std::string& key, int fallback, int min_value, int max_value) {
   logDefault(key, fallback);
-  if (auto f = optional(key)) return f->integer(min_value, max_value);
+  if (auto f = optional(key))
+    return orFallback(fallback, [&] { return f->integer(min_value, max_value); });
   recordDefault(key, fallback, "integer", intRange(min_value, max_value));
   return fallback;
 }
 
 bool ObjectReader::boolean(const std::string& key, bool fallback) {
   logDefault(key, fallback);
-  if (auto f = optional(key)) return f->boolean();
+  if (auto f = optional(key)) return orFallback(fallback, [&] { return f->boolean(); });
   recordDefault(key, fallback, "boolean", "");
   return fallback;
 }
 
 std::string ObjectReader::string(const std::string& key, const std::string& fallback) {
   logDefault(key, fallback);
-  if (auto f = optional(key)) return f->string();
+  if (auto f = optional(key)) return orFallback(fallback, [&] { return f->string(); });
   recordDefault(key, fallback, "string", "");
   return fallback;
 }
@@ -285,7 +286,7 @@ std::string ObjectReader::string(const std::string& key, const std::string& fall
 int ObjectReader::choice(const std::string& key, const std::vector<std::string>& choices,
                          int fallback) {
   logDefault(key, choices[fallback]);
-  if (auto f = optional(key)) return f->choice(choices);
+  if (auto f = optional(key)) return orFallback(fallback, [&] { return f->choice(choices); });
   recordDefault(key, choices[fallback], "string", "", choices);
   return fallback;
 }
@@ -300,8 +301,19 @@ std::string ObjectReader::oneOf(const std::vector<std::string>& keys) {
     found = key;
   }
   read_.insert(keys.begin(), keys.end());  // all alternatives are known fields
-  // None given: a misspelt alternative is the likeliest cause, so report stray fields first.
-  if (found.empty()) finish();
+  // None given: a misspelt alternative is the likeliest cause, so report stray fields first (and
+  // only them: "give one of" after them would be their echo).
+  if (found.empty()) {
+    std::vector<ScenarioError>* errors = field_.context() ? field_.context()->errors : nullptr;
+    const std::size_t before = errors ? errors->size() : 0;
+    finish();
+    if (errors && errors->size() > before) {
+      std::vector<ScenarioError> stray(errors->begin() + static_cast<long>(before), errors->end());
+      errors->erase(errors->begin() + static_cast<long>(before), errors->end());
+      if (stray.size() == 1) throw stray[0];
+      throw ScenarioErrors(std::move(stray));
+    }
+  }
   return found;
 }
 
@@ -310,8 +322,10 @@ void ObjectReader::finish() const {
     if (read_.count(key)) continue;
     std::string known;
     for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
-    throw ScenarioError(field_.file(), joinPath(field_.path(), key),
-                        "unknown field (expected one of: " + known + ")");
+    ScenarioError unknown(field_.file(), joinPath(field_.path(), key),
+                          "unknown field (expected one of: " + known + ")");
+    if (!field_.context() || !field_.context()->errors) throw unknown;
+    field_.context()->errors->push_back(std::move(unknown));  // and look for more
   }
 }
 

@@ -30,6 +30,10 @@ struct LoadContext {
   std::vector<std::filesystem::path> roots;
   double budget_scale = 1.0;
   FieldLog* log = nullptr;  // records every read (spec/field_log.h) when set
+  /// When set, one pass finds every independent error: a field that fails a typed read
+  /// (ObjectReader::number, …) is recorded here and its default used in its place, and
+  /// finish() records every unknown field. Without it the first error is thrown.
+  std::vector<ScenarioError>* errors = nullptr;
 };
 
 /// A value at a known place: its file, its field path, and the slot of the effective config it
@@ -110,6 +114,16 @@ class ObjectReader {
   std::string oneOf(const std::vector<std::string>& keys);
   /// Rejects every member not read. Call once, after all reads.
   void finish() const;
+  /// Runs read(), a read of several fields; when the context collects errors and it fails, the
+  /// error is recorded and false returned (the caller goes on with its defaults). Without a
+  /// collecting context the error is thrown.
+  template <class Read>
+  bool attempt(Read read) {
+    return orFallback(false, [&] {
+      read();
+      return true;
+    });
+  }
 
  private:
   /// Records a default in the effective config for a member that was absent, and in the log.
@@ -117,6 +131,21 @@ class ObjectReader {
                      const std::string& range, const std::vector<std::string>& choices = {});
   /// Logs that `key` may be absent with `value` as its default.
   void logDefault(const std::string& key, const Json& value);
+  /// read(), or — when the context collects errors and read() fails — the error recorded and
+  /// `fallback` returned, so that the fields after this one are still read.
+  template <class T, class Read>
+  T orFallback(const T& fallback, Read read) {
+    if (!field_.context() || !field_.context()->errors) return read();
+    try {
+      return read();
+    } catch (const ScenarioErrors& e) {
+      field_.context()->errors->insert(field_.context()->errors->end(), e.errors().begin(),
+                                       e.errors().end());
+    } catch (const ScenarioError& e) {
+      field_.context()->errors->push_back(e);
+    }
+    return fallback;
+  }
 
   Field field_;
   std::set<std::string> read_;

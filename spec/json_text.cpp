@@ -78,18 +78,22 @@ Json parseJson(const std::string& text, const std::string& file) {
   }
 }
 
-Json readJsonFile(const std::string& path, const std::string& referenced_from) {
+std::string readJsonText(const std::string& path, const std::string& referenced_from) {
   std::string why;
   std::error_code error;
   const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
-  const std::optional<std::string> text =
+  std::optional<std::string> text =
       error ? std::nullopt : readRegularFile(canonical, kMaxJsonBytes, why);
   if (!text) {
     throw ScenarioError(
         referenced_from.empty() ? printable(path, 200) : referenced_from, "",
         "cannot read file '" + printable(path, 200) + "'" + (why.empty() ? "" : ": " + why));
   }
-  return parseJson(*text, path);
+  return std::move(*text);
+}
+
+Json readJsonFile(const std::string& path, const std::string& referenced_from) {
+  return parseJson(readJsonText(path, referenced_from), path);
 }
 
 std::string describe(const Json& value) {

@@ -37,6 +37,9 @@ Json parseBoundedJson(const std::string& text);
 /// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError
 /// naming file:line:column.
 Json parseJson(const std::string& text, const std::string& file);
+/// The text of a regular file of at most kMaxJsonBytes (never through a link, never from a FIFO);
+/// anything else is a ScenarioError naming `referenced_from` (or the path).
+std::string readJsonText(const std::string& path, const std::string& referenced_from = "");
 /// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
 Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
 

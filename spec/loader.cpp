@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
+#include <map>
 
 #include "core/printable.h"
 #include "spec/budget.h"
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
+#include "spec/json_lines.h"
 
 namespace canopy::spec {
 namespace fs = std::filesystem;
@@ -65,9 +68,40 @@ void resolveLabels(const std::vector<std::string>& target_labels, const std::str
   spec.sensing.clutter_label = idOf(clutter_label);
 }
 
-ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOptions& options) {
-  for (const std::string& assignment : options.overrides)
-    internal::applyOverride(document, assignment);
+// Several errors in file order: the scenario file's own by the line of their field (`lines`), each
+// with its line appended; errors of other files (includes, layouts) and of --set overrides keep
+// their place after them, in the order they were found.
+std::vector<ScenarioError> inFileOrder(std::vector<ScenarioError> errors, const std::string& file,
+                                       const std::map<std::string, int>& lines) {
+  std::vector<std::pair<int, ScenarioError>> keyed;
+  for (ScenarioError& e : errors) {
+    const auto at = e.file() == file ? lines.find(e.field()) : lines.end();
+    if (at == lines.end()) {
+      keyed.emplace_back(std::numeric_limits<int>::max(), std::move(e));
+    } else {
+      keyed.emplace_back(at->second,
+                         ScenarioError(e.file(), e.field(),
+                                       e.message() + " (line " + std::to_string(at->second) + ")"));
+    }
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ScenarioError> sorted;
+  for (auto& [line, e] : keyed) sorted.push_back(std::move(e));
+  return sorted;
+}
+
+ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOptions& options,
+                          const std::string& text = "") {
+  // Each override is applied even when an earlier one failed: one pass reports every bad --set.
+  std::vector<ScenarioError> errors;
+  for (const std::string& assignment : options.overrides) {
+    try {
+      internal::applyOverride(document, assignment);
+    } catch (const ScenarioError& e) {
+      errors.push_back(e);
+    }
+  }
 
   ScenarioSpec spec;
   spec.file = file;
@@ -75,11 +109,18 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   LoadContext context = internal::loadContextFor(file, options.allowed_roots);
   context.budget_scale = options.budget_scale;
   context.log = options.field_log;
+  context.errors = &errors;  // a field that fails is recorded, its default used, reading goes on
   ObjectReader root = Field(document, file, "", &effective, &context).object();
+  auto failed = [&errors, &file, &text] {
+    std::vector<ScenarioError> sorted =
+        text.empty() ? std::move(errors)
+                     : inFileOrder(std::move(errors), file, jsonValueLines(text));
+    if (sorted.size() == 1) throw sorted[0];
+    throw ScenarioErrors(std::move(sorted));
+  };
 
   // Each section is read even when an earlier one failed, so that one pass reports every error
   // it can; sections that depend on a failed one are skipped (their errors would be echoes).
-  std::vector<ScenarioError> errors;
   auto attempt = [&errors](auto&& read) {
     try {
       read();
@@ -104,9 +145,20 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
       effective["seed"] = spec.seed;
     }
   });
-  const bool aoi_ok = attempt([&] { spec.aoi = readAoi(root); });
-  const bool frame_ok = attempt([&] { readClock(root, spec); }) && aoi_ok;  // both read
-  if (!frame_ok) throw ScenarioErrors(std::move(errors));  // everything below needs both
+  const std::size_t before_aoi = errors.size();
+  const bool aoi_ok = attempt([&] { spec.aoi = readAoi(root); }) && errors.size() == before_aoi;
+  // A failed clock leaves its defaults in place, which every later section can be read against.
+  attempt([&] { readClock(root, spec); });
+  if (!aoi_ok) {
+    // Everything placed in the AOI is skipped (its errors could be echoes of the AOI's); the
+    // sections that are not are still read, and so are the top-level keys.
+    for (const char* key : {"uavs", "targets", "occluders", "planner", "analysis"})
+      root.optional(key);
+    attempt([&] { internal::readTracking(root, spec); });
+    attempt([&] { internal::readFusion(root, spec); });
+    attempt([&] { root.finish(); });
+    failed();
+  }
   std::string clutter_label;
   bool bodies_ok = attempt([&] { clutter_label = internal::readSensing(root, spec); });
   bodies_ok = attempt([&] { internal::readUavs(root, spec); }) && bodies_ok;
@@ -133,8 +185,7 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
     root.optional("analysis");
   }
   attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
-  if (errors.size() == 1) throw errors[0];
-  if (!errors.empty()) throw ScenarioErrors(std::move(errors));
+  if (!errors.empty()) failed();
   checkWork(spec, options.budget_scale);
 
   spec.effective_config = effective.dump(2);
@@ -145,12 +196,13 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
 
 ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
                               const LoadOptions& options) {
-  return loadDocument(parseJson(text, file), file, options);
+  return loadDocument(parseJson(text, file), file, options, text);
 }
 
 ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options) {
   const fs::path path = resolveScenario(scenario);
-  return loadDocument(readJsonFile(path.string()), path.string(), options);
+  const std::string text = readJsonText(path.string());
+  return loadDocument(parseJson(text, path.string()), path.string(), options, text);
 }
 
 fs::path libraryDir() {

@@ -130,6 +130,27 @@ void readSector(ObjectReader& robot, sensing::FootprintDef& footprint) {
   fov.finish();
 }
 
+namespace {
+
+// A UAV's downward camera footprint: {"size": [w, h]} or {"radius": r}.
+void readFov(const Field& fov_field, sensing::FootprintDef& footprint) {
+  ObjectReader fov = fov_field.object();
+  const std::string kind = fov.oneOf({"size", "radius"});
+  if (kind == "radius") {
+    footprint.shape = sensing::FootprintShape::disc;
+    footprint.radius = fov.required("radius").number(Bound::positive);
+    if (footprint.radius > 1e7) fov.required("radius").fail("expected at most 1e7 m");
+  } else if (kind == "size") {
+    footprint.size = fov.required("size").vec2(Bound::positive);
+    if (footprint.size.maxCoeff() > 2e7) fov.required("size").fail("expected at most 2e7 m a side");
+  } else {
+    fov_field.fail("expected {\"size\": [w, h]} or {\"radius\": r}");
+  }
+  fov.finish();
+}
+
+}  // namespace
+
 void readUavs(ObjectReader& root, ScenarioSpec& spec) {
   const Field list = root.required("uavs");
   std::set<std::string> names;
@@ -143,24 +164,30 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     }
     uav.body.kind = reader.enumeration("kind", world::kAgentKindNames, uav.body.kind);
     const bool ground = uav.body.kind == world::AgentKind::ground;
-    if (auto path = reader.optional("path"))
-      uav.path = readPath(*path, spec.aoi, spec.duration, true);
-    if (auto start = reader.optional("start")) {
-      uav.body.start = start->vec2();
-      requireInside(*start, uav.body.start, spec.aoi, "a start");
-    } else if (uav.path) {
-      uav.body.start = uav.path->positionAt(0.0);
-    } else {
-      reader.required("start");
-    }
-    if (auto yaw = reader.optional("yaw"); yaw && yaw->json().is_string()) {
-      yaw->choice({"velocity"});
-      uav.body.yaw_mode = world::YawMode::velocity;
-    } else if (yaw) {
-      uav.body.yaw = yaw->number();
-    } else {
-      reader.number("yaw", 0.0);
-    }
+    reader.attempt([&] {
+      if (auto path = reader.optional("path"))
+        uav.path = readPath(*path, spec.aoi, spec.duration, true);
+    });
+    reader.attempt([&] {
+      if (auto start = reader.optional("start")) {
+        uav.body.start = start->vec2();
+        requireInside(*start, uav.body.start, spec.aoi, "a start");
+      } else if (uav.path) {
+        uav.body.start = uav.path->positionAt(0.0);
+      } else {
+        reader.required("start");
+      }
+    });
+    reader.attempt([&] {
+      if (auto yaw = reader.optional("yaw"); yaw && yaw->json().is_string()) {
+        yaw->choice({"velocity"});
+        uav.body.yaw_mode = world::YawMode::velocity;
+      } else if (yaw) {
+        uav.body.yaw = yaw->number();
+      } else {
+        reader.number("yaw", 0.0);
+      }
+    });
     if (ground) {  // its heading is its body's: it always faces the way it drives
       uav.body.yaw_mode = world::YawMode::velocity;
       uav.body.turn_rate = reader.number("turn_rate", uav.body.turn_rate, Bound::positive);
@@ -171,21 +198,7 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     if (ground) {
       readSector(reader, uav.sensor.footprint);
     } else if (auto fov_field = reader.optional("fov")) {
-      ObjectReader fov = fov_field->object();
-      const std::string kind = fov.oneOf({"size", "radius"});
-      if (kind == "radius") {
-        uav.sensor.footprint.shape = sensing::FootprintShape::disc;
-        uav.sensor.footprint.radius = fov.required("radius").number(Bound::positive);
-        if (uav.sensor.footprint.radius > 1e7)
-          fov.required("radius").fail("expected at most 1e7 m");
-      } else if (kind == "size") {
-        uav.sensor.footprint.size = fov.required("size").vec2(Bound::positive);
-        if (uav.sensor.footprint.size.maxCoeff() > 2e7)
-          fov.required("size").fail("expected at most 2e7 m a side");
-      } else {
-        fov_field->fail("expected {\"size\": [w, h]} or {\"radius\": r}");
-      }
-      fov.finish();
+      reader.attempt([&] { readFov(*fov_field, uav.sensor.footprint); });
     } else {
       const Vec2& size = uav.sensor.footprint.size;  // sensing/footprint.h's default
       (*reader.field().out())["fov"] = Json{{"size", {size.x(), size.y()}}};
@@ -220,7 +233,8 @@ std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec) {
           "expected a target label other than \"tree\" (reserved for "
           "occluders) and not empty");
     }
-    target.path = readPath(reader.required("path"), spec.aoi, spec.duration, true);
+    reader.attempt(
+        [&] { target.path = readPath(reader.required("path"), spec.aoi, spec.duration, true); });
     reader.finish();
     labels.push_back(label);
     spec.targets.push_back(std::move(target));

@@ -57,6 +57,23 @@ TEST(Run, ManifestEqualsTheParsedAndDumpedConfiguration) {
   EXPECT_GE(compared, 5 * 10);
 }
 
+// A rerun into the folder of a run with frames, without frames, leaves no frame of the old run
+// beside the new record (what else is in frames/ is not the run's and stays).
+TEST(Run, StaleFramesOfAnEarlierRunAreRemoved) {
+  const fs::path dir = fs::temp_directory_path() / "canopy_run_stale_frames";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "frames");
+  for (const char* name : {"frame_000000.png", "frame_000004.png", "notes.txt"})
+    std::ofstream(dir / "frames" / name) << "old";
+  spec::LoadOptions options;
+  options.overrides = {"clock.duration=1"};
+  runScenario(spec::loadScenario("demo", options), {dir, "test", {}});
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_000000.png"));
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_000004.png"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "record.jsonl"));
+}
+
 TEST(Run, SameSeedGivesByteIdenticalRecords) {
   const std::string a = runAndRead("demo", 5, "a");
   const std::string b = runAndRead("demo", 5, "b");
