@@ -95,9 +95,9 @@ ScanFile readScanFile(std::istream& in, const std::string& name) {
       const double v = number(w[1], error, key.c_str());
       const bool probability = key == "p_detect";
       if (probability ? !(v > 0.0 && v <= 1.0) : key == "clutter_mean" ? !(v >= 0.0) : !(v > 0.0))
-        error.fail(key + (probability ? " must lie in (0, 1]" : key == "clutter_mean"
-                                                                    ? " must be at least 0"
-                                                                    : " must be positive"));
+        error.fail(key + (probability             ? " must lie in (0, 1]"
+                          : key == "clutter_mean" ? " must be at least 0"
+                                                  : " must be positive"));
       (key == "dt"              ? file.dt
        : key == "process_noise" ? file.process_noise
        : key == "p_detect"      ? file.p_detect
@@ -121,7 +121,8 @@ ScanFile readScanFile(std::istream& in, const std::string& name) {
         scan.detections.emplace_back(number(w[1], error, "X"), number(w[2], error, "Y"));
       }
     } else {
-      error.fail("unknown line \"" + key + "\" (expected area, dt, process_noise, p_detect, "
+      error.fail("unknown line \"" + key +
+                 "\" (expected area, dt, process_noise, p_detect, "
                  "clutter_mean, sigma, scan, truth or detection)");
     }
   }
@@ -142,8 +143,8 @@ void writeScanFile(std::ostream& out, const ScanFile& file) {
   for (const ScanFileScan& scan : file.scans) {
     out << "scan " << scan.index << "\n";
     for (const ScanFileTruth& t : scan.truth) {
-      out << "truth " << t.id << ' ' << shortest(t.position.x()) << ' '
-          << shortest(t.position.y()) << "\n";
+      out << "truth " << t.id << ' ' << shortest(t.position.x()) << ' ' << shortest(t.position.y())
+          << "\n";
     }
     for (const Vec2& z : scan.detections) {
       out << "detection " << shortest(z.x()) << ' ' << shortest(z.y()) << "\n";

@@ -14,20 +14,20 @@
 namespace canopy::bench {
 
 struct ScanFileTruth {
-  int id = 0;        // target identity, constant over scans
-  Vec2 position;     // m
+  int id = 0;     // target identity, constant over scans
+  Vec2 position;  // m
 };
 
 struct ScanFileScan {
-  int index = 0;                       // 0, 1, 2, … in file order
-  std::vector<ScanFileTruth> truth;    // targets present in this scan
-  std::vector<Vec2> detections;        // m, in no particular order
+  int index = 0;                     // 0, 1, 2, … in file order
+  std::vector<ScanFileTruth> truth;  // targets present in this scan
+  std::vector<Vec2> detections;      // m, in no particular order
 };
 
 /// The scene: what a tracker is told (the generator's parameters).
 struct ScanFile {
   Vec2 area_min = Vec2::Zero(), area_max = Vec2::Zero();  // m, the surveillance area
-  double dt = 0.2;             // s between scans
+  double dt = 0.2;                                        // s between scans
   double process_noise = 0.2;  // m²/s³, q of the NCV truth (continuous white acceleration)
   double p_detect = 0.9;       // probability that a target is detected in a scan
   double clutter_mean = 5.0;   // false detections per scan (Poisson), uniform over the area

@@ -81,8 +81,8 @@ int run(const ScanFile& file, agents::TrackConfirmation rule) {
     confirmed_sum += static_cast<double>(estimates.size());
   }
   const double n = static_cast<double>(file.scans.size());
-  std::printf("mean OSPA %.3f m, mean GOSPA %.3f m, confirmed %.3f\n", ospa_sum / n,
-              gospa_sum / n, confirmed_sum / n);
+  std::printf("mean OSPA %.3f m, mean GOSPA %.3f m, confirmed %.3f\n", ospa_sum / n, gospa_sum / n,
+              confirmed_sum / n);
   return 0;
 }
 
@@ -136,4 +136,6 @@ int main(int argc, char** argv) {
 }  // namespace
 }  // namespace canopy::bench
 
-int main(int argc, char** argv) { return canopy::bench::main(argc, argv); }
+int main(int argc, char** argv) {
+  return canopy::bench::main(argc, argv);
+}

@@ -42,7 +42,9 @@ double logOdds(double r) {
   const double p = std::clamp(r, kExistenceFloor, 1.0 - kExistenceFloor);
   return std::log(p / (1.0 - p));
 }
-double fromLogOdds(double l) { return 1.0 / (1.0 + std::exp(-l)); }  // r = 1 / (1 + e^{−l})
+double fromLogOdds(double l) {
+  return 1.0 / (1.0 + std::exp(-l));
+}  // r = 1 / (1 + e^{−l})
 
 }  // namespace
 
@@ -193,7 +195,8 @@ void InformationConsensus<N>::runHcmci(std::span<TrackList> lists,
     }
     // Existence: the predicted log-odds and the scan's evidence, l − l⁻ (zero when adopted).
     existence_pair_[k](0) = logOdds(track.existence_prior);
-    existence_pair_[k](1) = members[k].adopted ? 0.0 : logOdds(track.existence) - existence_pair_[k](0);
+    existence_pair_[k](1) =
+        members[k].adopted ? 0.0 : logOdds(track.existence) - existence_pair_[k](0);
     if (members[k].adopted) {
       y.template rightCols<N + 1>().setZero();  // an adopted copy brings no measurement
     } else {

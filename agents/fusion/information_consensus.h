@@ -91,7 +91,7 @@ class InformationConsensus {
   std::vector<int> stack_;
   std::vector<Info> info_, info_next_;
   std::vector<Hybrid> hybrid_, hybrid_next_;
-  std::vector<Eigen::Matrix<double, 1, 1>> existence_, existence_next_;  // CI: log-odds
+  std::vector<Eigen::Matrix<double, 1, 1>> existence_, existence_next_;            // CI: log-odds
   std::vector<Eigen::Matrix<double, 1, 2>> existence_pair_, existence_pair_next_;  // HCMCI
 };
 

@@ -19,8 +19,8 @@ bool survives(const TargetTrack& a, const TargetTrack& b) {
 }  // namespace
 
 double trackDistance(const TargetGaussian& a, const TargetGaussian& b) {
-  const Vec4 dx = a.x - b.x;      // Δx (4)
-  const Mat4 S = a.P + b.P;       // P_a + P_b (4×4)
+  const Vec4 dx = a.x - b.x;  // Δx (4)
+  const Mat4 S = a.P + b.P;   // P_a + P_b (4×4)
   const Eigen::LLT<Mat4> llt(S);
   if (llt.info() != Eigen::Success) return kInfinity;
   return llt.matrixL().solve(dx).squaredNorm();  // d² = Δxᵀ S⁻¹ Δx = |L⁻¹ Δx|²
@@ -58,9 +58,8 @@ int DuplicateMerger::merge(std::vector<TargetTrack>& tracks, double gate, int sc
       continue;
     }
     const TrackKey& key = tracks[partner_[a]].key;
-    track.merge_streak = track.merge_streak > 0 && track.merge_partner == key
-                             ? track.merge_streak + 1
-                             : 1;
+    track.merge_streak =
+        track.merge_streak > 0 && track.merge_partner == key ? track.merge_streak + 1 : 1;
     track.merge_partner = key;
   }
   removed_.assign(n, 0);

@@ -10,8 +10,8 @@
 //   update          r⁺ = Σ_{j≥1} β_j + β_0 · ψ (1 − P_D P_G) / (1 − P_D P_G ψ)
 // where β_j are the marginal association probabilities (β_0 = 1 − Σ β_j, the track assigned
 // nothing) and the fraction is P(exists | no measurement of its own). The state is the mixture
-// conditional on existence: weights β_j / r⁺ (j ≥ 1) and β_0 · ψ (1 − P_D P_G) / (1 − P_D P_G ψ) / r⁺.
-// With ψ = 1 every weight is JPDA's.
+// conditional on existence: weights β_j / r⁺ (j ≥ 1) and β_0 · ψ (1 − P_D P_G) / (1 − P_D P_G ψ) /
+// r⁺. With ψ = 1 every weight is JPDA's.
 #include <algorithm>
 #include <cmath>
 
@@ -25,8 +25,8 @@ inline double scanSurvival(double survival_per_second, double dt) {
 /// P(exists | the track was assigned no measurement) = ψ (1 − P_D P_G) / (1 − P_D P_G ψ), for the
 /// predicted existence ψ and the P_D the track expects (already scaled by its visibility).
 inline double existenceAfterMiss(double psi, double p_detect, double gate_probability) {
-  const double delta = p_detect * gate_probability;      // δ = P_D P_G
-  const double denominator = 1.0 - delta * psi;          // 1 − δψ
+  const double delta = p_detect * gate_probability;         // δ = P_D P_G
+  const double denominator = 1.0 - delta * psi;             // 1 − δψ
   if (!(denominator > 0.0)) return psi >= 1.0 ? 1.0 : 0.0;  // δ = ψ = 1: a miss is impossible
   return std::clamp(psi * (1.0 - delta) / denominator, 0.0, 1.0);
 }

@@ -183,7 +183,8 @@ Gaussian<N> Jpdaf::mixture(Track<N>& owner, int track,
   // JIPDA (existence.h): r⁺ = Σ_{j≥1} β_j + β_0 r_miss, r_miss = P(exists | no measurement); the
   // state mixes the hypotheses conditional on existence, weights β_j / r⁺ and β_0 r_miss / r⁺.
   const double p_detect = config.p_detect * owner.visibility;
-  const double r_miss = existenceAfterMiss(owner.existence_prior, p_detect, config.gate_probability);
+  const double r_miss =
+      existenceAfterMiss(owner.existence_prior, p_detect, config.gate_probability);
   const double r = std::min(1.0, (1.0 - beta_miss) + beta_miss * r_miss);
   owner.existence = r;
   if (!(r > 0.0)) return prior;

@@ -42,14 +42,14 @@ class Tracker {
   /// (TrackingConfig::birth_gate_probability, wider than the association gate) are born as
   /// tentative tracks with existence birth_existence. With existence confirmation a tentative
   /// track is confirmed once its existence reaches confirm_existence and dropped once it falls
-  /// below delete_existence. With m_of_n a tentative track is confirmed after confirm_hits hits — scans in which Σ_j
-  /// β_tj ≥ ½, i.e. it more likely than not received a measurement — within its first
-  /// confirm_window scans, and dropped as soon as it can no longer be. Observations with non-finite
-  /// values or a covariance that is not positive definite are ignored.
-  /// `camera` says how the own camera is hidden: targets under a crown of own_map (from above),
-  /// or behind one on the segment from scan.sensor_position (line of sight); at ground level a
-  /// tree too is expected visible only when no map crown stands on the segment to the point of
-  /// its crown nearest the sensor.
+  /// below delete_existence. With m_of_n a tentative track is confirmed after confirm_hits hits —
+  /// scans in which Σ_j β_tj ≥ ½, i.e. it more likely than not received a measurement — within its
+  /// first confirm_window scans, and dropped as soon as it can no longer be. Observations with
+  /// non-finite values or a covariance that is not positive definite are ignored. `camera` says how
+  /// the own camera is hidden: targets under a crown of own_map (from above), or behind one on the
+  /// segment from scan.sensor_position (line of sight); at ground level a tree too is expected
+  /// visible only when no map crown stands on the segment to the point of its crown nearest the
+  /// sensor.
   void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
               const OcclusionMap& own_map, const CameraOcclusion& camera = {});
 

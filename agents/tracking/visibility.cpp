@@ -8,7 +8,8 @@ namespace canopy::agents::tracking {
 bool targetVisible(const Vec2& p, const sensing::Footprint& footprint, const OcclusionMap& map,
                    const CameraOcclusion& camera, const Vec2& sensor) {
   if (!footprint.contains(p)) return false;
-  if (camera.targets == sensing::OcclusionModel::line_of_sight) return !map.blocksSegment(sensor, p);
+  if (camera.targets == sensing::OcclusionModel::line_of_sight)
+    return !map.blocksSegment(sensor, p);
   return !map.occludes(p);
 }
 

@@ -72,7 +72,7 @@ TEST(Jipda, ExistenceAndStateWithOneMeasurementMatchBayes) {
 
   const double q = config.sigma_a * config.sigma_a;
   const double pp = 1.0 + kDt * kDt + q * std::pow(kDt, 4) / 4.0;  // predicted P_pp
-  const double pv = kDt + q * std::pow(kDt, 3) / 2.0;               // predicted P_pv
+  const double pv = kDt + q * std::pow(kDt, 3) / 2.0;              // predicted P_pv
   const double psi = std::pow(config.survival_probability, kDt);
   const double density = gaussianDensity(z, (pp + r_noise) * Mat2::Identity());
   const double pd = config.p_detect, pg = config.gate_probability;
@@ -103,19 +103,19 @@ TEST(Jipda, VisibilityFromSigmaPoints) {
               0.5, 1e-15);
   // Under a crown of radius 3 with every point inside (√3 · 1 < 3): hidden; in the open: seen.
   const OcclusionMap map({world::TreeDef::disc(Vec2(5.0, 5.0), 3.0)});
-  EXPECT_EQ(visibleProbability(Vec2(5.0, 5.0), Mat2::Identity(), footprint, map, camera,
-                               Vec2::Zero()),
-            0.0);
-  EXPECT_NEAR(visibleProbability(Vec2(-5.0, 0.0), Mat2::Identity(), footprint, map, camera,
-                                 Vec2::Zero()),
-              1.0, 1e-15);
+  EXPECT_EQ(
+      visibleProbability(Vec2(5.0, 5.0), Mat2::Identity(), footprint, map, camera, Vec2::Zero()),
+      0.0);
+  EXPECT_NEAR(
+      visibleProbability(Vec2(-5.0, 0.0), Mat2::Identity(), footprint, map, camera, Vec2::Zero()),
+      1.0, 1e-15);
   // A crown of radius 3 at (3.5, 0): the mean (0.5, 0) lies on its edge (not strictly inside:
   // seen), mean + √3 eₓ = (2.23, 0) under it, mean − √3 eₓ and mean ± √3 e_y (3.46 from its
   // centre) outside. P(visible) = 1 − 1/6.
   const OcclusionMap edge({world::TreeDef::disc(Vec2(3.5, 0.0), 3.0)});
-  EXPECT_NEAR(visibleProbability(Vec2(0.5, 0.0), Mat2::Identity(), footprint, edge, camera,
-                                 Vec2::Zero()),
-              5.0 / 6.0, 1e-15);
+  EXPECT_NEAR(
+      visibleProbability(Vec2(0.5, 0.0), Mat2::Identity(), footprint, edge, camera, Vec2::Zero()),
+      5.0 / 6.0, 1e-15);
 }
 
 // 20 scans without a measurement of a target standing under a crown of radius 5 m, with an

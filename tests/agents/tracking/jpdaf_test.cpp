@@ -78,7 +78,7 @@ TEST(Jpdaf, LoneTrackReducesToPdaClosedForm) {
   //   ν̄ᵀ) Kᵀ.
   TrackingConfig config;
   config.survival_probability = 1.0;  // ψ = 1: JIPDA's weights are JPDA's (existence.h)
-  config.clutter_density = 0.05;  // large enough that β₀ and the spread term matter
+  config.clutter_density = 0.05;      // large enough that β₀ and the spread term matter
   const double tau = 0.2, r = 0.4;
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4(2.0, 3.0, 0.0, 0.0));
