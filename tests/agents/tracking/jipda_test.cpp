@@ -118,6 +118,26 @@ TEST(Jipda, VisibilityFromSigmaPoints) {
       5.0 / 6.0, 1e-15);
 }
 
+TEST(Jipda, VisibilityByLineOfSightBehindAWall) {
+  // A wall from (4, −10) to (6, 10) (2 m thick) between the sensor at the origin and a target at
+  // (10, 0): every sigma point (P_pos = I, so within √3 of (10, 0)) is behind it. A target at
+  // (−10, 0) has nothing in the way. Under the canopy model the wall hides only what is under it.
+  const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 30.0);
+  const OcclusionMap wall({world::TreeDef::polygon(
+      {Vec2(4.0, -10.0), Vec2(6.0, -10.0), Vec2(6.0, 10.0), Vec2(4.0, 10.0)})});
+  CameraOcclusion line_of_sight;
+  line_of_sight.targets = sensing::OcclusionModel::line_of_sight;
+  EXPECT_EQ(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), footprint, wall, line_of_sight,
+                               Vec2::Zero()),
+            0.0);
+  EXPECT_NEAR(visibleProbability(Vec2(-10.0, 0.0), Mat2::Identity(), footprint, wall,
+                                 line_of_sight, Vec2::Zero()),
+              1.0, 1e-15);
+  EXPECT_NEAR(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), footprint, wall,
+                                 CameraOcclusion{}, Vec2::Zero()),
+              1.0, 1e-15);
+}
+
 // 20 scans without a measurement of a target standing under a crown of radius 5 m, with an
 // uncertainty whose sigma points stay under it (P₀ = diag(0.25, 0.25, 0.01, 0.01): after 20
 // predictions P_pp = 0.25 + 0.01 · 4² + σ_a² τ⁴ · 20 (4 · 20² − 1) / 12 = 4.67 m², so √3 σ =
