@@ -17,6 +17,7 @@ void Agent::adoptFused(std::vector<tracking::TargetTrack>&& targets,
                        std::vector<tracking::TreeTrack>&& trees) {
   tracker_.adopt(std::move(targets), std::move(trees));
   tracker_.deleteStale();
+  tracker_.mergeDuplicates();  // after fusion: duplicates within the fused lists
   map_trees_.clear();
   for (const tracking::TreeTrack& tree : tracker_.trees()) {
     if (tree.status == tracking::TrackStatus::confirmed)
@@ -34,7 +35,7 @@ void Agent::writeBelief(AgentBelief& out) const {
   out.tracks.clear();
   for (const tracking::TargetTrack& track : tracker_.targets()) {
     if (track.status != tracking::TrackStatus::confirmed) continue;
-    out.tracks.push_back({track.key, track.label, track.posterior, true});
+    out.tracks.push_back({track.key, track.label, track.posterior, true, track.existence});
   }
   out.trees = map_trees_;
 }

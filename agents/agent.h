@@ -25,7 +25,8 @@ class Agent {
   /// used to judge expected misses is the one from the end of the previous step.
   void trackLocally(double dt, const sensing::Scan& scan, const sensing::Footprint& footprint);
   /// After the team's fusion: takes its fused lists as its own (Tracker::adopt: swapped in, the
-  /// arguments are left with the replaced lists' storage), deletes stale tracks and rebuilds Ŵ_i
+  /// arguments are left with the replaced lists' storage), deletes stale tracks, merges
+  /// duplicates (Tracker::mergeDuplicates) and rebuilds Ŵ_i
   /// from the confirmed trees.
   void adoptFused(std::vector<tracking::TargetTrack>&& targets,
                   std::vector<tracking::TreeTrack>&& trees);

@@ -22,6 +22,7 @@ struct TrackEstimate {
   sensing::LabelId label = 1;
   TargetGaussian belief;
   bool confirmed = false;
+  double existence = 1.0;  // probability of existence (JIPDA, after fusion)
 };
 
 /// A fused tree track: one disc of the dynamic occlusion map Ŵ_i.

@@ -11,6 +11,15 @@
 
 namespace canopy::agents {
 
+/// How a tentative track is confirmed (and a track deleted): by its probability of existence
+/// (JIPDA, Mušicki & Evans 2004), or by the M-of-N rule — confirm_hits hits within the first
+/// confirm_window scans — with deletion by delete_trace and delete_misses only.
+enum class TrackConfirmation { existence, m_of_n };
+inline constexpr EnumNames<TrackConfirmation, 2> kTrackConfirmationNames{{
+    {TrackConfirmation::existence, "existence"},
+    {TrackConfirmation::m_of_n, "m_of_n"},
+}};
+
 /// Local tracking (algorithms.md §4).
 struct TrackingConfig {
   double sigma_a = 1.0;            // m/s², NCV process-noise intensity σ_a
@@ -30,6 +39,17 @@ struct TrackingConfig {
   bool preseed = true;                   // start every agent with a confirmed track per target
   Vec4 preseed_variance = Vec4::Ones();  // m², m², m²/s², m²/s²: diagonal of P₀ for pre-seeds
   double tree_min_radius = 0.1;          // m, a tree estimate's radius never goes below this
+  // JIPDA: every track carries a probability of existence r (agents/tracking/existence.h).
+  TrackConfirmation confirmation = TrackConfirmation::existence;
+  double survival_probability = 0.95;  // a target's p_S over 1 s; per scan p_S^dt (trees: 1)
+  double birth_existence = 0.1;        // r of a track born from a measurement
+  double confirm_existence = 0.9;      // confirmed once r reaches this (existence confirmation)
+  double delete_existence = 0.05;      // deleted once r falls below this (existence confirmation)
+  // Duplicates (target tracks): merged after merge_scans consecutive scans in which the
+  // track-to-track distance d² = Δxᵀ (P_a + P_b)⁻¹ Δx (4-D state) is at most merge_gate (χ²₄; 7.78
+  // is its 90 % quantile). merge_scans = 0 turns merging off.
+  double merge_gate = 7.78;
+  int merge_scans = 3;
 };
 
 enum class FusionMethod { ci, hcmci, observer_average };

@@ -11,6 +11,7 @@
 
 #include "agents/occlusion_map.h"
 #include "agents/tracking/tracker.h"
+#include "bench/scan_file.h"
 #include "core/random.h"
 #include "sensing/noise.h"
 
@@ -111,6 +112,7 @@ void runSteps(benchmark::State& state, int n_targets, int n_trees) {
   for (auto _ : state) {
     tracker.predict(kDt);
     tracker.update(scene.scans[k], scene.footprint, map);
+    tracker.mergeDuplicates();
     tracker.deleteStale();
     benchmark::DoNotOptimize(tracker.targets().data());
     tracks += static_cast<double>(tracker.targets().size());
@@ -137,6 +139,45 @@ void BM_TrackerStepWithTrees(benchmark::State& state) {
   runSteps(state, 64, static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_TrackerStepWithTrees)->Arg(20)->Unit(benchmark::kMicrosecond);
+
+// One scan of the shared-scan setting (bench/tracking_accuracy.cpp, seed 1 of
+// `tracking_accuracy --generate N`): N targets, Poisson(5) clutter, no pre-seeded tracks, the
+// tracker told the file's parameters; the 100 scans are replayed from an empty tracker.
+void BM_SharedScans(benchmark::State& state) {
+  const bench::ScanFile file = bench::generateScanFile(static_cast<int>(state.range(0)), 1);
+  const TrackingConfig config = bench::trackerConfigFor(file, TrackConfirmation::existence);
+  sensing::FootprintDef everywhere;
+  everywhere.shape = sensing::FootprintShape::disc;
+  everywhere.radius = 1e12;
+  const sensing::Footprint footprint = sensing::Footprint::place(everywhere, Vec2::Zero(), 0.0);
+  std::vector<sensing::Scan> scans(file.scans.size());
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    for (const Vec2& z : file.scans[k].detections) {
+      sensing::Observation o;
+      o.label = 1;
+      o.z = z;
+      o.R = file.sigma * file.sigma * Mat2::Identity();
+      scans[k].observations.push_back(o);
+    }
+  }
+  const OcclusionMap map;
+  Tracker tracker(0, config);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    if (k > 0) tracker.predict(file.dt);
+    tracker.update(scans[k], footprint, map);
+    tracker.mergeDuplicates();
+    tracker.deleteStale();
+    benchmark::DoNotOptimize(tracker.targets().data());
+    if (++k == scans.size()) {
+      state.PauseTiming();
+      tracker = Tracker(0, config);
+      k = 0;
+      state.ResumeTiming();
+    }
+  }
+}
+BENCHMARK(BM_SharedScans)->Arg(4)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace canopy::agents::tracking

@@ -7,7 +7,8 @@ namespace canopy::metrics {
 
 void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> estimates) {
   std::span<const Vec2> small = truth, large = estimates;
-  if (small.size() > large.size()) std::swap(small, large);
+  truth_is_small_ = small.size() <= large.size();
+  if (!truth_is_small_) std::swap(small, large);
   m_ = static_cast<int>(small.size());
   n_ = static_cast<int>(large.size());
   assignment_ = {};
@@ -35,6 +36,24 @@ double CutoffAssignment::ospa() const {
 
 double CutoffAssignment::gospa() const {
   return std::pow(penalised(0.5 * std::pow(c_, p_)), 1.0 / p_);  // c^p/α per miss, α = 2
+}
+
+CutoffAssignment::Parts CutoffAssignment::parts() const {
+  Parts parts;
+  int matched = 0;  // pairs closer than c
+  const double c_p = std::pow(c_, p_);
+  for (int i = 0; i < m_; ++i) {
+    const double cost = cost_[i * n_ + assignment_[i]];
+    if (cost < c_p) {
+      parts.localisation += cost;
+      ++matched;
+    }
+  }
+  const int truths = truth_is_small_ ? m_ : n_;
+  const int estimates = truth_is_small_ ? n_ : m_;
+  parts.missed = truths - matched;
+  parts.false_estimates = estimates - matched;
+  return parts;
 }
 
 }  // namespace canopy::metrics

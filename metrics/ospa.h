@@ -25,11 +25,21 @@ class CutoffAssignment {
   /// Of the last solve: ( assignment + (c^p / 2) · (n − m) )^{1/p}; 0 when both sets are empty.
   double gospa() const;
 
+  /// GOSPA's parts (α = 2) of the last solve: gospa()^p = localisation + (c^p / 2)(missed + false),
+  /// a pair assigned at distance ≥ c counting as one missed truth and one false estimate.
+  struct Parts {
+    double localisation = 0.0;  // Σ d^p over the pairs assigned closer than c (m^p)
+    int missed = 0;             // truths with no estimate closer than c
+    int false_estimates = 0;    // estimates with no truth closer than c
+  };
+  Parts parts() const;
+
  private:
   double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
 
   double c_, p_;
   int m_ = 0, n_ = 0;
+  bool truth_is_small_ = true;  // the truth is the smaller set (rows of the assignment)
   agents::fusion::Hungarian hungarian_;
   std::vector<double> cost_;  // row-major m × n, reused
   std::span<const int> assignment_;

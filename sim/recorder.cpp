@@ -104,6 +104,8 @@ void RecordLineWriter::belief(JsonLine& j, const agents::AgentBelief& belief) {
     j.beginObject();
     j.key("P");
     upperTriangle(j, t.belief.P);
+    j.key("existence");
+    j.number(t.existence);
     j.key("key");
     key(j, t.key);
     j.key("label");

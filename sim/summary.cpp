@@ -11,6 +11,7 @@ SummaryBuilder::SummaryBuilder(const spec::ScenarioSpec& spec)
       uavs_(spec.uavs.size()),
       ospa_(spec.uavs.size()),
       gospa_(spec.uavs.size()),
+      false_tracks_(spec.uavs.size(), 0),
       plan_seconds_(spec.uavs.size()) {
   for (const spec::TargetSpec& target : spec.targets) {
     names_.targets.push_back(target.name);
@@ -65,9 +66,10 @@ void SummaryBuilder::onStep(const StepRecord& record) {
     for (const agents::TrackEstimate& track : record.beliefs[i].tracks) {
       estimates_.push_back(track.belief.x.head<2>());
     }
-    assignment_.solve(truth_positions_, estimates_);  // one assignment for both metrics
+    assignment_.solve(truth_positions_, estimates_);  // one assignment for every metric
     ospa_[i].push_back(assignment_.ospa());
     gospa_[i].push_back(assignment_.gospa());
+    false_tracks_[i] += assignment_.parts().false_estimates;
   }
   if (record.plan) {
     for (const auto& report : record.plan->reports)
@@ -102,6 +104,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   summary["targets"] = targets;
   Json uavs = Json::array();
   double ospa_sum = 0.0, gospa_sum = 0.0;
+  long false_track_steps = 0;
   Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
     Json uav = {{"name", names_.uavs[i]},
@@ -111,7 +114,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                 {"ospa_mean_m", mean(ospa_[i])},
                 {"ospa_m", ospa_[i]},
                 {"gospa_mean_m", mean(gospa_[i])},
-                {"gospa_m", gospa_[i]}};
+                {"gospa_m", gospa_[i]},
+                {"false_track_steps", false_tracks_[i]},
+                {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps}};
     if (i < counts_at_end_.size()) {
       const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;
@@ -119,11 +124,13 @@ std::string SummaryBuilder::json(double wall_seconds) const {
       uav["tracking_diagnostics"] = {
           {"births", end.tracking.births},
           {"deletions", end.tracking.deletions},
+          {"merges", end.tracking.merges},
           {"approximated_clusters", end.tracking.approximated_clusters},
           {"non_positive_covariances", end.tracking.non_positive_covariances}};
     }
     uavs.push_back(std::move(uav));
     ospa_sum += mean(ospa_[i]);
+    false_track_steps += false_tracks_[i];
     gospa_sum += mean(gospa_[i]);
     if (!plan_seconds_[i].empty()) {
       plan_timing.push_back(
@@ -142,7 +149,10 @@ std::string SummaryBuilder::json(double wall_seconds) const {
       {"ospa_cutoff_m", 50.0},
       {"ospa_order", 2},
       {"gospa_mean_m", uavs_.empty() ? 0.0 : gospa_sum / static_cast<double>(uavs_.size())},
-      {"gospa_alpha", 2}};
+      {"gospa_alpha", 2},
+      // False confirmed tracks: GOSPA's false part (a confirmed track with no target closer than
+      // the cut-off in the assignment), summed over agents and steps.
+      {"false_track_steps", false_track_steps}};
   if (steps_ > 0) {
     const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
     summary["fusion_diagnostics"] = {{"messages", d.messages},

@@ -54,11 +54,12 @@ class SummaryBuilder final : public StepObserver {
   std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
   std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
   metrics::CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
-  std::vector<std::vector<double>> ospa_;            // [agent][k], m
-  std::vector<std::vector<double>> gospa_;           // [agent][k], m
-  std::vector<std::vector<double>> plan_seconds_;    // [agent][epoch], s
-  std::vector<Vec2> truth_positions_, estimates_;    // scratch
-  std::vector<AgentCounts> counts_at_end_;  // the last step's; empty until a step was added
+  std::vector<std::vector<double>> ospa_;          // [agent][k], m
+  std::vector<std::vector<double>> gospa_;         // [agent][k], m
+  std::vector<long> false_tracks_;  // [agent]: Σ_k confirmed tracks with no target within c
+  std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
+  std::vector<Vec2> truth_positions_, estimates_;  // scratch
+  std::vector<AgentCounts> counts_at_end_;         // the last step's; empty until a step was added
   agents::fusion::FusionDiagnostics fusion_at_end_;
   agents::planning::MessageCounts intentions_at_end_;
   int steps_ = 0;

@@ -1,5 +1,7 @@
 #include "agents/fusion/information_consensus.h"
 
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "agents/fusion/small_cholesky.h"
@@ -32,6 +34,17 @@ bool fromInformation(const Eigen::Matrix<double, N, N>& omega, const Eigen::Matr
   g.x = cholesky.solve(q);   // x = Ω⁻¹ q (N)
   return true;
 }
+
+// Existence crosses as log-odds, ln(r / (1 − r)), kept within ±ln(10⁹ − 1) so that r = 0 or 1
+// stays finite.
+constexpr double kExistenceFloor = 1e-9;
+double logOdds(double r) {
+  const double p = std::clamp(r, kExistenceFloor, 1.0 - kExistenceFloor);
+  return std::log(p / (1.0 - p));
+}
+double fromLogOdds(double l) {
+  return 1.0 / (1.0 + std::exp(-l));
+}  // r = 1 / (1 + e^{−l})
 
 }  // namespace
 
@@ -138,12 +151,22 @@ void InformationConsensus<N>::runCi(std::span<TrackList> lists,
       ++diagnostics.numerical_failures;
     }
   }
+  existence_.resize(members.size());
+  for (int k = 0; k < count; ++k) {
+    existence_[k](0) = logOdds(lists[members[k].agent][members[k].track].existence);
+  }
   linkHolders(members, graph);
   // Ω_i ← Σ_j π_ij Ω_j, q_i ← Σ_j π_ij q_j, L rounds (Battistelli & Chisci 2014).
   mix(members, graph, rounds, info_, info_next_);
+  // Existence: the same rounds on the log-odds l = ln(r / (1 − r)), i.e. the normalised geometric
+  // mean of the Bernoulli distributions, as CI's information average is the Gaussians' geometric
+  // mean (docs/design-notes.md).
+  mix(members, graph, rounds, existence_, existence_next_);
   for (int k = 0; k < count; ++k) {
     if (!usable_[k]) continue;
-    Gaussian<N>& posterior = lists[members[k].agent][members[k].track].posterior;
+    tracking::Track<N>& track = lists[members[k].agent][members[k].track];
+    track.existence = fromLogOdds(existence_[k](0));
+    Gaussian<N>& posterior = track.posterior;
     const Mat omega = info_[k].template leftCols<N>();
     const Vec q = info_[k].col(N);
     if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
@@ -157,6 +180,7 @@ void InformationConsensus<N>::runHcmci(std::span<TrackList> lists,
                                        FusionDiagnostics& diagnostics) {
   const int count = static_cast<int>(members.size());
   hybrid_.resize(members.size());
+  existence_pair_.resize(members.size());
   for (int k = 0; k < count; ++k) {
     const tracking::Track<N>& track = lists[members[k].agent][members[k].track];
     Hybrid& y = hybrid_[k];
@@ -169,6 +193,10 @@ void InformationConsensus<N>::runHcmci(std::span<TrackList> lists,
       ++diagnostics.numerical_failures;
       continue;
     }
+    // Existence: the predicted log-odds and the scan's evidence, l − l⁻ (zero when adopted).
+    existence_pair_[k](0) = logOdds(track.existence_prior);
+    existence_pair_[k](1) =
+        members[k].adopted ? 0.0 : logOdds(track.existence) - existence_pair_[k](0);
     if (members[k].adopted) {
       y.template rightCols<N + 1>().setZero();  // an adopted copy brings no measurement
     } else {
@@ -181,10 +209,15 @@ void InformationConsensus<N>::runHcmci(std::span<TrackList> lists,
   // Consensus on prior information and on novel information, L rounds each (Battistelli,
   // Chisci, Mugnai, Farina & Graziano 2015).
   mix(members, graph, rounds, hybrid_, hybrid_next_);
+  mix(members, graph, rounds, existence_pair_, existence_pair_next_);
   for (int k = 0; k < count; ++k) {
     if (!usable_[k]) continue;
     const Hybrid& y = hybrid_[k];
     const double omega_scale = holders_[k];  // ω
+    // Existence as independent evidence: l = l⁻ + ω (l − l⁻), the agents' log likelihood ratios
+    // summed (their mean times the holders), as HCMCI sums the novel information.
+    lists[members[k].agent][members[k].track].existence =
+        fromLogOdds(existence_pair_[k](0) + omega_scale * existence_pair_[k](1));
     // Ω = Ω⁻ + ω δΩ, q = q⁻ + ω δq (Battistelli, Chisci, Mugnai, Farina & Graziano 2015).
     const Mat omega = y.template leftCols<N>() + omega_scale * y.template block<N, N>(0, N + 1);
     const Vec q = y.col(N) + omega_scale * y.col(2 * N + 1);
@@ -213,9 +246,11 @@ void InformationConsensus<N>::runObserverAverage(std::span<TrackList> lists,
     if (!usable_[k]) continue;
     const int i = members[k].agent;
     Info sum = Info::Zero();
+    double existence_sum = 0.0;  // Σ of the observers' log-odds
     int observers = 0;
     if (observed_[k]) {
       sum += info_[k];
+      existence_sum += logOdds(lists[i][members[k].track].existence);
       ++observers;
     }
     const std::span<const int> neighbours = graph.neighbours(i);
@@ -225,11 +260,14 @@ void InformationConsensus<N>::runObserverAverage(std::span<TrackList> lists,
         continue;
       }
       sum += info_[s];
+      existence_sum += logOdds(lists[members[s].agent][members[s].track].existence);
       ++observers;
     }
     if (observers == 0) continue;  // nobody heard saw it: keep the local posterior
-    // (Ω, q) = mean over the observers heard (the reference simulator's rule).
+    // (Ω, q) = mean over the observers heard (the reference simulator's rule); existence: the
+    // mean of their log-odds.
     sum /= static_cast<double>(observers);
+    lists[i][members[k].track].existence = fromLogOdds(existence_sum / observers);
     const Mat omega = sum.template leftCols<N>();
     const Vec q = sum.col(N);
     Gaussian<N>& posterior = lists[i][members[k].track].posterior;

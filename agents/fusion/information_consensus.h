@@ -34,6 +34,11 @@ namespace canopy::agents::fusion {
 /// - observer_average: one exchange; an agent averages (Ω, q) over itself and the neighbours it
 ///   heard, counting only those that observed the target this step (Track::detected); with no
 ///   observer among them it keeps its own posterior. rounds is ignored.
+/// Existence (JIPDA, Track::existence) is fused beside the state, as log-odds l = ln(r / (1 − r)):
+/// ci mixes l over the same rounds (the normalised geometric mean of the members' Bernoulli
+/// distributions, CI's rule for a Bernoulli); hcmci mixes (l⁻, l − l⁻) with l⁻ from
+/// Track::existence_prior and sets l = l⁻ + ω (l − l⁻) (independent evidence, as for the
+/// information); observer_average averages l over the same observers.
 /// A member whose covariance cannot be inverted takes no part and keeps its posterior; a fused
 /// information matrix that is not positive definite leaves the posterior unchanged. Both are
 /// counted as numerical failures.
@@ -86,6 +91,8 @@ class InformationConsensus {
   std::vector<int> stack_;
   std::vector<Info> info_, info_next_;
   std::vector<Hybrid> hybrid_, hybrid_next_;
+  std::vector<Eigen::Matrix<double, 1, 1>> existence_, existence_next_;            // CI: log-odds
+  std::vector<Eigen::Matrix<double, 1, 2>> existence_pair_, existence_pair_next_;  // HCMCI
 };
 
 }  // namespace canopy::agents::fusion

@@ -326,6 +326,7 @@ void TrackAssociation<N>::writeOut(std::span<TrackList> lists, Clusters& cluster
     copy.status = tracking::TrackStatus::confirmed;
     copy.expected_misses = 0;
     copy.detected = false;
+    copy.merge_streak = 0;  // its partner was a track of the source's list
     TrackList& list = lists[adoption.agent];
     list.push_back(copy);
     clusters.members[order_[adoption.cluster]++] = {adoption.agent,

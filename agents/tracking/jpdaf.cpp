@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "agents/tracking/existence.h"
 #include "agents/tracking/kalman.h"
 #include "agents/tracking/measurement_model.h"
 
@@ -23,9 +24,12 @@ void Jpdaf::step(std::vector<Track<N>>& tracks, std::span<const int> track_ids,
   pair_start_.resize(n_tracks + 1);
   for (int k = 0; k < n_tracks; ++k) {
     pair_start_[k] = static_cast<int>(pairs_.size());
-    const Gaussian<N>& prior = tracks[track_ids[k]].prior;
-    gate(prior.x.template head<2>(), prior.P.template topLeftCorner<2, 2>(), k, observations,
-         obs_ids, config, claimed, diagnostics);
+    const Track<N>& track = tracks[track_ids[k]];
+    // JIPDA: the association weights are JPDA's with P_D replaced by P_D ψ, and the P_D a track
+    // expects is P_D × P(visible) (agents/tracking/existence.h).
+    const double p_detect = config.p_detect * track.visibility * track.existence_prior;
+    gate(track.prior.x.template head<2>(), track.prior.P.template topLeftCorner<2, 2>(), k,
+         p_detect, observations, obs_ids, config, claimed, diagnostics);
   }
   pair_start_[n_tracks] = static_cast<int>(pairs_.size());
 
@@ -35,13 +39,18 @@ void Jpdaf::step(std::vector<Track<N>>& tracks, std::span<const int> track_ids,
   for (int k = 0; k < n_tracks; ++k) {
     Track<N>& track = tracks[track_ids[k]];
     track.detected = pair_start_[k + 1] > pair_start_[k];
-    track.posterior = track.detected
-                          ? mixture<N>(track.prior, k, observations, obs_ids, config, diagnostics)
-                          : track.prior;
+    if (track.detected) {
+      track.posterior = mixture<N>(track, k, observations, obs_ids, config, diagnostics);
+    } else {
+      track.posterior = track.prior;
+      // r⁺ = ψ (1 − P_D P_G) / (1 − P_D P_G ψ): no measurement of its own (existence.h)
+      track.existence = existenceAfterMiss(
+          track.existence_prior, config.p_detect * track.visibility, config.gate_probability);
+    }
   }
 }
 
-void Jpdaf::gate(const Vec2& position, const Mat2& P_pos, int track,
+void Jpdaf::gate(const Vec2& position, const Mat2& P_pos, int track, double p_detect,
                  std::span<const sensing::Observation> observations, std::span<const int> obs_ids,
                  const TrackingConfig& config, std::span<std::uint8_t> claimed,
                  TrackingDiagnostics& diagnostics) {
@@ -62,10 +71,10 @@ void Jpdaf::gate(const Vec2& position, const Mat2& P_pos, int track,
     const Vec2 w = llt.matrixL().solve(nu);
     const double d2 = w.squaredNorm();  // d² = νᵀ S⁻¹ ν = |L⁻¹ ν|²
     if (d2 <= gamma_birth) claimed[l] = 1;
-    if (!(d2 <= gamma)) continue;
+    if (!(d2 <= gamma) || !(p_detect > 0.0)) continue;  // P_D ψ = 0: no joint event assigns it
     const double log_det = 2.0 * std::log(llt.matrixL()(0, 0) * llt.matrixL()(1, 1));  // ln|S|
     pairs_.push_back({track, l,
-                      associationLogRatio(d2, log_det, config.p_detect, config.gate_probability,
+                      associationLogRatio(d2, log_det, p_detect, config.gate_probability,
                                           config.clutter_density)});
   }
 }
@@ -142,10 +151,11 @@ void Jpdaf::solveClusters(int tracks, int measurements, const TrackingConfig& co
 }
 
 template <int N>
-Gaussian<N> Jpdaf::mixture(const Gaussian<N>& prior, int track,
+Gaussian<N> Jpdaf::mixture(Track<N>& owner, int track,
                            std::span<const sensing::Observation> observations,
                            std::span<const int> obs_ids, const TrackingConfig& config,
                            TrackingDiagnostics& diagnostics) {
+  const Gaussian<N>& prior = owner.prior;
   using Model = MeasurementModel<N>;
   using VecN = Eigen::Matrix<double, N, 1>;
   using MatN = Eigen::Matrix<double, N, N>;
@@ -170,9 +180,19 @@ Gaussian<N> Jpdaf::mixture(const Gaussian<N>& prior, int track,
   }
   beta_miss = std::max(0.0, beta_miss);  // β_0 = 1 − Σ_j β_j
   detection_probability_[track] = 1.0 - beta_miss;
+  // JIPDA (existence.h): r⁺ = Σ_{j≥1} β_j + β_0 r_miss, r_miss = P(exists | no measurement); the
+  // state mixes the hypotheses conditional on existence, weights β_j / r⁺ and β_0 r_miss / r⁺.
+  const double p_detect = config.p_detect * owner.visibility;
+  const double r_miss =
+      existenceAfterMiss(owner.existence_prior, p_detect, config.gate_probability);
+  const double r = std::min(1.0, (1.0 - beta_miss) + beta_miss * r_miss);
+  owner.existence = r;
+  if (!(r > 0.0)) return prior;
+  d /= r;
   Gaussian<N> posterior;
-  posterior.x = prior.x + d;                                         // x = Σ_j β_j x_j
-  const MatN P = beta_miss * prior.P + moments - d * d.transpose();  // P = Σ_j β_j (P_j + …)
+  posterior.x = prior.x + d;  // x = Σ_j β̃_j x_j
+  const MatN P = (beta_miss * r_miss / r) * prior.P + moments / r -
+                 d * d.transpose();  // P = Σ_j β̃_j (P_j + (x − x_j)(x − x_j)ᵀ)
   posterior.P = 0.5 * (P + P.transpose());
   if (Eigen::LLT<MatN>(posterior.P).info() != Eigen::Success) {
     ++diagnostics.non_positive_covariances;

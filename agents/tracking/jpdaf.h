@@ -35,9 +35,12 @@ class Jpdaf {
   /// likelihood over (cx, cy, r) would need a density per m²·m that the model does not have. The
   /// radius still enters the update (H = I₃).
   ///
-  /// Each track's posterior is the PDA mixture over its hypotheses j = 0 (miss: the prediction
-  /// itself) and j ≥ 1 (Kalman update with measurement j), with β from JpdaSolver:
-  ///   x = Σ_j β_j x_j,  P = Σ_j β_j (P_j + (x − x_j)(x − x_j)ᵀ).
+  /// JIPDA (agents/tracking/existence.h): the association weights use P_D · visibility · ψ with
+  /// each track's `visibility` and predicted existence ψ = `existence_prior`, and each track's
+  /// `existence` is updated. Each track's posterior is the mixture, conditional on existence, over
+  /// its hypotheses j = 0 (miss: the prediction itself) and j ≥ 1 (Kalman update with
+  /// measurement j), with β from JpdaSolver and β̃ the weights given existence:
+  ///   x = Σ_j β̃_j x_j,  P = Σ_j β̃_j (P_j + (x − x_j)(x − x_j)ᵀ)  (β̃ = β when ψ = 1).
   /// Instantiated for N = 4 (targets) and N = 3 (trees).
   template <int N>
   void step(std::vector<Track<N>>& tracks, std::span<const int> track_ids,
@@ -59,7 +62,7 @@ class Jpdaf {
     double log_ratio;  // ln r_tj
   };
 
-  void gate(const Vec2& position, const Mat2& P_pos, int track,
+  void gate(const Vec2& position, const Mat2& P_pos, int track, double p_detect,
             std::span<const sensing::Observation> observations, std::span<const int> obs_ids,
             const TrackingConfig& config, std::span<std::uint8_t> claimed,
             TrackingDiagnostics& diagnostics);
@@ -67,7 +70,7 @@ class Jpdaf {
                      TrackingDiagnostics& diagnostics);
   int find(int node);
   template <int N>
-  Gaussian<N> mixture(const Gaussian<N>& prior, int track,
+  Gaussian<N> mixture(Track<N>& owner, int track,
                       std::span<const sensing::Observation> observations,
                       std::span<const int> obs_ids, const TrackingConfig& config,
                       TrackingDiagnostics& diagnostics);

@@ -24,6 +24,15 @@ struct Track {
   int hits = 0;             // scans in which Σ_j β_tj ≥ ½ (see Tracker::update)
   int expected_misses = 0;  // consecutive misses while expected visible
   bool detected = false;    // this scan: at least one measurement in the gate
+  // JIPDA (agents/tracking/existence.h): probability of existence after this step's update (and
+  // fusion), and its prediction ψ = p_S · r before the update.
+  double existence = 1.0;
+  double existence_prior = 1.0;
+  double visibility = 1.0;  // this scan: P(visible) of the predicted position to the own camera
+  // Duplicate test (Tracker::mergeDuplicates): the track that passed the test last scan and for
+  // how many consecutive scans it has.
+  TrackKey merge_partner;
+  int merge_streak = 0;
   // Trees only: the outline of a polygonal crown or wall, when one was measured.
   [[no_unique_address]] std::conditional_t<N == 3, TreeOutline, NoOutline> outline;
 };
@@ -37,6 +46,7 @@ struct TrackingDiagnostics {
   long non_positive_covariances = 0;  // updates that needed repair to stay positive definite
   long births = 0;
   long deletions = 0;
+  long merges = 0;  // duplicate tracks merged into another (counted in deletions too)
 };
 
 }  // namespace canopy::agents::tracking

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "agents/tracking/existence.h"
 #include "agents/tracking/measurement_model.h"
 #include "agents/tracking/motion_model.h"
 
@@ -22,8 +23,8 @@ template <int N>
 bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
                      const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor) {
   const Vec2 position = track.prior.x.template head<2>();
-  if (!footprint.contains(position)) return false;
   if constexpr (N == 3) {
+    if (!footprint.contains(position)) return false;
     if (!camera.ground_level) return true;
     const Vec2 offset = position - sensor;
     const double distance = offset.norm();
@@ -31,9 +32,22 @@ bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
     if (distance <= radius) return true;  // the sensor under the crown: it fills the view
     return !map.blocksSegment(sensor, position - (radius / distance) * offset);
   } else {
-    if (camera.targets == sensing::OcclusionModel::line_of_sight)
-      return !map.blocksSegment(sensor, position);
-    return !map.occludes(position);
+    return targetVisible(position, footprint, map, camera, sensor);
+  }
+}
+
+// P(visible) of a track this scan: for targets over its position uncertainty (five sigma
+// points, agents/tracking/visibility.h); for trees the centre's verdict (a map's crown is seen
+// whole or not at all).
+template <int N>
+double visibility(const Track<N>& track, const sensing::Footprint& footprint,
+                  const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor) {
+  if constexpr (N == 3) {
+    return expectedVisible(track, footprint, map, camera, sensor) ? 1.0 : 0.0;
+  } else {
+    return visibleProbability(track.prior.x.template head<2>(),
+                              track.prior.P.template topLeftCorner<2, 2>(), footprint, map, camera,
+                              sensor);
   }
 }
 
@@ -53,13 +67,17 @@ void Tracker::preseed(int target, sensing::LabelId label, const Vec4& state) {
 }
 
 void Tracker::predict(double dt) {
+  const double survival = scanSurvival(config_.survival_probability, dt);  // p_S over dt
   for (TargetTrack& track : targets_) {
     track.prior = predictNcv(track.posterior, dt, config_.sigma_a);
     track.posterior = track.prior;
+    track.existence_prior = survival * track.existence;  // ψ = p_S r
+    track.existence = track.existence_prior;
   }
-  for (TreeTrack& track : trees_) {
+  for (TreeTrack& track : trees_) {  // trees do not go away: p_S = 1
     track.prior = predictStatic(track.posterior);
     track.posterior = track.prior;
+    track.existence_prior = track.existence;
   }
 }
 
@@ -96,6 +114,10 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     const sensing::Observation& o = scan.observations[l];
     if (o.label == label && Model::valid(o)) obs_ids_.push_back(l);
   }
+  for (const int k : track_ids_) {
+    tracks[k].visibility =
+        visibility(tracks[k], own_footprint, own_map, camera, scan.sensor_position);
+  }
   claimed_.resize(obs_ids_.size());
   jpdaf_.step<N>(tracks, track_ids_, scan.observations, obs_ids_, config_, claimed_, diagnostics_);
 
@@ -130,6 +152,8 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     track.scans = 1;
     track.hits = 1;
     track.detected = true;
+    track.existence = config_.birth_existence;
+    track.existence_prior = config_.birth_existence;
     if constexpr (N == 3) track.outline.observe(scan.observations[obs_ids_[l]].outline);
     tracks.push_back(track);
     ++diagnostics_.births;
@@ -138,6 +162,19 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
 
 template <int N>
 void Tracker::confirmOrDrop(std::vector<Track<N>>& tracks) {
+  if (config_.confirmation == TrackConfirmation::existence) {
+    // JIPDA: confirmed once r ≥ confirm_existence; a tentative track whose r fell below
+    // delete_existence is dropped at once (confirmed ones are judged after fusion, deleteStale).
+    for (Track<N>& track : tracks) {
+      if (track.status == TrackStatus::tentative && track.existence >= config_.confirm_existence)
+        track.status = TrackStatus::confirmed;
+    }
+    const auto dropped = std::erase_if(tracks, [this](const Track<N>& track) {
+      return track.status == TrackStatus::tentative && track.existence < config_.delete_existence;
+    });
+    diagnostics_.deletions += static_cast<long>(dropped);
+    return;
+  }
   for (Track<N>& track : tracks) {
     if (track.status == TrackStatus::tentative && track.hits >= config_.confirm_hits &&
         track.scans <= config_.confirm_window) {
@@ -157,6 +194,12 @@ void Tracker::adopt(std::vector<TargetTrack>&& targets, std::vector<TreeTrack>&&
   trees_.swap(trees);
 }
 
+void Tracker::mergeDuplicates() {
+  const int merged = merger_.merge(targets_, config_.merge_gate, config_.merge_scans);
+  diagnostics_.merges += merged;
+  diagnostics_.deletions += merged;
+}
+
 void Tracker::deleteStale() {
   deleteStale(targets_);
   deleteStale(trees_);
@@ -169,6 +212,10 @@ void Tracker::deleteStale(std::vector<Track<N>>& tracks) {
     if (!g.x.allFinite() || !g.P.allFinite()) return true;
     const double trace_pos = g.P(0, 0) + g.P(1, 1);  // tr(P_pos) (m²)
     if (trace_pos > config_.delete_trace) return true;
+    if (config_.confirmation == TrackConfirmation::existence &&
+        track.existence < config_.delete_existence) {
+      return true;
+    }
     return config_.delete_misses > 0 && track.expected_misses >= config_.delete_misses;
   });
   diagnostics_.deletions += static_cast<long>(deleted);

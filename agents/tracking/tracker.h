@@ -8,19 +8,15 @@
 
 #include "agents/config.h"
 #include "agents/occlusion_map.h"
+#include "agents/tracking/duplicates.h"
 #include "agents/tracking/jpdaf.h"
 #include "agents/tracking/track.h"
+#include "agents/tracking/visibility.h"
 #include "sensing/footprint.h"
 #include "sensing/observation.h"
 #include "sensing/visibility.h"
 
 namespace canopy::agents::tracking {
-
-/// What hides things from an agent's own camera (sensing/sensor.h's occlusionModel).
-struct CameraOcclusion {
-  sensing::OcclusionModel targets = sensing::OcclusionModel::canopy;
-  bool ground_level = false;  // trees hide trees too
-};
 
 class Tracker {
  public:
@@ -36,27 +32,38 @@ class Tracker {
   /// posterior = prior.
   void predict(double dt);
 
-  /// The local JPDAF per label on this scan's observations (observations only associate with
+  /// The local JIPDA per label on this scan's observations (each track's P_D is P_D × its
+  /// probability of being visible to the own camera, agents/tracking/visibility.h; its existence
+  /// is updated, agents/tracking/existence.h) (observations only associate with
   /// tracks of their own label; tree observations with tree tracks). Then per track: `detected`,
   /// scans and hits, and the count of consecutive misses while expected visible (predicted
   /// position inside own_footprint and, for targets, not occluded in own_map; a tree's crown
   /// does not hide it). Measurements in no track's birth gate
   /// (TrackingConfig::birth_gate_probability, wider than the association gate) are born as
-  /// tentative tracks. A tentative track is confirmed after confirm_hits hits — scans in which Σ_j
-  /// β_tj ≥ ½, i.e. it more likely than not received a measurement — within its first
-  /// confirm_window scans, and dropped as soon as it can no longer be. Observations with non-finite
-  /// values or a covariance that is not positive definite are ignored.
-  /// `camera` says how the own camera is hidden: targets under a crown of own_map (from above),
-  /// or behind one on the segment from scan.sensor_position (line of sight); at ground level a
-  /// tree too is expected visible only when no map crown stands on the segment to the point of
-  /// its crown nearest the sensor.
+  /// tentative tracks with existence birth_existence. With existence confirmation a tentative
+  /// track is confirmed once its existence reaches confirm_existence and dropped once it falls
+  /// below delete_existence. With m_of_n a tentative track is confirmed after confirm_hits hits —
+  /// scans in which Σ_j β_tj ≥ ½, i.e. it more likely than not received a measurement — within its
+  /// first confirm_window scans, and dropped as soon as it can no longer be. Observations with
+  /// non-finite values or a covariance that is not positive definite are ignored. `camera` says how
+  /// the own camera is hidden: targets under a crown of own_map (from above), or behind one on the
+  /// segment from scan.sensor_position (line of sight); at ground level a tree too is expected
+  /// visible only when no map crown stands on the segment to the point of its crown nearest the
+  /// sensor.
   void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,
               const OcclusionMap& own_map, const CameraOcclusion& camera = {});
 
-  /// Deletes tracks with tr(P_pos) > delete_trace (or a non-finite posterior) and, when
-  /// delete_misses > 0, tracks missed that many consecutive scans while expected visible.
-  /// Called by the agent after fusion, so it judges the fused posteriors.
+  /// Deletes tracks with tr(P_pos) > delete_trace (or a non-finite posterior), with existence
+  /// below delete_existence (existence confirmation), and, when delete_misses > 0, tracks missed
+  /// that many consecutive scans while expected visible. Called by the agent after fusion, so it
+  /// judges the fused posteriors and existences.
   void deleteStale();
+
+  /// Merges duplicate target tracks (agents/tracking/duplicates.h): a pair whose track-to-track
+  /// distance passed config.merge_gate for config.merge_scans consecutive calls becomes one. Call
+  /// once per scan: the agent calls it after fusion, on the fused lists; a lone tracker after
+  /// update().
+  void mergeDuplicates();
 
   /// Replaces the tracks by the team's fused lists (TeamFusion::fuse): the same tracks with
   /// fused keys and posteriors, plus the ones adopted from neighbours. The lists are swapped
@@ -92,6 +99,7 @@ class Tracker {
   std::vector<sensing::LabelId> labels_;  // target labels present this scan
   std::vector<int> track_ids_, obs_ids_;
   std::vector<std::uint8_t> claimed_;
+  DuplicateMerger merger_;
 };
 
 }  // namespace canopy::agents::tracking

@@ -175,12 +175,15 @@ py::dict tracks(py::handle self, std::size_t agent) {
   py::dict out = gaussians<4>(list);  // means (m, 4) px, py, vx, vy; covariances (m, 4, 4)
   py::array_t<long> labels(static_cast<py::ssize_t>(list.size()));
   py::array_t<bool> confirmed(static_cast<py::ssize_t>(list.size()));
+  py::array_t<double> existence(static_cast<py::ssize_t>(list.size()));
   for (std::size_t j = 0; j < list.size(); ++j) {
     labels.mutable_at(j) = list[j].label;
     confirmed.mutable_at(j) = list[j].confirmed;
+    existence.mutable_at(j) = list[j].existence;
   }
   out["labels"] = labels;
   out["confirmed"] = confirmed;
+  out["existence"] = existence;  // probability of existence (JIPDA)
   return out;
 }
 
@@ -251,7 +254,7 @@ void bindReaders(py::class_<PySimulation>& cls) {
            "UAV's scan at the last step: z (m, 2), R (m, 2, 2), labels, truth, radius, "
            "in_footprint, visible")
       .def("tracks", &tracks, py::arg("agent"),
-           "Agent's fused target tracks: keys (m, 2), labels, confirmed, means (m, 4), "
+           "Agent's fused target tracks: keys (m, 2), labels, confirmed, existence, means (m, 4), "
            "covariances (m, 4, 4)")
       .def("occlusion_map", &occlusionMap, py::arg("agent"),
            "Agent's occlusion map: keys (m, 2), means (m, 3) cx, cy, r, covariances (m, 3, 3), "

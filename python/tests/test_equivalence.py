@@ -32,6 +32,7 @@ def _compare_step(sim, line):
         for j, t in enumerate(agent["tracks"]):
             assert list(tracks["means"][j]) == t["x"]
             assert _upper(tracks["covariances"][j]) == t["P"]
+            assert tracks["existence"][j] == t["existence"]
         trees = sim.occlusion_map(i)
         assert [list(k) for k in trees["keys"]] == [t["key"] for t in agent["map"]]
         for j, t in enumerate(agent["map"]):

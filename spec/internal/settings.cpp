@@ -79,6 +79,16 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
     (*reader.field().out())["preseed_variance"] = Json{1.0, 1.0, 1.0, 1.0};
   }
   t.tree_min_radius = reader.number("tree_min_radius", t.tree_min_radius, Bound::non_negative);
+  t.confirmation =
+      reader.enumeration("confirmation", agents::kTrackConfirmationNames, t.confirmation);
+  t.survival_probability =
+      reader.number("survival_probability", t.survival_probability, Bound::unit_interval);
+  t.birth_existence = reader.number("birth_existence", t.birth_existence, Bound::open_probability);
+  t.confirm_existence =
+      reader.number("confirm_existence", t.confirm_existence, Bound::unit_interval);
+  t.delete_existence = reader.number("delete_existence", t.delete_existence, Bound::unit_interval);
+  t.merge_gate = reader.number("merge_gate", t.merge_gate, Bound::non_negative);
+  t.merge_scans = reader.integer("merge_scans", t.merge_scans, 0, 1000);
   reader.finish();
 }
 

@@ -38,6 +38,7 @@ TEST(Jpdaf, SharedMeasurementSplitsProbability) {
   // with parametric JPDA weights (1 − P_D P_G)², P_D N₁/λ (1 − P_D P_G), P_D N₂/λ (1 − P_D P_G):
   //   β₁ = P_D N₁ / (λ (1 − P_D P_G) + P_D (N₁ + N₂)).
   TrackingConfig config;
+  config.survival_probability = 1.0;  // ψ = 1: JIPDA's weights are JPDA's (existence.h)
   const double tau = 0.2, r = 0.5;
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4(-1.0, 0.0, 0.0, 0.0));
@@ -76,7 +77,8 @@ TEST(Jpdaf, LoneTrackReducesToPdaClosedForm) {
   //   Σe), x = x̄ + K ν̄ with ν̄ = Σ β_j ν_j, P = β₀ P̄ + (1 − β₀) (P̄ − K S Kᵀ) + K (Σ β_j ν_j ν_jᵀ − ν̄
   //   ν̄ᵀ) Kᵀ.
   TrackingConfig config;
-  config.clutter_density = 0.05;  // large enough that β₀ and the spread term matter
+  config.survival_probability = 1.0;  // ψ = 1: JIPDA's weights are JPDA's (existence.h)
+  config.clutter_density = 0.05;      // large enough that β₀ and the spread term matter
   const double tau = 0.2, r = 0.4;
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4(2.0, 3.0, 0.0, 0.0));
@@ -124,6 +126,7 @@ TEST(Jpdaf, LoneTrackReducesToPdaClosedForm) {
 
 TEST(Jpdaf, LabelsNeverMix) {
   TrackingConfig config;
+  config.survival_probability = 1.0;  // ψ = 1: JIPDA's weights are JPDA's (existence.h)
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4(0.0, 0.0, 0.0, 0.0));
   tracker.predict(0.2);

@@ -20,6 +20,13 @@ using test::treeObservation;
 
 constexpr double kDt = 0.2;  // s
 
+// The M-of-N rule with deletion by covariance and misses: the tracker before existences.
+TrackingConfig mOfN() {
+  TrackingConfig config;
+  config.confirmation = TrackConfirmation::m_of_n;
+  return config;
+}
+
 const sensing::Footprint kWide = discFootprint(Vec2::Zero(), 100.0);
 
 void step(Tracker& tracker, const sensing::Scan& scan, const sensing::Footprint& footprint = kWide,
@@ -54,7 +61,7 @@ TEST(Tracker, PreseededTracksAreConfirmedWithTheirKeys) {
 }
 
 TEST(Tracker, ClutterBirthIsDroppedWhenNotConfirmed) {
-  Tracker tracker(2, TrackingConfig{});
+  Tracker tracker(2, mOfN());
   step(tracker, scanWith(Vec2(5.0, 5.0)));
   ASSERT_EQ(tracker.targets().size(), 1u);
   EXPECT_EQ(tracker.targets()[0].key, (TrackKey{2, 0}));
@@ -68,7 +75,7 @@ TEST(Tracker, ClutterBirthIsDroppedWhenNotConfirmed) {
 }
 
 TEST(Tracker, TwoHitsOutOfThreeConfirm) {
-  Tracker tracker(0, TrackingConfig{});
+  Tracker tracker(0, mOfN());
   step(tracker, scanWith(Vec2(5.0, 5.0)));
   step(tracker, sensing::Scan{});
   step(tracker, scanWith(Vec2(5.1, 4.9)));
@@ -78,7 +85,7 @@ TEST(Tracker, TwoHitsOutOfThreeConfirm) {
   EXPECT_EQ(tracker.targets()[0].hits, 2);
   EXPECT_EQ(tracker.targets()[0].scans, 3);
 
-  Tracker quick(0, TrackingConfig{});  // hits in scans 1 and 2 confirm at scan 2
+  Tracker quick(0, mOfN());  // hits in scans 1 and 2 confirm at scan 2
   step(quick, scanWith(Vec2(5.0, 5.0)));
   step(quick, scanWith(Vec2(5.0, 5.1)));
   EXPECT_EQ(quick.targets()[0].status, TrackStatus::confirmed);
@@ -102,7 +109,7 @@ TEST(Tracker, OnlyMeasurementsOutsideTheBirthGateStartTracks) {
 TEST(Tracker, HitNeedsTheMeasurementMoreLikelyThanNot) {
   // A tentative track 3 m from a confirmed one gates the confirmed one's next measurements but
   // takes only a small share of them (β ≈ 0.1): they are not hits, and it is dropped at scan 3.
-  TrackingConfig config;
+  TrackingConfig config = mOfN();
   config.preseed_variance = Vec4(0.1, 0.1, 0.01, 0.01);
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4::Zero());
@@ -126,7 +133,7 @@ TEST(Tracker, HitNeedsTheMeasurementMoreLikelyThanNot) {
 TEST(Tracker, DeletesWhenPositionTraceExceedsThreshold) {
   // Coasting from P₀ = I, n steps of τ give per axis (closed form, sum of F^i Q Fⁱᵀ):
   //   P_pp(n) = 1 + (nτ)² + σ_a² τ⁴ n (4n² − 1) / 12, and tr(P_pos) = 2 P_pp.
-  TrackingConfig config;
+  TrackingConfig config = mOfN();
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4::Zero());
   auto trace = [&](int n) {
@@ -146,7 +153,7 @@ TEST(Tracker, DeletesWhenPositionTraceExceedsThreshold) {
 }
 
 TEST(Tracker, ExpectedMissRuleDeletesOnlyVisibleTracks) {
-  TrackingConfig config;
+  TrackingConfig config = mOfN();
   config.delete_misses = 3;
   Tracker tracker(0, config);
   tracker.preseed(0, 1, Vec4(5.0, 5.0, 0.0, 0.0));    // in the footprint, in the open
@@ -169,7 +176,7 @@ TEST(Tracker, ExpectedMissRuleDeletesOnlyVisibleTracks) {
 TEST(Tracker, SurvivesOcclusionAndReassociates) {
   // A target walks at (1, 0.5) m/s under a static UAV; it is detected for 10 s, hidden for 3 s
   // (15 steps at 0.2 s), then seen again. Its track must keep its key and no track be reborn.
-  TrackingConfig config;
+  TrackingConfig config = mOfN();
   Tracker tracker(1, config);
   RandomStream rng(11, "tracker_test_occlusion");
   const sensing::SensorQuality quality;
