@@ -196,7 +196,8 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
 
 ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
                               const LoadOptions& options) {
-  return loadDocument(parseJson(text, file), file, options, text);
+  return loadDocument(parseJson(text, file), file, options,
+                      options.text_is_the_file ? text : std::string());
 }
 
 ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options) {

@@ -22,6 +22,10 @@ struct LoadOptions {
   double budget_scale = 1.0;
   /// When set, every field the loader reads is recorded here (spec/field_log.h).
   FieldLog* field_log = nullptr;
+  /// loadScenarioText: the text is the file's own, so errors name its lines (loadScenario always
+  /// does). Off for text made elsewhere (Python's edits, a manifest's configuration), whose
+  /// lines would point into a file that does not hold them.
+  bool text_is_the_file = false;
 };
 
 /// scenario: a path to a file, or the name of a file in the scenario library (with or without

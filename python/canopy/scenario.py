@@ -2,11 +2,14 @@
 
 The dict is the effective configuration the command line records in manifest.json, so it has
 the scenario file's grammar (scenarios/library/demo.json documents every field). Edit it freely
-(``scenario["uavs.0.v_max"] = 3``, ``scenario.occluders.append(...)``); ``validate()`` checks it
-with the command line's loader, and ``save(path)`` writes a file ``canopy run`` runs identically.
+(``scenario["uavs.0.v_max"] = 3``, ``del scenario["uavs.0.v_max"]``): each edit through ``[]`` is
+checked at once with the command line's loader and refused (undone, ScenarioError naming the field)
+when it makes an error; edits made to the dicts directly (``scenario.occluders.append(...)``) are
+checked by ``validate()``. ``save(path)`` writes a file ``canopy run`` runs identically.
 """
 import copy
 import json
+import math
 import os
 
 from . import _canopy
@@ -20,6 +23,33 @@ def _overrides(overrides):
             raise TypeError(f"overrides: expected dotted field paths as keys, got {path!r}")
         items.append(f"{path}={json.dumps(value)}")
     return items
+
+
+def _cli_path(path):
+    """"uavs.0.v_max" → "uavs[0].v_max": the field path as the loader's messages spell it."""
+    out = ""
+    for part in str(path).split("."):
+        out += f"[{part}]" if part.lstrip("-").isdigit() else (("." if out else "") + part)
+    return out
+
+
+def _error(file, field, reason):
+    """A ScenarioError with the attributes the loader's carry."""
+    error = _canopy.ScenarioError(f"{file}: {field}: {reason}" if field else f"{file}: {reason}")
+    error.file, error.field, error.reason = file, field, reason
+    return error
+
+
+def _check_finite(value, file, path):
+    """JSON has no NaN or infinity: refused where it is set, naming the field."""
+    if isinstance(value, float) and not math.isfinite(value):
+        raise _error(file, path, f"expected a finite number, got {value!r}")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_finite(v, file, f"{path}.{k}")
+    elif isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            _check_finite(v, file, f"{path}[{i}]")
 
 
 def load(name_or_path, overrides=None, allowed_roots=()):
@@ -49,11 +79,65 @@ class Scenario:
         return parent[key]
 
     def __setitem__(self, path, value):
+        """Sets a field and checks the edit at once with the loader's rules: an edit that makes an
+        error the configuration did not have is undone and raises ScenarioError with the command
+        line's message and field path (``uavs[0].v_max``), naming where the scenario came from."""
         parent, key = self._parent(path)
-        if isinstance(parent, dict) or key < len(parent):
-            parent[key] = value
-        else:
-            raise KeyError(f"{self.file}: {path}: no element {key} (the list has {len(parent)})")
+        if isinstance(parent, list) and not -len(parent) <= key < len(parent):
+            raise KeyError(f"{self.file}: {_cli_path(path)}: no element {key} "
+                           f"(the list has {len(parent)})")
+        _check_finite(value, self.file, _cli_path(path))
+        had, old = (key in parent, parent.get(key)) if isinstance(parent, dict) else (True, parent[key])
+        before = self._errors()
+        parent[key] = copy.deepcopy(value)
+        try:
+            self._refuse_new_errors(before)
+        except Exception:
+            if had:
+                parent[key] = old
+            else:
+                del parent[key]
+            raise
+
+    def __delitem__(self, path):
+        """Removes a field: the loader's default takes its place (a section left out is off), as
+        if the file had never given it; a list element is removed from its list. Checked like an
+        assignment."""
+        parent, key = self._parent(path)
+        if isinstance(parent, list) and not -len(parent) <= key < len(parent):
+            raise KeyError(f"{self.file}: {_cli_path(path)}: no element {key} "
+                           f"(the list has {len(parent)})")
+        if isinstance(parent, dict) and key not in parent:
+            raise KeyError(f"{self.file}: {_cli_path(path)}: no such field")
+        before = self._errors()
+        saved = copy.deepcopy(self.config)
+        del parent[key]
+        try:
+            self._refuse_new_errors(before)
+            if isinstance(parent, dict):
+                filled = Scenario(json.loads(_canopy._check(*self._source())), self.file,
+                                  self.allowed_roots)
+                try:
+                    parent[key] = filled[path]  # the default the loader filled in
+                except KeyError:
+                    pass  # an optional section with no default: left out
+        except Exception:
+            self.config = saved
+            raise
+
+    def _errors(self):
+        """The loader's errors of the current configuration, one message each (empty: valid),
+        and the loader's exception."""
+        try:
+            _canopy._check(*self._source())
+        except _canopy.ScenarioError as error:
+            return set(str(error).splitlines()), error
+        return set(), None
+
+    def _refuse_new_errors(self, before):
+        after, error = self._errors()
+        if after - before[0]:
+            raise error
 
     def _parent(self, path):
         """The container holding the dotted ``path`` and the last key (an int for lists)."""
@@ -81,7 +165,11 @@ class Scenario:
 
     # --- checking and writing ------------------------------------------------------------
     def _source(self):
-        return json.dumps(self.config), self.file, self.allowed_roots
+        try:
+            text = json.dumps(self.config, allow_nan=False)
+        except ValueError:  # a NaN put in by hand (config is a plain dict)
+            raise _error(self.file, "", "expected finite numbers (JSON has no NaN or infinity)") from None
+        return text, self.file, self.allowed_roots
 
     def _spec(self):
         """The loader's result for the current configuration; loaded again only after a change

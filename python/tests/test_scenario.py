@@ -25,7 +25,7 @@ def test_unknown_override_raises_naming_the_field():
 
 def test_validate_error_is_the_clis(tmp_path, cli):
     s = canopy.load("demo")
-    s["uavs.0.v_max"] = -1.0
+    s.config["uavs"][0]["v_max"] = -1.0  # by hand: an edit through [] is refused at once
     path = tmp_path / "bad.json"
     path.write_text(json.dumps(s.config))
     bad = canopy.Scenario(json.loads(path.read_text()), file=path)
@@ -40,10 +40,43 @@ def test_validate_error_is_the_clis(tmp_path, cli):
 
 def test_wrong_type_names_the_field():
     s = canopy.load("demo")
-    s["clock.dt"] = "fast"
+    s.config["clock"]["dt"] = "fast"
     with pytest.raises(canopy.ScenarioError) as e:
         s.validate()
     assert e.value.field == "clock.dt"
+
+
+@pytest.mark.parametrize("path, value, field, reason", [
+    ("uavs.0.vmax", 3.0, "uavs[0].vmax", "unknown field"),
+    ("uavs.0.v_max", float("nan"), "uavs[0].v_max", "expected a finite number"),
+    ("uavs.0.v_max", float("inf"), "uavs[0].v_max", "expected a finite number"),
+    ("uavs.0.v_max", -3.0, "uavs[0].v_max", "expected a positive number"),
+    ("clock.dt", "fast", "clock.dt", "expected a positive number"),
+    ("uavs.1.fov", {"radius": 5, "size": [1, 1]}, "uavs[1].fov", "give only one of"),
+])
+def test_an_edit_is_checked_as_it_is_made_and_undone_when_refused(path, value, field, reason):
+    s = canopy.load("demo")
+    before = json.dumps(s.config, sort_keys=True)
+    with pytest.raises(canopy.ScenarioError) as e:
+        s[path] = value
+    assert isinstance(e.value, ValueError)
+    assert e.value.field == field and reason in str(e.value), str(e.value)
+    assert "line" not in str(e.value)  # the text checked is not the file's: no line to blame
+    assert json.dumps(s.config, sort_keys=True) == before
+
+
+def test_deleting_a_field_restores_its_default():
+    s = canopy.load("demo")  # demo sets tracking.sigma_a to 1.0 and fusion.rounds to 5
+    bare = canopy.Scenario({"aoi": [0, 0, 10, 10], "uavs": [{"start": [1, 1]}]}).filled()
+    del s["tracking.sigma_a"]
+    del s["fusion.rounds"]
+    assert s["tracking.sigma_a"] == bare["tracking.sigma_a"]
+    assert s["fusion.rounds"] == bare["fusion.rounds"]
+    del s["targets.2"]  # a list element goes from its list
+    assert [t["name"] for t in s.targets] == ["T1", "T2"]
+    with pytest.raises(canopy.ScenarioError, match=r"uavs"):
+        del s["uavs"]  # required: refused, and the UAVs stay
+    assert len(s.uavs) == 2
 
 
 def test_missing_path_is_a_key_error():

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <cctype>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 #include <set>
@@ -157,6 +159,35 @@ TEST(Architecture, TheCheckerCatchesArrowsAgainstTheFlow) {
   EXPECT_EQ(violation("python/src/module.cpp", "python/src/bindings.h"), "");
   EXPECT_EQ(roomOf("agents/occlusion_map.h"), "agents/common");
   EXPECT_EQ(roomOf("agents/fusion/hungarian.h"), "agents/fusion");
+}
+
+// What README and docs/ cite lives in the repository: every path in backticks that names a source
+// or a document (".md", ".h", ".cpp", ".py", ".js" with a folder) exists, and no page sends the
+// reader to the team's design documents, which users never see. Placeholders (`DIR/…`, `out/…`)
+// are not paths; the changelog names the old paths on purpose.
+TEST(Architecture, DocsCiteOnlyFilesOfTheRepository) {
+  const fs::path root = CANOPY_SOURCE_DIR;
+  std::vector<fs::path> pages = {root / "README.md"};
+  for (const auto& entry : fs::directory_iterator(root / "docs"))
+    if (entry.path().extension() == ".md") pages.push_back(entry.path());
+  static const std::regex kCited(R"re(`([\w./-]+/[\w./-]+\.(md|h|cpp|py|js))`)re");
+  static const std::regex kDesignDocs(R"re((^|[^\w/`])(algorithms|scenarios|style)\.md|shared/design)re");
+  std::size_t cited = 0;
+  for (const fs::path& page : pages) {
+    std::ifstream in(page);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kCited);
+         it != std::sregex_iterator(); ++it) {
+      const std::string path = (*it)[1];
+      if (std::isupper(static_cast<unsigned char>(path[0])) || path.starts_with("out/")) continue;
+      ++cited;
+      EXPECT_TRUE(fs::exists(root / path)) << page.filename() << " cites " << path;
+    }
+    std::smatch design;
+    EXPECT_FALSE(std::regex_search(text, design, kDesignDocs))
+        << page.filename() << " sends the reader to the design documents: " << design[0];
+  }
+  EXPECT_GT(cited, 20u);  // the check reads real citations
 }
 
 }  // namespace

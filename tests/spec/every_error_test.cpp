@@ -39,7 +39,9 @@ std::string scenarioWith(const std::vector<std::pair<int, std::string>>& faults)
 
 std::vector<std::string> errorsOf(const std::string& text) {
   try {
-    loadScenarioText(text, "planted.json");
+    LoadOptions options;
+    options.text_is_the_file = true;
+    loadScenarioText(text, "planted.json", options);
   } catch (const ScenarioErrors& e) {
     std::vector<std::string> out;
     for (const ScenarioError& each : e.errors()) out.push_back(each.what());
@@ -93,6 +95,7 @@ TEST(EveryError, FourErrorsInOneSectionGiveFourLines) {
 TEST(EveryError, EveryBadOverrideIsReportedWithTheFileErrors) {
   LoadOptions options;
   options.overrides = {"clock.dt=-2", "uavs.0.v_max=-1", "tracking.sigma_a=\"x\""};
+  options.text_is_the_file = true;
   try {
     loadScenarioText(scenarioWith({}), "planted.json", options);
     FAIL() << "loaded";
