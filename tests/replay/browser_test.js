@@ -1,0 +1,263 @@
+// The replay page in a real browser (Debian's headless chromium), its answers checked against
+// the run's own files. Usage: node browser_test.js CANOPY_BINARY SOURCE_DIR WORK_DIR
+// Exit 0 all passed, 1 a failure, 77 (ctest's skip) when chromium is not installed.
+"use strict";
+
+const fs = require("fs");
+const path = require("path");
+const { spawnSync } = require("child_process");
+const { Browser, Page } = require("./cdp.js");
+const expect = require("./record.js");
+
+const [canopy, source, work] = process.argv.slice(2);
+const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
+if (!fs.existsSync(chromium)) {
+  console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
+  process.exit(77);
+}
+
+const results = [];
+async function check(name, body) {
+  try {
+    await body();
+    results.push(name);
+    console.log("ok - " + name);
+  } catch (e) {
+    results.push(null);
+    console.log("not ok - " + name + "\n    " + String(e && e.stack || e).split("\n").join("\n    "));
+  }
+}
+function assert(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+function canopyRun(args) {
+  const r = spawnSync(canopy, args, { encoding: "utf8" });
+  if (r.status !== 0) throw new Error("canopy " + args.join(" ") + ": " + r.stderr);
+  return r;
+}
+
+// The map canvas's pixels (RGBA) as a Buffer, with its width and height.
+async function mapPixels(page) {
+  const r = await page.evaluate(`(() => {
+    const c = document.getElementById("map"), d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let s = "";
+    for (let i = 0; i < d.length; i += 0x8000) s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
+    return { w: c.width, h: c.height, data: btoa(s) };
+  })()`);
+  return { w: r.w, h: r.h, data: Buffer.from(r.data, "base64") };
+}
+
+// Distance (px) from (x, y) to the polygon's boundary, negative inside.
+function signedDistance(poly, x, y) {
+  let inside = false, best = Infinity;
+  for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+    const [ax, ay] = poly[j], [bx, by] = poly[i];
+    if ((by > y) !== (ay > y) && x < ((ax - bx) * (y - by)) / (ay - by) + bx) inside = !inside;
+    const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+    const u = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - u * dx, y - ay - u * dy));
+  }
+  return inside ? -best : best;
+}
+
+// Compares two captures against shapes given as distance functions (px): every changed pixel
+// lies within `margin` px of a shape, and at least `share` of the pixels deeper than `margin`
+// inside the shapes changed.
+function compareToShapes(a, b, shapes, margin, share) {
+  let stray = 0, inner = 0, innerChanged = 0, changed = 0;
+  for (let y = 0; y < a.h; y++) {
+    for (let x = 0; x < a.w; x++) {
+      const o = 4 * (y * a.w + x);
+      const differs = a.data[o] !== b.data[o] || a.data[o + 1] !== b.data[o + 1] || a.data[o + 2] !== b.data[o + 2];
+      let d = Infinity;
+      for (const shape of shapes) d = Math.min(d, shape(x + 0.5, y + 0.5));
+      if (differs) changed++;
+      if (differs && d > margin) stray++;
+      if (d < -margin) {
+        inner++;
+        if (differs) innerChanged++;
+      }
+    }
+  }
+  assert(changed > 0, "nothing changed");
+  assert(stray === 0, stray + " changed pixels outside the layer's shapes (of " + changed + ")");
+  assert(innerChanged >= share * inner,
+    "only " + innerChanged + " of " + inner + " pixels inside the shapes changed");
+  return { changed, inner, innerChanged };
+}
+
+async function setLayers(page, on) {
+  await page.evaluate(`(() => { const on = ${JSON.stringify(on)};
+    Object.keys(on).forEach((id) => CanopyReplay.app.setLayer(id, on[id])); })()`);
+}
+
+async function main() {
+  fs.mkdirSync(work, { recursive: true });
+  const runDir = path.join(work, "probe");
+  canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--out", runDir, "--html"]);
+  const run = expect.readRun(runDir);
+  const pageFile = path.join(runDir, "replay.html");
+
+  await check("the same run gives the same file bytes", async () => {
+    const a = path.join(work, "a.html"), b = path.join(work, "b.html");
+    canopyRun(["view", runDir, "--out", a]);
+    canopyRun(["view", runDir, "--out", b]);
+    const bytes = fs.readFileSync(a);
+    assert(bytes.equals(fs.readFileSync(b)), "two views differ");
+    assert(bytes.equals(fs.readFileSync(pageFile)), "view and run --html differ");
+  });
+
+  const browser = new Browser(chromium);
+  try {
+    const page = await Page.open(browser, 1280, 900);
+    const url = "file://" + path.resolve(pageFile);
+    await page.navigate(url);
+    const state = await page.evaluate("({ k: CanopyReplay.app.state.k, steps: CanopyReplay.app.run.steps })");
+
+    await check("the page loads with no console error or failed request", async () => {
+      assert(state.steps === run.record.length, "the page has " + state.steps + " steps, the record " + run.record.length);
+      assert(page.errors.length === 0, page.errors.join("\n"));
+      assert(page.failed.length === 0, "failed requests: " + page.failed.join(", "));
+      const outside = page.requests.filter((u) => u !== url && !u.startsWith("data:"));
+      assert(outside.length === 0, "requests beyond the file: " + outside.join(", "));
+    });
+
+    await check("at step k the pixel at each UAV's recorded position has its colour", async () => {
+      let checked = 0;
+      for (const k of [0, 17, 30, 44, run.record.length - 1]) {
+        await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+        const img = await mapPixels(page);
+        const pixels = [];
+        for (const uav of run.record[k].uavs) {
+          pixels.push(await page.evaluate(`CanopyReplay.app.view.toPixel(${uav.p[0]}, ${uav.p[1]})`));
+        }
+        pixels.forEach((px, i) => {
+          // A later agent's dart (drawn on top) within 12 px may cover this one.
+          if (pixels.some((q, j) => j > i && Math.hypot(q.x - px.x, q.y - px.y) < 12)) return;
+          const o = 4 * (px.y * img.w + px.x), want = expect.PALETTE[i % 8];
+          const got = [img.data[o], img.data[o + 1], img.data[o + 2]];
+          assert(got.every((v, c) => Math.abs(v - want[c]) <= 2),
+            `k=${k} ${run.config.uavs[i].name} at pixel (${px.x}, ${px.y}): got ${got}, want ${want}`);
+          checked++;
+        });
+      }
+      assert(checked >= 15, "only " + checked + " UAV positions checked");
+    });
+
+    await check("toggling a layer changes exactly the pixels of its shapes", async () => {
+      const k = 30;
+      await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+      await setLayers(page, { truth: false, tracks: false, map: false, plans: false, links: false,
+        trees: true, sensors: true });
+      const view = await page.evaluate("({ s: CanopyReplay.app.view.scale, r: CanopyReplay.app.view.ratio })");
+      const screen = async (x, y) => page.evaluate(`(() => { const p = CanopyReplay.app.view.toScreen(${x}, ${y});
+        return [p.x * CanopyReplay.app.view.ratio, p.y * CanopyReplay.app.view.ratio]; })()`);
+      // Footprints and sectors, from the record's poses and the scenario's fov.
+      const footprints = [];
+      for (let i = 0; i < run.config.uavs.length; i++) {
+        const poly = [];
+        for (const [x, y] of expect.footprint(run, k, i)) poly.push(await screen(x, y));
+        footprints.push((x, y) => signedDistance(poly, x, y));
+      }
+      const allOn = await mapPixels(page);
+      await setLayers(page, { sensors: false });
+      const noSensors = await mapPixels(page);
+      const s = compareToShapes(allOn, noSensors, footprints, 2.5, 0.9);
+      console.log(`    sensors: ${s.changed} pixels changed, ${s.innerChanged} of ${s.inner} inside`);
+      // Trees and walls, from the scenario's explicit occluders.
+      const crowns = [];
+      for (const o of run.config.occluders) {
+        if (o.type === "disc") {
+          const c = await screen(o.centre[0], o.centre[1]), r = o.radius * view.s * view.r;
+          crowns.push((x, y) => Math.hypot(x - c[0], y - c[1]) - r);
+        } else {
+          assert(o.type === "polygon", "the probe holds explicit trees only");
+          const poly = [];
+          for (const [x, y] of o.vertices) poly.push(await screen(x, y));
+          crowns.push((x, y) => signedDistance(poly, x, y));
+        }
+      }
+      await setLayers(page, { trees: false });
+      const none = await mapPixels(page);
+      const t = compareToShapes(noSensors, none, crowns, 2.0, 0.9);
+      console.log(`    trees: ${t.changed} pixels changed, ${t.innerChanged} of ${t.inner} inside`);
+      await setLayers(page, { truth: true, tracks: true, map: true, plans: true, links: true,
+        trees: true, sensors: true });
+    });
+
+    await check("the slider, the keys and a click on a target give that target's timeline", async () => {
+      const k0 = 25;
+      await page.evaluate(`(() => { const s = document.getElementById("slider");
+        s.value = "${k0}"; s.dispatchEvent(new Event("input")); })()`);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0, "the slider did not move to " + k0);
+      // A target no agent stands on (a click there selects the target).
+      const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
+        return { x: r.left, y: r.top }; })()`);
+      const at = async (p) => page.evaluate(`CanopyReplay.app.view.toScreen(${p[0]}, ${p[1]})`);
+      let t = -1, click = null;
+      for (let ti = 0; ti < run.record[k0].targets.length && t < 0; ti++) {
+        const p = await at(run.record[k0].targets[ti].p);
+        let clear = true;
+        for (const u of run.record[k0].uavs) {
+          const q = await at(u.p);
+          if (Math.hypot(q.x - p.x, q.y - p.y) < 16) clear = false;
+        }
+        if (clear && expect.targetAt(run, k0, 0, ti).covered) { t = ti; click = p; }
+      }
+      assert(t >= 0, "no target clear of the agents at k=" + k0);
+      await page.click(rect.x + click.x, rect.y + click.y);
+      const a = await page.evaluate("CanopyReplay.app.state.agent");
+      const compare = async (k) => {
+        const got = await page.evaluate("Object.assign({}, document.getElementById('readout').dataset)");
+        const want = expect.targetAt(run, k, a, t);
+        for (const key of ["k", "target", "agent", "covered", "visible", "owners"]) {
+          assert(got[key] === want[key], `k=${k} ${key}: page says "${got[key]}", the record "${want[key]}"`);
+        }
+        if (want.trace === null) {
+          assert(got.trace === "none", `k=${k} trace: page ${got.trace}, the record has no track`);
+        } else {
+          assert(Math.abs(+got.trace - want.trace) <= 2e-3 * want.trace + 1e-9,
+            `k=${k} tr P: page ${got.trace}, record ${want.trace}`);
+        }
+        assert(Math.abs(+got.ospa - want.ospa) <= 1e-3 * want.ospa + 1e-9,
+          `k=${k} OSPA: page ${got.ospa}, summary ${want.ospa}`);
+        const title = await page.evaluate("document.getElementById('timeline-title').textContent");
+        assert(title.indexOf(want.target) >= 0, "the timeline's title does not name " + want.target);
+      };
+      await compare(k0);
+      await page.key("ArrowRight", "ArrowRight", 39, false);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0 + 1, "-> did not step once");
+      await compare(k0 + 1);
+      const period = Math.round(run.config.planner.plan_period / run.config.clock.dt);
+      await page.key("ArrowRight", "ArrowRight", 39, true);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0 + 1 + period, "shift+-> did not step a plan period");
+      await compare(k0 + 1 + period);
+      await page.key("ArrowLeft", "ArrowLeft", 37, false);
+      await compare(k0 + period);
+      for (const k of [0, run.record.length - 1]) {
+        await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+        await compare(k);
+      }
+      await page.key(" ", "Space", 32, false);
+      assert(await page.evaluate("CanopyReplay.app.state.playing") === true, "space did not play");
+      await page.key(" ", "Space", 32, false);
+      assert(await page.evaluate("CanopyReplay.app.state.playing") === false, "space did not pause");
+    });
+
+    await check("still no console error after every interaction", async () => {
+      assert(page.errors.length === 0, page.errors.join("\n"));
+    });
+  } finally {
+    await browser.close();
+  }
+  const failed = results.filter((r) => r === null).length;
+  console.log(`${results.length - failed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+}
+
+main().catch((e) => {
+  console.log("not ok - the harness itself: " + (e && e.stack || e));
+  console.log("0 passed, 1 failed");
+  process.exit(1);
+});
