@@ -142,6 +142,9 @@
   const app = new App(run);
   CanopyReplay.app = app;
   CanopyReplay.bindControls(app);
+  // A person's timeline from the start, so that the page shows every part of itself at once.
+  if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
+  app.refreshTimeline();
   app.fit();
   app.stats.firstPaintMs = performance.now() - started;
   app.stats.firstPaintSinceNavigation = performance.now();

@@ -195,8 +195,11 @@ async function main() {
       const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
         return { x: r.left, y: r.top }; })()`);
       const at = async (p) => page.evaluate(`CanopyReplay.app.view.toScreen(${p[0]}, ${p[1]})`);
+      // Not the target shown already, so that the click has to change the timeline.
+      const shown = await page.evaluate("CanopyReplay.app.state.selection");
       let t = -1, click = null;
       for (let ti = 0; ti < run.record[k0].targets.length && t < 0; ti++) {
+        if (shown && shown.kind === "target" && shown.index === ti) continue;
         const p = await at(run.record[k0].targets[ti].p);
         let clear = true;
         for (const u of run.record[k0].uavs) {
