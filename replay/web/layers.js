@@ -1,7 +1,7 @@
 // Drawing one step of the run on the map, layer by layer, in the PNG frames' colours and symbols
 // (render/colour.h, render/scene_builder.cpp). Draw order, bottom to top: ground, trees,
 // footprints and shadows, links, occlusion map, plans and intentions, trails, tracks, people,
-// names, agents (never hidden by a name), then the clock and the scale bar.
+// the selection's ring, names, agents (never hidden), then the clock and the scale bar.
 /* global CanopyReplay */
 (function () {
   "use strict";
@@ -530,9 +530,9 @@
     if (on.truth) drawTrails(ctx, view, run, k);
     if (on.tracks) drawTracks(ctx, view, run, k, a);
     if (on.truth) drawTargets(ctx, view, run, k);
+    drawSelection(ctx, view, run, k, state.selection);
     drawNames(ctx, view, run, k, on.truth);
     drawAgents(ctx, view, run, k);
-    drawSelection(ctx, view, run, k, state.selection);
     drawOverlay(ctx, view, run, k);
   };
 })();
