@@ -32,5 +32,21 @@ expect_bad_input "a position that is not [x, y]" "$work/short" "short/record.jso
 copy no_summary && echo '{"uavs": []}' > "$work/no_summary/summary.json"
 expect_bad_input "a summary of another run" "$work/no_summary" "no_summary/summary.json: uavs"
 
+# analyze links one replay per behaviour class (the ownership state at L of some trial).
+if "$canopy" sweep "$source/tests/replay/data/replay_sweep.json" --out "$work/sweep" --jobs 1 \
+     >/dev/null 2>&1 && "$canopy" analyze "$work/sweep" >"$work/analyze.txt" 2>&1; then
+  classes=$(grep -c "^replay of " "$work/analyze.txt")
+  links=$(grep -o 'href="replays/[^"]*"' "$work/sweep/analysis/replays.html" | sed 's/href="//; s/"$//')
+  missing=0
+  for link in $links; do [ -s "$work/sweep/analysis/$link" ] || missing=$((missing + 1)); done
+  if [ "$classes" -ge 2 ] && [ "$(echo "$links" | wc -w)" -eq "$classes" ] && [ "$missing" -eq 0 ]; then
+    passed=$((passed + 1)); echo "ok - analyze links $classes behaviour classes to replays"
+  else
+    failed=$((failed + 1)); echo "not ok - analyze's replays: $classes classes, links: $links, $missing missing"
+  fi
+else
+  failed=$((failed + 1)); echo "not ok - sweep and analyze: $(tail -3 "$work/analyze.txt" 2>/dev/null)"
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
