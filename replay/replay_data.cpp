@@ -375,49 +375,54 @@ void writeTracks(const RunFolder& run, Table& keys, Table& labels, Writer& w) {
 }
 
 // Occlusion maps as changes: per agent and step, 0 when nothing changed, else [[entries set],
-// [keys removed]], an entry being [key, cx, cy, r] or [key, cx, cy, r, [dx, dy, …]].
+// [keys removed]], an entry being [key, cx, cy, r] or [key, cx, cy, r, [dx, dy, …]]. An entry is
+// sent again only when one of its numbers moved by kMapResend or more since it was last sent
+// (a tree estimate moves a little at every observation; 5 cm is below a pixel at any zoom the
+// page starts with), so the page's map is within kMapResend of the record's.
 void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
   w.raw(",\"maps\":[");
   bool first_agent = true;
   for (std::size_t i = 0; i < run.spec.uavs.size(); ++i) {
     w.comma(first_agent);
     w.raw("[");
-    std::map<int, std::string> held;  // key → the entry's text
+    std::map<int, std::vector<double>> sent;  // key → the numbers last sent
     bool first_step = true;
     for (const RecordedStep& s : run.steps) {
-      std::map<int, std::string> now;
+      std::map<int, std::vector<double>> now;
       for (const RecordedMapEntry& e : s.agents[i].map) {
-        Writer entry;
-        const int key = keys.index(e.key);
-        entry.integer(key);
-        for (int c = 0; c < 3; ++c) {
-          entry.raw(",");
-          entry.position(e.crown[c]);
-        }
-        if (!e.outline.empty()) {
-          entry.raw(",[");
-          bool first = true;
-          for (const Vec2& v : e.outline) {
-            entry.comma(first);
-            entry.position(v.x());
-            entry.raw(",");
-            entry.position(v.y());
-          }
-          entry.raw("]");
-        }
-        now.emplace(key, std::move(entry.text));
+        std::vector<double>& numbers = now[keys.index(e.key)];
+        numbers = {e.crown[0], e.crown[1], e.crown[2]};
+        for (const Vec2& v : e.outline) numbers.insert(numbers.end(), {v.x(), v.y()});
       }
       Writer set, removed;
       bool first_set = true, first_removed = true;
-      for (const auto& [key, text] : now) {
-        const auto it = held.find(key);
-        if (it != held.end() && it->second == text) continue;
+      for (auto& [key, numbers] : now) {
+        const auto it = sent.find(key);
+        bool moved = it == sent.end() || it->second.size() != numbers.size();
+        for (std::size_t n = 0; !moved && n < numbers.size(); ++n)
+          moved = std::abs(numbers[n] - it->second[n]) >= kMapResend;
+        if (!moved) {
+          numbers = it->second;  // what the page holds
+          continue;
+        }
         set.comma(first_set);
         set.raw("[");
-        set.text += text;
+        set.integer(key);
+        for (std::size_t n = 0; n < 3; ++n) {
+          set.raw(",");
+          set.position(numbers[n]);
+        }
+        if (numbers.size() > 3) {
+          set.raw(",[");
+          for (std::size_t n = 3; n < numbers.size(); ++n) {
+            if (n > 3) set.raw(",");
+            set.position(numbers[n]);
+          }
+          set.raw("]");
+        }
         set.raw("]");
       }
-      for (const auto& [key, text] : held) {
+      for (const auto& [key, numbers] : sent) {
         if (now.count(key)) continue;
         removed.comma(first_removed);
         removed.integer(key);
@@ -432,7 +437,7 @@ void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
         w.text += removed.text;
         w.raw("]]");
       }
-      held = std::move(now);
+      sent = std::move(now);
     }
     w.raw("]");
   }

@@ -13,6 +13,8 @@ namespace canopy::replay {
 inline constexpr int kPositionDecimals = 2;
 inline constexpr int kYawDecimals = 3;
 inline constexpr int kSignificantDigits = 4;
+/// An occlusion-map entry is sent again only when one of its numbers moved this much (m).
+inline constexpr double kMapResend = 0.05;
 
 /// The run as the JSON object web/decode.js reads (docs/replay.md lists its keys). Deterministic:
 /// the same run gives the same text.

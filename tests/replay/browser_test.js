@@ -248,6 +248,26 @@ async function main() {
       assert(await page.evaluate("CanopyReplay.app.state.playing") === false, "space did not pause");
     });
 
+    await check("every agent's occlusion map on the page is the record's, within 5 cm", async () => {
+      let entries = 0;
+      for (const k of [10, 30, run.record.length - 1]) {
+        for (let a = 0; a < run.record[k].agents.length; a++) {
+          const shown = await page.evaluate(`CanopyReplay.app.run.maps[${a}][${k}]
+            .map((e) => ({ key: e.key, x: [e.x, e.y, e.r], outline: e.outline }))`);
+          const recorded = run.record[k].agents[a].map;
+          assert(shown.length === recorded.length, `k=${k} agent ${a}: ${shown.length} map entries shown, ${recorded.length} recorded`);
+          for (const e of recorded) {
+            const s = shown.find((x) => x.key === e.key.join(":"));
+            assert(s, `k=${k} agent ${a}: map entry ${e.key} missing`);
+            e.x.forEach((v, n) => assert(Math.abs(v - s.x[n]) < 0.055, `k=${k} agent ${a} entry ${e.key}: ${s.x} vs ${e.x}`));
+            assert(!e.outline === !s.outline, `k=${k} agent ${a} entry ${e.key}: outline shown ${!!s.outline}`);
+            entries++;
+          }
+        }
+      }
+      assert(entries > 0, "no map entries in the probe's record");
+    });
+
     await check("still no console error after every interaction", async () => {
       assert(page.errors.length === 0, page.errors.join("\n"));
     });
