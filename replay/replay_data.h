@@ -16,8 +16,8 @@ inline constexpr int kSignificantDigits = 4;
 /// An occlusion-map entry is sent again only when one of its numbers moved this much (m).
 inline constexpr double kMapResend = 0.05;
 
-/// The run as the JSON object web/decode.js reads (docs/replay.md lists its keys). Deterministic:
-/// the same run gives the same text.
+/// The run as the JSON object web/decode.js reads (its layout: replay_data.cpp's writers, in
+/// order; docs/design-notes.md, "The replay page"). Deterministic: the same run, the same text.
 std::string replayDataJson(const RunFolder& run);
 
 }  // namespace canopy::replay
