@@ -447,13 +447,13 @@
       symbols.push({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
       items.push({ s: s, text: agent.name, gap: 10, aboveFirst: false });
     });
-    if (truth) {
-      run.targets.forEach(function (target, t) {
-        const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-        symbols.push({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
-        items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true });
-      });
-    }
+    // People's symbols and names are placed whether shown or not, so that switching them off
+    // does not move an agent's name.
+    run.targets.forEach(function (target, t) {
+      const q = run.target(k, t), s = view.toScreen(q.x, q.y);
+      symbols.push({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
+      items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true, shown: truth });
+    });
     const line = 11;
     items.forEach(function (item) {
       const w = ctx.measureText(item.text).width, g = item.gap;
@@ -473,7 +473,7 @@
       }
       placed.push({ x0: item.s.x + chosen[0], y0: item.s.y + chosen[1] - line,
         x1: item.s.x + chosen[0] + w, y1: item.s.y + chosen[1] + 2 });
-      label(ctx, item.s, item.text, chosen[0], chosen[1]);
+      if (item.shown !== false) label(ctx, item.s, item.text, chosen[0], chosen[1]);
     });
   }
 

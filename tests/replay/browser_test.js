@@ -182,6 +182,21 @@ async function main() {
       const none = await mapPixels(page);
       const t = compareToShapes(noSensors, none, crowns, 2.0, 0.9);
       console.log(`    trees: ${t.changed} pixels changed, ${t.innerChanged} of ${t.inner} inside`);
+      // Links in range (the probe sets no fusion.comm_range: every pair), over the bare ground.
+      const segments = [];
+      const poses = run.record[k].uavs;
+      for (let i = 0; i < poses.length; i++) {
+        for (let j = i + 1; j < poses.length; j++) {
+          const a = await screen(poses[i].p[0], poses[i].p[1]), b = await screen(poses[j].p[0], poses[j].p[1]);
+          segments.push((x, y) => signedDistance([a, b], x, y) - 0.75 * view.r);
+        }
+      }
+      assert(run.config.fusion.comm_range === null || run.config.fusion.comm_range === undefined,
+        "the probe's links are every pair");
+      await setLayers(page, { links: true });
+      const withLinks = await mapPixels(page);
+      const l = compareToShapes(withLinks, none, segments, 2.0, 0.9);
+      console.log(`    links: ${l.changed} pixels changed`);
       await setLayers(page, { truth: true, tracks: true, map: true, plans: true, links: true,
         trees: true, sensors: true });
     });
