@@ -134,8 +134,8 @@ int runCommand(Args& args) {
   if (html) {
     const std::filesystem::path page = options.out_dir / "replay.html";
     const std::size_t bytes = replay::writeReplay(options.out_dir, page);
-    std::fprintf(json ? stderr : stdout, "replay: %s (%.1f kB)\n",
-                 printable(page.string()).c_str(), static_cast<double>(bytes) / 1000.0);
+    std::fprintf(json ? stderr : stdout, "replay: %s (%.1f kB)\n", printable(page.string()).c_str(),
+                 static_cast<double>(bytes) / 1000.0);
   }
   if (!writer) return kExitOk;
 

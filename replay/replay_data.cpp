@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <tuple>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "analysis/behaviours.h"
 #include "core/enum_names.h"
@@ -141,7 +141,7 @@ void writeModel(const RunFolder& run, Writer& w) {
       w.raw("]}");
     } else {
       w.raw(f.shape == sensing::FootprintShape::disc ? "{\"shape\":\"disc\",\"radius\":"
-                                                      : "{\"shape\":\"sector\",\"radius\":");
+                                                     : "{\"shape\":\"sector\",\"radius\":");
       w.position(f.radius);
       if (f.shape == sensing::FootprintShape::sector) {
         w.raw(",\"angle\":");
@@ -316,7 +316,8 @@ std::vector<int> associate(const RecordedStep& s, const RecordedAgent& a,
   std::vector<int> of_target(s.targets.size(), -1);
   std::vector<bool> taken(a.tracks.size(), false);
   for (const Pair& p : pairs) {
-    if (of_target[static_cast<std::size_t>(p.target)] >= 0 || taken[static_cast<std::size_t>(p.track)])
+    if (of_target[static_cast<std::size_t>(p.target)] >= 0 ||
+        taken[static_cast<std::size_t>(p.track)])
       continue;
     of_target[static_cast<std::size_t>(p.target)] = p.track;
     taken[static_cast<std::size_t>(p.track)] = true;

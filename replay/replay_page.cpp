@@ -38,11 +38,20 @@ std::string htmlEscaped(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -63,8 +72,9 @@ std::string replayPage(const RunFolder& run) {
   std::string page(web::kTemplate);
   fill(page, "title", htmlEscaped(run.spec.name));
   fill(page, "style", "<style>\n" + std::string(web::kStyle) + "</style>");
-  fill(page, "data", "<script type=\"application/json\" id=\"replay-data\">" +
-                         scriptSafeJson(replayDataJson(run)) + "</script>");
+  fill(page, "data",
+       "<script type=\"application/json\" id=\"replay-data\">" +
+           scriptSafeJson(replayDataJson(run)) + "</script>");
   std::string scripts;
   for (std::string_view script : web::scripts())
     scripts += "<script>\n" + std::string(checkedScript(script)) + "</script>\n";

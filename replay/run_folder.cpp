@@ -48,7 +48,8 @@ class LineReader {
   LineReader(const fs::path& file, int line) : file_(file.string()), line_(line) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& expected) const {
-    throw ScenarioError(file_, "line " + std::to_string(line_) + (field.empty() ? "" : ": " + field),
+    throw ScenarioError(file_,
+                        "line " + std::to_string(line_) + (field.empty() ? "" : ": " + field),
                         "expected " + expected);
   }
   const Json& member(const Json& object, const char* key, const std::string& at) const {
@@ -106,7 +107,8 @@ class LineReader {
     if (!value.is_array() || value.size() != 2 || !value[0].is_number_integer() ||
         !value[1].is_number_integer())
       fail(at, "a key [origin, serial]");
-    return std::to_string(value[0].get<long long>()) + ":" + std::to_string(value[1].get<long long>());
+    return std::to_string(value[0].get<long long>()) + ":" +
+           std::to_string(value[1].get<long long>());
   }
 
  private:

@@ -15,9 +15,9 @@ namespace canopy::replay {
 struct RecordedTrack {
   std::string key;  // "origin:serial"
   std::string label;
-  Vec2 position = Vec2::Zero();  // m
-  Vec2 velocity = Vec2::Zero();  // m/s
-  Eigen::Vector3d P_pos = Eigen::Vector3d::Zero();   // m², the position block packed [Pxx, Pxy, Pyy]
+  Vec2 position = Vec2::Zero();                     // m
+  Vec2 velocity = Vec2::Zero();                     // m/s
+  Eigen::Vector3d P_pos = Eigen::Vector3d::Zero();  // m², the position block packed [Pxx, Pxy, Pyy]
 };
 
 /// One tree track of an agent's occlusion map (record: agents[].map[]).
@@ -29,8 +29,8 @@ struct RecordedMapEntry {
 
 /// One agent at one step: its true pose, its scan and its fused belief.
 struct RecordedAgent {
-  Vec2 position = Vec2::Zero();  // m
-  double yaw = 0.0;              // rad
+  Vec2 position = Vec2::Zero();            // m
+  double yaw = 0.0;                        // rad
   std::vector<int> in_footprint, visible;  // target indices
   std::vector<RecordedTrack> tracks;
   std::vector<RecordedMapEntry> map;
@@ -41,10 +41,10 @@ struct RecordedAgent {
 struct RecordedPlan {
   struct Part {
     int agent = 0;
-    double cost = 0.0;               // m²
-    std::vector<Vec2> velocities;    // m/s, one per action
-    std::vector<int> joint_epoch;    // per teammate: the epoch of its plan this agent planned
-                                     // against (−1: none had reached it)
+    double cost = 0.0;             // m²
+    std::vector<Vec2> velocities;  // m/s, one per action
+    std::vector<int> joint_epoch;  // per teammate: the epoch of its plan this agent planned
+                                   // against (−1: none had reached it)
   };
   /// A message sent at this epoch, in the order sent (SMA-NBO: the planning order).
   struct Message {
@@ -58,7 +58,7 @@ struct RecordedPlan {
 
 struct RecordedStep {
   int k = 0;
-  double t = 0.0;  // s
+  double t = 0.0;             // s
   std::vector<Vec2> targets;  // true positions (m)
   std::vector<RecordedAgent> agents;
   std::optional<RecordedPlan> plan;

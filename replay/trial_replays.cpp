@@ -28,11 +28,20 @@ std::string htmlEscaped(const std::string& text) {
   std::string out;
   for (const char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -73,9 +82,12 @@ std::vector<TrialReplay> writeTrialReplays(const analysis::SweepAnalysis& analys
       const int in_state = config.state_counts[4][s];
       if (in_state == 0) continue;
       int trial = 0;
-      while (config.trial_states[static_cast<std::size_t>(trial)][4] != static_cast<int>(s)) ++trial;
-      TrialReplay r{config.id, config.states[s], in_state, config.trials, trial,
-                    config.trial_seeds[static_cast<std::size_t>(trial)], {}};
+      while (config.trial_states[static_cast<std::size_t>(trial)][4] != static_cast<int>(s))
+        ++trial;
+      TrialReplay r{config.id, config.states[s],
+                    in_state,  config.trials,
+                    trial,     config.trial_seeds[static_cast<std::size_t>(trial)],
+                    {}};
       const fs::path folder =
           fs::path("replays") / config.id / (std::to_string(s) + "_" + safeName(r.state));
       scenarios::ScenarioSpec spec = analysis.specs[c];

@@ -16,8 +16,8 @@ struct TrialReplay {
   std::string config;  // the sweep configuration's id
   std::string state;   // the ownership state at L, e.g. "M*", "Miss 1"
   int trials_in_state = 0, trials = 0;
-  int trial = 0;            // the trial's place in its configuration (0 …)
-  std::uint64_t seed = 0;   // its seed
+  int trial = 0;               // the trial's place in its configuration (0 …)
+  std::uint64_t seed = 0;      // its seed
   std::filesystem::path page;  // the replay, relative to the analysis folder
 };
 
