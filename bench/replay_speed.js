@@ -53,7 +53,8 @@ async function main() {
         draws: play.draws, mean_draw_ms: +(play.drawMs / play.draws).toFixed(3),
         max_draw_ms: +play.drawMsMax.toFixed(2), frames: play.frames,
         median_frame_ms: +period.toFixed(2), max_frame_ms: +Math.max.apply(null, gaps).toFixed(2),
-        late_frames: gaps.filter((g) => g > 1.5 * period).length
+        late_frames: gaps.filter((g) => g > 1.5 * period).length,
+        steps_not_drawn: play.stepsPlayed - play.draws
       });
       await tab.send("Page.close").catch(() => {});
     }

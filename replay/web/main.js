@@ -119,11 +119,12 @@
         owed += (now - last) / 1000 * app.state.rate;
       }
       last = now;
-      const steps = Math.floor(owed);
-      if (steps > 0) {
-        owed -= steps;
-        app.stats.stepsPlayed += Math.min(steps, app.run.steps - 1 - app.state.k);
-        app.setStep(app.state.k + steps);
+      // At most one step per frame (the fastest speed is 60 steps/s): a late frame slows the
+      // playback down instead of skipping steps, so every step is drawn.
+      if (owed >= 1) {
+        owed = Math.min(owed - 1, 1);
+        app.stats.stepsPlayed++;
+        app.setStep(app.state.k + 1);
       }
       app.stats.frames++;
       if (app.state.k >= app.run.steps - 1) return app.pause();
