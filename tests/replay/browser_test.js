@@ -286,6 +286,21 @@ async function main() {
     await check("still no console error after every interaction", async () => {
       assert(page.errors.length === 0, page.errors.join("\n"));
     });
+
+    await check("names holding </script> and <!-- are shown as text", async () => {
+      const name = "x</script><script>document.title=1</script><!--", person = "T</script>1";
+      const dir = path.join(work, "hostile");
+      canopyRun(["run", "demo", "--set", "name=" + JSON.stringify(name), "--set",
+        "targets.0.name=" + JSON.stringify(person), "--set", "clock.duration=2", "--out", dir, "--html"]);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+      const shown = await tab.evaluate(`({ h1: document.getElementById("scenario").textContent,
+        title: document.title, timeline: document.getElementById("timeline-title").textContent })`);
+      assert(shown.h1 === name, "the heading shows " + JSON.stringify(shown.h1));
+      assert(shown.title === "canopy replay: " + name, "the title is " + JSON.stringify(shown.title));
+      assert(shown.timeline.indexOf(person) >= 0, "the timeline shows " + JSON.stringify(shown.timeline));
+    });
   } finally {
     await browser.close();
   }
