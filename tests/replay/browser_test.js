@@ -287,6 +287,42 @@ async function main() {
       assert(page.errors.length === 0, page.errors.join("\n"));
     });
 
+    await check("intentions lost on the links are marked lost, the rest as planned against", async () => {
+      const dir = path.join(work, "lossy");
+      canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--set",
+        "fusion.comm_drop=0.5", "--out", dir, "--html"]);
+      const lossy = expect.readRun(dir);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+      // From the record: agent a expected teammate j's plan of this epoch when j sent before it
+      // (messages are in planning order), else the epoch before; it planned against joint_epoch[j].
+      let lost = 0, ok = 0, previous = null;
+      for (const line of lossy.record) {
+        if (!line.plan) continue;
+        const order = line.plan.messages.map((m) => m.from);
+        for (const part of line.plan.agents) {
+          const a = part.agent;
+          const got = await tab.evaluate(`CanopyReplay.intentions(CanopyReplay.app.run, ${line.k}, ${a})
+            .map((i) => [i.from, i.epoch, i.status])`);
+          const want = [];
+          for (const j of order) {
+            if (j === a) continue;
+            const expected = order.indexOf(j) < order.indexOf(a) ? line.plan.epoch : (previous === null ? -1 : previous);
+            const held = part.joint_epoch[j];
+            const status = expected >= 0 && held < expected ? "lost" : held < 0 ? "none" : "ok";
+            want.push([j, held, status]);
+            if (status === "lost") lost++; else ok++;
+          }
+          want.sort((x, y) => x[0] - y[0]);
+          assert(JSON.stringify(got) === JSON.stringify(want),
+            `k=${line.k} agent ${a}: page ${JSON.stringify(got)}, record ${JSON.stringify(want)}`);
+        }
+        previous = line.plan.epoch;
+      }
+      assert(lost > 0 && ok > 0, `${lost} lost and ${ok} received intentions: the run tests nothing`);
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+    });
+
     await check("names holding </script> and <!-- are shown as text", async () => {
       const name = "x</script><script>document.title=1</script><!--", person = "T</script>1";
       const dir = path.join(work, "hostile");
