@@ -263,6 +263,30 @@ async function main() {
       assert(await page.evaluate("CanopyReplay.app.state.playing") === false, "space did not pause");
     });
 
+    await check("the wheel zooms about the cursor, a drag pans, the scale bar follows", async () => {
+      const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
+        return { x: r.left, y: r.top, w: r.width, h: r.height }; })()`);
+      // Mouse events land on whole page pixels: the cursor's place on the map is what is left.
+      const px = Math.round(rect.x + rect.w * 0.3), py = Math.round(rect.y + rect.h * 0.6);
+      const cx = px - rect.x, cy = py - rect.y;
+      const before = await page.evaluate(`({ w: CanopyReplay.app.view.toWorld(${cx}, ${cy}), s: CanopyReplay.app.view.scale })`);
+      await page.wheel(px, py, -400);
+      const after = await page.evaluate(`({ w: CanopyReplay.app.view.toWorld(${cx}, ${cy}), s: CanopyReplay.app.view.scale })`);
+      assert(after.s > 1.5 * before.s, `the scale went from ${before.s} to ${after.s} px/m`);
+      assert(Math.hypot(after.w.x - before.w.x, after.w.y - before.w.y) < 1e-6,
+        `the point under the cursor moved: ${JSON.stringify(before)} -> ${JSON.stringify(after)} rect ${JSON.stringify(rect)}`);
+      // A bar of the 1-2-5 length at most a quarter of the shown width.
+      const widthM = rect.w / after.s, decade = Math.pow(10, Math.floor(Math.log10(widthM / 4)));
+      const bar = [5, 2, 1].map((m) => m * decade).find((l) => l <= widthM / 4 * (1 + 1e-12));
+      assert(await page.evaluate(`CanopyReplay.scaleBarLength(${rect.w} / CanopyReplay.app.view.scale)`) === bar,
+        "the scale bar is not " + bar + " m");
+      await page.drag(px, py, px + 40, py - 25);
+      const moved = await page.evaluate(`CanopyReplay.app.view.toWorld(${cx + 40}, ${cy - 25})`);
+      assert(Math.hypot(moved.x - before.w.x, moved.y - before.w.y) < 1e-6,
+        "the dragged point did not follow the cursor");
+      await page.evaluate("CanopyReplay.app.fit()");
+    });
+
     await check("every agent's occlusion map on the page is the record's, within 5 cm", async () => {
       let entries = 0;
       for (const k of [10, 30, run.record.length - 1]) {

@@ -149,6 +149,22 @@ class Page {
     await this.send("Input.dispatchMouseEvent", Object.assign({ type: "mouseReleased" }, at));
   }
 
+  async wheel(x, y, deltaY) {
+    await this.send("Input.dispatchMouseEvent", { type: "mouseWheel", x, y, deltaX: 0, deltaY });
+  }
+
+  async drag(x0, y0, x1, y1) {
+    await this.send("Input.dispatchMouseEvent", { type: "mouseMoved", x: x0, y: y0 });
+    await this.send("Input.dispatchMouseEvent",
+      { type: "mousePressed", x: x0, y: y0, button: "left", buttons: 1, clickCount: 1 });
+    for (let i = 1; i <= 4; i++) {
+      await this.send("Input.dispatchMouseEvent", { type: "mouseMoved", x: x0 + (x1 - x0) * i / 4,
+        y: y0 + (y1 - y0) * i / 4, button: "left", buttons: 1 });
+    }
+    await this.send("Input.dispatchMouseEvent",
+      { type: "mouseReleased", x: x1, y: y1, button: "left", buttons: 0, clickCount: 1 });
+  }
+
   async screenshot() {
     const { data } = await this.send("Page.captureScreenshot", { format: "png" });
     return Buffer.from(data, "base64");
