@@ -96,6 +96,7 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
 
   for (const experiments::TrialResult& trial : trials) {
     const TrialBehaviour b = analyseTrial(trial, spec);
+    stats.trial_seeds.push_back(trial.seed);
     std::array<int, 5>& columns = stats.trial_states.emplace_back();
     for (int c = 0; c < 5; ++c) {
       columns[c] = static_cast<int>(stateIndex(b.states[c]));

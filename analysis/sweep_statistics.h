@@ -4,6 +4,7 @@
 // occlusion-detection event), mean coverage curves, and OSPA / tr(P) over time — each mean with
 // its 95 % interval, and the per-trial facts behind the report's intervals.
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,7 @@ struct ConfigStatistics {
 
   // Per trial, in trial order.
   std::vector<std::array<int, 5>> trial_states;  // [trial][column]: index into states
+  std::vector<std::uint64_t> trial_seeds;        // [trial]: its seed, to run it again
   std::vector<std::vector<int>> first_step_in;   // [trial][named state]: first step in it, −1
   std::vector<std::vector<std::vector<int>>> trial_coverage;  // [trial][t][k]: footprints on t
 

@@ -12,6 +12,7 @@
 #include "render/frame_view.h"
 #include "render/frame_writer.h"
 #include "render/video.h"
+#include "replay/replay_page.h"
 #include "sim/run.h"
 #include "sim/run_report.h"
 #include "spec/loader.h"
@@ -41,7 +42,7 @@ int runCommand(Args& args) {
   std::string scenario;
   std::string out_dir;
   spec::LoadOptions load;
-  bool frames = false, video = false, json = false;
+  bool frames = false, video = false, json = false, html = false;
   std::optional<int> every;
   std::optional<double> fps;
   std::optional<std::string> view;
@@ -71,6 +72,8 @@ int runCommand(Args& args) {
       view = args.value(arg);
     } else if (arg == "--json") {
       json = true;
+    } else if (arg == "--html") {
+      html = true;
     } else if (!arg.empty() && arg[0] == '-') {
       unknownOption("run", arg);
     } else if (scenario.empty()) {
@@ -128,6 +131,12 @@ int runCommand(Args& args) {
         "summary.json)\n%s",
         printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
         printable(out_dir).c_str(), sim::runTable(result.summary_json).c_str());
+  }
+  if (html) {
+    const std::filesystem::path page = options.out_dir / "replay.html";
+    const std::size_t bytes = replay::writeReplay(options.out_dir, page);
+    std::fprintf(json ? stderr : stdout, "replay: %s (%.1f kB)\n", printable(page.string()).c_str(),
+                 static_cast<double>(bytes) / 1000.0);
   }
   if (!writer) return kExitOk;
 

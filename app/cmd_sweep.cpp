@@ -15,6 +15,7 @@
 #include "core/printable.h"
 #include "experiments/sweep.h"
 #include "experiments/sweep_mpi.h"
+#include "replay/trial_replays.h"
 
 namespace canopy::app {
 namespace {
@@ -228,7 +229,14 @@ int analyzeCommand(Args& args) {
     }
     std::printf("\n");
   }
-  std::printf("tables and figures → %s/\n", printable(out).c_str());
+  const std::vector<replay::TrialReplay> replays = replay::writeTrialReplays(result, out);
+  for (const replay::TrialReplay& r : replays) {
+    std::printf("replay of %s, %s at L: %s/%s\n", printable(r.config, 200).c_str(),
+                printable(r.state, 100).c_str(), printable(out).c_str(),
+                printable(r.page.string()).c_str());
+  }
+  std::printf("tables and figures → %s/ (replays.html links one replay per behaviour)\n",
+              printable(out).c_str());
   return kExitOk;
 }
 

@@ -14,6 +14,7 @@ int validateCommand(Args& args);  // canopy validate SCENARIO [--set k=v]...
 int listCommand(Args& args);      // canopy list
 int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
 int coverageCommand(Args& args);  // canopy coverage RUN_DIR [--size WxH]
+int viewCommand(Args& args);      // canopy view RUN_DIR [--out FILE]
 int sweepCommand(Args& args);  // canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
 int analyzeCommand(Args& args);  // canopy analyze DIR [--out DIR]
 int reproduceCommand(Args& args);

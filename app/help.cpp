@@ -28,6 +28,7 @@ constexpr OptionHelp kRun[] = {
      "what every frame shows: the AOI, the padded box of everything that moves, or a box (m)"},
     {"--video", "", "off", "also assemble DIR/frames.mp4 with ffmpeg (Debian ffmpeg)"},
     {"--fps", "F", "real time, 1/(dt·K)", "frames per second of the video"},
+    {"--html", "", "off", "also write DIR/replay.html (as `canopy view DIR`)"},
     CANOPY_LOAD_OPTIONS,
 };
 constexpr OptionHelp kValidate[] = {
@@ -40,6 +41,9 @@ constexpr OptionHelp kCoverage[] = {
      "compare with a pinned CSV: exit 0 match, 1 differing rows, 2 bad input"},
     {"--tolerance", "F", "0.001",
      "with --check: pixel counts may differ by F·aoi_px, fractions by F"},
+};
+constexpr OptionHelp kView[] = {
+    {"--out", "FILE", "RUN_DIR/replay.html", "where the page goes"},
 };
 constexpr OptionHelp kSweep[] = {
     {"--out", "DIR", "required", "the sweep's folder (resumable)"},
@@ -89,6 +93,10 @@ constexpr CommandHelp kCommands[] = {
      "Rendered coverage of a finished run, one CSV row per step, or --check against a golden "
      "CSV.",
      kCoverage},
+    {"view", "canopy view RUN_DIR [--out FILE]",
+     "Writes one self-contained replay.html of a finished run: plays it in any browser, offline, "
+     "with the agents' beliefs, maps, plans and per-target timelines.",
+     kView},
     {"sweep", "canopy sweep SWEEP.json --out DIR [options]",
      "Monte Carlo trials of a sweep file on a thread pool, a shard or MPI ranks; resumable.",
      kSweep},

@@ -44,6 +44,7 @@ int dispatch(const std::string& command, Args& args) {
   if (command == "list") return listCommand(args);
   if (command == "forest") return forestCommand(args);
   if (command == "coverage") return coverageCommand(args);
+  if (command == "view") return viewCommand(args);
   if (command == "sweep") return sweepCommand(args);
   if (command == "analyze") return analyzeCommand(args);
   if (command == "reproduce") return reproduceCommand(args);

@@ -10,7 +10,7 @@ get_property(canopy_libraries GLOBAL PROPERTY CANOPY_LIBRARIES)
 set_target_properties(canopy_warnings PROPERTIES EXPORT_NAME warnings)
 install(TARGETS ${canopy_libraries} canopy_warnings EXPORT canopyTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(dir core world sensing agents spec metrics sim experiments render analysis)
+foreach(dir core world sensing agents spec metrics sim experiments render analysis replay)
   if(EXISTS ${PROJECT_SOURCE_DIR}/${dir})
     install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/canopy/${dir}
             FILES_MATCHING PATTERN "*.h")

@@ -89,6 +89,12 @@ void RecordLineWriter::belief(JsonLine& j, const agents::AgentBelief& belief) {
     upperTriangle(j, t.belief.P);
     j.key("key");
     key(j, t.key);
+    if (t.outline.vertices > 0) {  // a polygonal crown or wall: its vertex offsets
+      j.key("outline");
+      j.beginArray();
+      for (int v = 0; v < t.outline.vertices; ++v) vec(j, t.outline.offsets[v]);
+      j.endArray();
+    }
     j.key("x");
     values(j, t.belief.x);
     j.endObject();

@@ -47,8 +47,13 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   work.world_units = steps * (uavs + targets + uavs * (targets + clutter));
   // record.jsonl: per step and UAV a fixed part (pose, plan, intentions) and a part per track
   // held (targets, clutter-born tentatives); set above the sizes measured on the library
-  // scenarios (tests/spec/budget_test.cpp).
-  work.record_bytes = steps * uavs * (1000.0 + 600.0 * (targets + clutter));
+  // scenarios (tests/spec/budget_test.cpp); a polygonal crown or wall in an agent's map
+  // also carries its outline, about 45 bytes a vertex.
+  double polygon_vertices = 0.0;
+  for (const world::TreeDef& tree : spec.trees)
+    polygon_vertices += static_cast<double>(tree.vertices.size());
+  work.record_bytes =
+      steps * uavs * (1000.0 + 600.0 * (targets + clutter) + 45.0 * polygon_vertices);
   // JPDA: gating is tracks × measurements; a cluster enumerates at most max_hypotheses events.
   const double measurements = targets + clutter;
   work.tracking_units =
@@ -77,7 +82,8 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
   require(spec, "clock.duration", work.world_units, limits.world_units,
           "world units per trial (steps × (UAVs + targets + UAVs × (targets + clutter_rate)))");
   require(spec, "clock.duration", work.record_bytes, limits.record_bytes,
-          "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate)))");
+          "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate) + 45 × "
+          "polygon vertices))");
   require(spec, "tracking.max_hypotheses", work.tracking_units, limits.tracking_units,
           "tracking units per trial (steps × UAVs × ((targets + sensing.clutter_rate)² + "
           "max_hypotheses))");

@@ -1,0 +1,67 @@
+// The replay page's speed in Debian's headless chromium: first paint, and playing a whole run
+// at 60 steps/s with every layer on and a timeline open (mean and worst time to draw a step,
+// frame intervals, frames that took longer than 1.5 frame periods).
+// Usage: node bench/replay_speed.js CANOPY_BINARY SCENARIO WORK_DIR [REPEATS]
+"use strict";
+
+const path = require("path");
+const { spawnSync } = require("child_process");
+const { Browser, Page } = require("../tests/replay/cdp.js");
+
+const [canopy, scenario, work, repeatsText] = process.argv.slice(2);
+const repeats = +(repeatsText || 3);
+
+function median(values) {
+  const s = values.slice().sort((a, b) => a - b);
+  return s.length ? s[Math.floor(s.length / 2)] : NaN;
+}
+
+async function main() {
+  const runDir = path.join(work, "speed_run");
+  const made = spawnSync(canopy, ["run", scenario, "--out", runDir, "--html"], { encoding: "utf8" });
+  if (made.status !== 0) throw new Error(made.stderr);
+  const page = path.resolve(runDir, "replay.html");
+  const browser = new Browser(process.env.CANOPY_CHROMIUM);
+  const rows = [];
+  try {
+    for (let r = 0; r < repeats; r++) {
+      const tab = await Page.open(browser, 1280, 900);
+      const t0 = process.hrtime.bigint();
+      await tab.navigate("file://" + page);
+      const loadMs = Number(process.hrtime.bigint() - t0) / 1e6;
+      const first = await tab.evaluate("({ paint: CanopyReplay.app.stats.firstPaintSinceNavigation, " +
+        "script: CanopyReplay.app.stats.firstPaintMs, steps: CanopyReplay.app.run.steps })");
+      const play = await tab.evaluate(`new Promise((done) => {
+        const app = CanopyReplay.app;
+        CanopyReplay.LAYERS.forEach((l) => app.setLayer(l.id, true));
+        app.select({ kind: "target", index: 0 });
+        app.state.rate = 60;
+        app.setStep(0);
+        app.stats = { draws: 0, drawMs: 0, drawMsMax: 0, frames: 0, stepsPlayed: 0, frameGaps: [] };
+        const start = performance.now();
+        app.togglePlay();
+        const wait = () => app.state.playing ? setTimeout(wait, 50)
+          : done(Object.assign({ wallMs: performance.now() - start }, app.stats));
+        wait();
+      })`);
+      const gaps = play.frameGaps, period = median(gaps);
+      rows.push({
+        load_ms: +loadMs.toFixed(1), first_paint_ms: +first.paint.toFixed(1),
+        script_to_paint_ms: +first.script.toFixed(1), steps: first.steps,
+        steps_played: play.stepsPlayed, wall_s: +(play.wallMs / 1000).toFixed(3),
+        steps_per_s: +(play.stepsPlayed / (play.wallMs / 1000)).toFixed(1),
+        draws: play.draws, mean_draw_ms: +(play.drawMs / play.draws).toFixed(3),
+        max_draw_ms: +play.drawMsMax.toFixed(2), frames: play.frames,
+        median_frame_ms: +period.toFixed(2), max_frame_ms: +Math.max.apply(null, gaps).toFixed(2),
+        late_frames: gaps.filter((g) => g > 1.5 * period).length,
+        steps_not_drawn: play.stepsPlayed - play.draws
+      });
+      await tab.send("Page.close").catch(() => {});
+    }
+  } finally {
+    await browser.close();
+  }
+  rows.forEach((row) => console.log(JSON.stringify(row)));
+}
+
+main().catch((e) => { console.error(e); process.exit(1); });

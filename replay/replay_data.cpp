@@ -1,0 +1,557 @@
+#include "replay/replay_data.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <tuple>
+
+#include "analysis/behaviours.h"
+#include "core/enum_names.h"
+#include "render/colour.h"
+#include "sensing/visibility.h"
+
+namespace canopy::replay {
+namespace {
+
+constexpr double kAssociationCutoff = 50.0;  // m, the OSPA cut-off c of summary.json
+
+// Appends JSON values to one text. Numbers are written rounded, never as -0, non-finite as null.
+class Writer {
+ public:
+  std::string text;
+
+  void raw(const char* s) { text += s; }
+  void comma(bool& first) {
+    if (!first) text += ',';
+    first = false;
+  }
+  void fixed(double x, int decimals) {
+    if (!std::isfinite(x)) return raw("null");
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, x);
+    trimmed(buffer);
+  }
+  void significant(double x) {
+    if (!std::isfinite(x)) return raw("null");
+    char buffer[48];
+    std::snprintf(buffer, sizeof buffer, "%.*g", kSignificantDigits, x);
+    trimmed(buffer);
+  }
+  void integer(long long x) { text += std::to_string(x); }
+  void string(const std::string& s) { text += nlohmann::json(s).dump(); }
+  void position(double x) { fixed(x, kPositionDecimals); }
+
+ private:
+  // "12.500" → "12.5", "3.000" → "3", "-0.00" → "0"; exponents ("1.2e-05") are kept.
+  void trimmed(char* s) {
+    std::string v(s);
+    if (v.find('e') == std::string::npos && v.find('.') != std::string::npos) {
+      while (v.back() == '0') v.pop_back();
+      if (v.back() == '.') v.pop_back();
+    }
+    if (v == "-0") v = "0";
+    text += v;
+  }
+};
+
+std::string hexColour(int agent) {
+  const render::Rgba c = render::uavColour(agent);
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", c.r, c.g, c.b);
+  return buffer;
+}
+
+// An index per distinct string, in order of first use.
+class Table {
+ public:
+  int index(const std::string& s) {
+    const auto [it, added] = ids_.try_emplace(s, static_cast<int>(names_.size()));
+    if (added) names_.push_back(s);
+    return it->second;
+  }
+  const std::vector<std::string>& names() const { return names_; }
+
+ private:
+  std::map<std::string, int> ids_;
+  std::vector<std::string> names_;
+};
+
+void writeModel(const RunFolder& run, Writer& w) {
+  const spec::ScenarioSpec& spec = run.spec;
+  w.raw("\"format\":1,\"scenario\":");
+  w.string(spec.name);
+  w.raw(",\"seed\":");
+  w.integer(static_cast<long long>(spec.seed));
+  w.raw(",\"dt\":");
+  w.significant(spec.dt);
+  w.raw(",\"steps\":");
+  w.integer(static_cast<long long>(run.steps.size()));
+  const bool plans = spec.planner.algorithm != agents::PlannerAlgorithm::none;
+  w.raw(",\"plan_steps\":");
+  w.integer(std::max(1L, std::lround(spec.planner.plan_period / spec.dt)));
+  w.raw(",\"plans\":");
+  w.raw(plans ? "true" : "false");
+  w.raw(",\"algorithm\":");
+  w.string(std::string(nameOf(agents::kPlannerAlgorithmNames, spec.planner.algorithm)));
+  w.raw(",\"aoi\":[");
+  bool first = true;
+  for (double x : {spec.aoi.lo.x(), spec.aoi.lo.y(), spec.aoi.hi.x(), spec.aoi.hi.y()}) {
+    w.comma(first);
+    w.position(x);
+  }
+  w.raw("],\"occlusion_model\":");
+  w.string(std::string(nameOf(sensing::kOcclusionModelNames, spec.sensing.occlusion_model)));
+  w.raw(",\"comm_range\":");
+  if (std::isfinite(spec.fusion.comm_range)) {
+    w.significant(spec.fusion.comm_range);
+  } else {
+    w.raw("null");
+  }
+  w.raw(",\"comm_latency\":");
+  w.integer(spec.fusion.comm_latency);
+  w.raw(",\"comm_drop\":");
+  w.significant(spec.fusion.comm_drop);
+  w.raw(",\"m\":");
+  w.integer(spec.analysis.m);
+  w.raw(",\"agents\":[");
+  first = true;
+  for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
+    const spec::UavSpec& uav = spec.uavs[i];
+    const sensing::FootprintDef& f = uav.sensor.footprint;
+    w.comma(first);
+    w.raw("{\"name\":");
+    w.string(uav.name);
+    w.raw(",\"kind\":");
+    w.string(std::string(nameOf(world::kAgentKindNames, uav.body.kind)));
+    w.raw(",\"colour\":");
+    w.string(hexColour(static_cast<int>(i)));
+    w.raw(",\"los\":");
+    w.raw(sensing::occlusionModel(uav.sensor, spec.sensing) ==
+                  sensing::OcclusionModel::line_of_sight
+              ? "true"
+              : "false");
+    w.raw(",\"footprint\":");
+    if (f.shape == sensing::FootprintShape::rectangle) {
+      w.raw("{\"shape\":\"rectangle\",\"size\":[");
+      w.position(f.size.x());
+      w.raw(",");
+      w.position(f.size.y());
+      w.raw("]}");
+    } else {
+      w.raw(f.shape == sensing::FootprintShape::disc ? "{\"shape\":\"disc\",\"radius\":"
+                                                     : "{\"shape\":\"sector\",\"radius\":");
+      w.position(f.radius);
+      if (f.shape == sensing::FootprintShape::sector) {
+        w.raw(",\"angle\":");
+        w.significant(f.angle);
+      }
+      w.raw("}");
+    }
+    w.raw("}");
+  }
+  w.raw("],\"targets\":[");
+  first = true;
+  for (const spec::TargetSpec& target : spec.targets) {
+    w.comma(first);
+    w.raw("{\"name\":");
+    w.string(target.name);
+    w.raw(",\"label\":");
+    w.string(spec.labels.at(static_cast<std::size_t>(target.label)));
+    w.raw("}");
+  }
+  w.raw("],\"trees\":[");
+  first = true;
+  for (const world::TreeDef& tree : spec.trees) {
+    if (tree.shape != world::TreeShape::disc) continue;
+    w.comma(first);
+    w.position(tree.centre.x());
+    w.raw(",");
+    w.position(tree.centre.y());
+    w.raw(",");
+    w.position(tree.radius);
+  }
+  w.raw("],\"polygons\":[");
+  first = true;
+  for (const world::TreeDef& tree : spec.trees) {
+    if (tree.shape != world::TreeShape::polygon) continue;
+    w.comma(first);
+    w.raw("[");
+    bool first_vertex = true;
+    for (const Vec2& v : tree.vertices) {
+      w.comma(first_vertex);
+      w.position(v.x());
+      w.raw(",");
+      w.position(v.y());
+    }
+    w.raw("]");
+  }
+  w.raw("]");
+}
+
+void writeTruth(const RunFolder& run, Writer& w) {
+  w.raw(",\"uav\":[");
+  bool first = true;
+  for (const RecordedStep& s : run.steps) {
+    for (const RecordedAgent& a : s.agents) {
+      w.comma(first);
+      w.position(a.position.x());
+      w.raw(",");
+      w.position(a.position.y());
+      w.raw(",");
+      w.fixed(a.yaw, kYawDecimals);
+    }
+  }
+  w.raw("],\"target\":[");
+  first = true;
+  for (const RecordedStep& s : run.steps) {
+    for (const Vec2& p : s.targets) {
+      w.comma(first);
+      w.position(p.x());
+      w.raw(",");
+      w.position(p.y());
+    }
+  }
+  w.raw("]");
+}
+
+void writeIndexLists(const std::vector<std::vector<std::vector<int>>>& lists, Writer& w) {
+  w.raw("[");
+  bool first_step = true;
+  for (const auto& per_agent : lists) {
+    w.comma(first_step);
+    w.raw("[");
+    bool first_agent = true;
+    for (const std::vector<int>& list : per_agent) {
+      w.comma(first_agent);
+      w.raw("[");
+      bool first = true;
+      for (int t : list) {
+        w.comma(first);
+        w.integer(t);
+      }
+      w.raw("]");
+    }
+    w.raw("]");
+  }
+  w.raw("]");
+}
+
+// Scans and m-Ownership (analysis/behaviours.h on the recorded visible sets).
+void writeSensing(const RunFolder& run, Writer& w) {
+  const std::size_t agents = run.spec.uavs.size();
+  std::vector<std::vector<std::vector<int>>> in_fp, visible, owned;
+  analysis::SetHistory sets;
+  for (const RecordedStep& s : run.steps) {
+    auto& f = in_fp.emplace_back();
+    auto& v = visible.emplace_back();
+    auto& bits = sets.emplace_back();
+    for (const RecordedAgent& a : s.agents) {
+      f.push_back(a.in_footprint);
+      v.push_back(a.visible);
+      analysis::TargetSet set = 0;
+      for (int t : a.visible) {
+        if (t < analysis::kMaxAnalysedTargets) set |= analysis::bit(t);
+      }
+      bits.push_back(set);
+    }
+  }
+  w.raw(",\"in_footprint\":");
+  writeIndexLists(in_fp, w);
+  w.raw(",\"visible\":");
+  writeIndexLists(visible, w);
+  w.raw(",\"owned\":");
+  if (run.spec.targets.size() > static_cast<std::size_t>(analysis::kMaxAnalysedTargets)) {
+    w.raw("null");
+  } else {
+    const analysis::SetHistory M = analysis::mOwnership(sets, run.spec.analysis.m);
+    for (const auto& per_agent : M) {
+      auto& o = owned.emplace_back();
+      for (std::size_t i = 0; i < agents; ++i) {
+        std::vector<int>& list = o.emplace_back();
+        for (int t = 0; t < static_cast<int>(run.spec.targets.size()); ++t) {
+          if (per_agent[i] & analysis::bit(t)) list.push_back(t);
+        }
+      }
+    }
+    writeIndexLists(owned, w);
+  }
+  w.raw(",\"ospa\":[");
+  bool first = true;
+  for (const std::vector<double>& values : run.ospa) {
+    w.comma(first);
+    w.raw("[");
+    bool first_value = true;
+    for (double x : values) {
+      w.comma(first_value);
+      w.significant(x);
+    }
+    w.raw("]");
+  }
+  w.raw("]");
+}
+
+// Per step, agent and target: the index of the agent's track that stands for the target — pairs
+// of the same label taken greedily, nearest first, up to the OSPA cut-off — or −1.
+std::vector<int> associate(const RecordedStep& s, const RecordedAgent& a,
+                           const spec::ScenarioSpec& spec) {
+  struct Pair {
+    double d;
+    int target, track;
+  };
+  std::vector<Pair> pairs;
+  for (int t = 0; t < static_cast<int>(s.targets.size()); ++t) {
+    const std::string& label =
+        spec.labels.at(static_cast<std::size_t>(spec.targets[static_cast<std::size_t>(t)].label));
+    for (int j = 0; j < static_cast<int>(a.tracks.size()); ++j) {
+      const RecordedTrack& track = a.tracks[static_cast<std::size_t>(j)];
+      const double d = (track.position - s.targets[static_cast<std::size_t>(t)]).norm();
+      if (track.label == label && d <= kAssociationCutoff) pairs.push_back({d, t, j});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) {
+    return std::tie(x.d, x.target, x.track) < std::tie(y.d, y.target, y.track);
+  });
+  std::vector<int> of_target(s.targets.size(), -1);
+  std::vector<bool> taken(a.tracks.size(), false);
+  for (const Pair& p : pairs) {
+    if (of_target[static_cast<std::size_t>(p.target)] >= 0 ||
+        taken[static_cast<std::size_t>(p.track)])
+      continue;
+    of_target[static_cast<std::size_t>(p.target)] = p.track;
+    taken[static_cast<std::size_t>(p.track)] = true;
+  }
+  return of_target;
+}
+
+void writeTracks(const RunFolder& run, Table& keys, Table& labels, Writer& w) {
+  w.raw(",\"tracks\":[");
+  bool first_step = true;
+  for (const RecordedStep& s : run.steps) {
+    w.comma(first_step);
+    w.raw("[");
+    bool first_agent = true;
+    for (const RecordedAgent& a : s.agents) {
+      w.comma(first_agent);
+      w.raw("[");
+      bool first = true;
+      for (const RecordedTrack& t : a.tracks) {
+        w.comma(first);
+        w.integer(keys.index(t.key));
+        w.raw(",");
+        w.integer(labels.index(t.label));
+        for (double x : {t.position.x(), t.position.y(), t.velocity.x(), t.velocity.y()}) {
+          w.raw(",");
+          w.position(x);
+        }
+        for (double x : {t.P_pos.x(), t.P_pos.y(), t.P_pos.z()}) {
+          w.raw(",");
+          w.significant(x);
+        }
+      }
+      w.raw("]");
+    }
+    w.raw("]");
+  }
+  w.raw("],\"track_of_target\":[");
+  first_step = true;
+  for (const RecordedStep& s : run.steps) {
+    w.comma(first_step);
+    w.raw("[");
+    bool first_agent = true;
+    for (const RecordedAgent& a : s.agents) {
+      w.comma(first_agent);
+      w.raw("[");
+      bool first = true;
+      for (int j : associate(s, a, run.spec)) {
+        w.comma(first);
+        w.integer(j);
+      }
+      w.raw("]");
+    }
+    w.raw("]");
+  }
+  w.raw("]");
+}
+
+// Occlusion maps as changes: per agent and step, 0 when nothing changed, else [[entries set],
+// [keys removed]], an entry being [key, cx, cy, r] or [key, cx, cy, r, [dx, dy, …]]. An entry is
+// sent again only when one of its numbers moved by kMapResend or more since it was last sent
+// (a tree estimate moves a little at every observation; 5 cm is below a pixel at any zoom the
+// page starts with), so the page's map is within kMapResend of the record's.
+void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
+  w.raw(",\"maps\":[");
+  bool first_agent = true;
+  for (std::size_t i = 0; i < run.spec.uavs.size(); ++i) {
+    w.comma(first_agent);
+    w.raw("[");
+    std::map<int, std::vector<double>> sent;  // key → the numbers last sent
+    bool first_step = true;
+    for (const RecordedStep& s : run.steps) {
+      std::map<int, std::vector<double>> now;
+      for (const RecordedMapEntry& e : s.agents[i].map) {
+        std::vector<double>& numbers = now[keys.index(e.key)];
+        numbers = {e.crown[0], e.crown[1], e.crown[2]};
+        for (const Vec2& v : e.outline) numbers.insert(numbers.end(), {v.x(), v.y()});
+      }
+      Writer set, removed;
+      bool first_set = true, first_removed = true;
+      for (auto& [key, numbers] : now) {
+        const auto it = sent.find(key);
+        bool moved = it == sent.end() || it->second.size() != numbers.size();
+        for (std::size_t n = 0; !moved && n < numbers.size(); ++n)
+          moved = std::abs(numbers[n] - it->second[n]) >= kMapResend;
+        if (!moved) {
+          numbers = it->second;  // what the page holds
+          continue;
+        }
+        set.comma(first_set);
+        set.raw("[");
+        set.integer(key);
+        for (std::size_t n = 0; n < 3; ++n) {
+          set.raw(",");
+          set.position(numbers[n]);
+        }
+        if (numbers.size() > 3) {
+          set.raw(",[");
+          for (std::size_t n = 3; n < numbers.size(); ++n) {
+            if (n > 3) set.raw(",");
+            set.position(numbers[n]);
+          }
+          set.raw("]");
+        }
+        set.raw("]");
+      }
+      for (const auto& [key, numbers] : sent) {
+        if (now.count(key)) continue;
+        removed.comma(first_removed);
+        removed.integer(key);
+      }
+      w.comma(first_step);
+      if (set.text.empty() && removed.text.empty()) {
+        w.raw("0");
+      } else {
+        w.raw("[[");
+        w.text += set.text;
+        w.raw("],[");
+        w.text += removed.text;
+        w.raw("]]");
+      }
+      sent = std::move(now);
+    }
+    w.raw("]");
+  }
+  w.raw("]");
+}
+
+void writePoints(const std::vector<Vec2>& points, Writer& w) {
+  w.raw("[");
+  bool first = true;
+  for (const Vec2& p : points) {
+    w.comma(first);
+    w.position(p.x());
+    w.raw(",");
+    w.position(p.y());
+  }
+  w.raw("]");
+}
+
+// Planned paths per agent and step (0: the same as the step before), then the planning epochs.
+void writePlans(const RunFolder& run, Writer& w) {
+  w.raw(",\"paths\":[");
+  bool first_agent = true;
+  for (std::size_t i = 0; i < run.spec.uavs.size(); ++i) {
+    w.comma(first_agent);
+    w.raw("[");
+    bool first_step = true;
+    const std::vector<Vec2>* before = nullptr;
+    for (const RecordedStep& s : run.steps) {
+      const std::vector<Vec2>& path = s.agents[i].planned_path;
+      w.comma(first_step);
+      if (before && *before == path) {
+        w.raw("0");
+      } else {
+        writePoints(path, w);
+      }
+      before = &path;
+    }
+    w.raw("]");
+  }
+  w.raw("],\"epochs\":[");
+  bool first = true;
+  for (const RecordedStep& s : run.steps) {
+    if (!s.plan) continue;
+    w.comma(first);
+    w.raw("{\"k\":");
+    w.integer(s.k);
+    w.raw(",\"epoch\":");
+    w.integer(s.plan->epoch);
+    w.raw(",\"agents\":[");
+    bool first_part = true;
+    for (const RecordedPlan::Part& part : s.plan->agents) {
+      w.comma(first_part);
+      w.raw("[");
+      w.integer(part.agent);
+      w.raw(",");
+      w.significant(part.cost);
+      w.raw(",");
+      writePoints(part.velocities, w);
+      w.raw(",[");
+      bool first_epoch = true;
+      for (int e : part.joint_epoch) {
+        w.comma(first_epoch);
+        w.integer(e);
+      }
+      w.raw("]]");
+    }
+    w.raw("],\"messages\":[");
+    bool first_message = true;
+    for (const RecordedPlan::Message& m : s.plan->messages) {
+      w.comma(first_message);
+      w.raw("[");
+      w.integer(m.agent);
+      w.raw(",");
+      w.integer(m.from);
+      w.raw(",");
+      w.integer(m.epoch);
+      w.raw(",");
+      writePoints(m.velocities, w);
+      w.raw("]");
+    }
+    w.raw("]}");
+  }
+  w.raw("]");
+}
+
+void writeTable(const char* name, const Table& table, Writer& w) {
+  w.raw(",\"");
+  w.raw(name);
+  w.raw("\":[");
+  bool first = true;
+  for (const std::string& s : table.names()) {
+    w.comma(first);
+    w.string(s);
+  }
+  w.raw("]");
+}
+
+}  // namespace
+
+std::string replayDataJson(const RunFolder& run) {
+  Writer w;
+  w.raw("{");
+  writeModel(run, w);
+  writeTruth(run, w);
+  writeSensing(run, w);
+  Table keys, labels;
+  writeTracks(run, keys, labels, w);
+  writeMaps(run, keys, w);
+  writePlans(run, w);
+  writeTable("keys", keys, w);
+  writeTable("labels", labels, w);
+  w.raw("}");
+  return w.text;
+}
+
+}  // namespace canopy::replay

@@ -1,0 +1,20 @@
+#pragma once
+// `canopy view`: a run folder → one self-contained replay.html (no server, no network: the style,
+// the scripts and the run's data are all inside the file).
+#include <filesystem>
+#include <string>
+
+#include "replay/run_folder.h"
+
+namespace canopy::replay {
+
+/// The page for `run`: web/replay.html with the style, the scripts and replayDataJson(run)
+/// inlined. The same run gives the same bytes.
+std::string replayPage(const RunFolder& run);
+
+/// Reads the run in `run_dir` (readRunFolder: ScenarioError on bad input) and writes its page to
+/// `out` (a new temporary renamed over it; WriteError when it cannot). Returns the page's size in
+/// bytes.
+std::size_t writeReplay(const std::filesystem::path& run_dir, const std::filesystem::path& out);
+
+}  // namespace canopy::replay

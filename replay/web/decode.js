@@ -1,0 +1,111 @@
+// The run's packed data (replay/replay_data.cpp writes it) unpacked into per-step values.
+// Defines the page's one global, CanopyReplay; the other scripts add to it.
+const CanopyReplay = {};
+
+(function () {
+  "use strict";
+
+  // Flat [x0, y0, x1, y1, ...] → [{x, y}, ...].
+  function points(flat) {
+    const out = [];
+    for (let i = 0; i + 1 < flat.length; i += 2) out.push({ x: flat[i], y: flat[i + 1] });
+    return out;
+  }
+
+  // Occlusion maps are stored as changes; every step gets its full list, sorted by key.
+  function unpackMaps(changes, keys) {
+    const held = new Map();
+    let current = [];
+    return changes.map(function (change) {
+      if (change === 0) return current;
+      change[0].forEach(function (e) {
+        held.set(e[0], {
+          key: keys[e[0]], x: e[1], y: e[2], r: e[3],
+          outline: e.length > 4 ? points(e[4]) : null
+        });
+      });
+      change[1].forEach(function (key) { held.delete(key); });
+      current = Array.from(held.keys()).sort(function (a, b) { return a - b; })
+        .map(function (key) { return held.get(key); });
+      return current;
+    });
+  }
+
+  // Planned paths: 0 means the same as the step before.
+  function unpackPaths(steps) {
+    let current = [];
+    return steps.map(function (s) {
+      if (s !== 0) current = points(s);
+      return current;
+    });
+  }
+
+  function unpackTracks(perStep, keys, labels) {
+    return perStep.map(function (perAgent) {
+      return perAgent.map(function (flat) {
+        const tracks = [];
+        for (let i = 0; i + 8 < flat.length; i += 9) {
+          tracks.push({
+            key: keys[flat[i]], label: labels[flat[i + 1]], x: flat[i + 2], y: flat[i + 3],
+            vx: flat[i + 4], vy: flat[i + 5], pxx: flat[i + 6], pxy: flat[i + 7], pyy: flat[i + 8]
+          });
+        }
+        return tracks;
+      });
+    });
+  }
+
+  // Planning epochs: each agent's plan with the epochs of the teammates' plans it planned
+  // against (joint_epoch), and the messages sent, in the order sent.
+  function unpackEpochs(raw) {
+    return raw.map(function (e) {
+      return {
+        k: e.k, epoch: e.epoch,
+        plans: e.agents.map(function (a) {
+          return { agent: a[0], cost: a[1], velocities: points(a[2]), jointEpoch: a[3] };
+        }),
+        sent: e.messages.map(function (m) {
+          return { agent: m[0], from: m[1], epoch: m[2], velocities: points(m[3]) };
+        })
+      };
+    });
+  }
+
+  CanopyReplay.decode = function (raw) {
+    const A = raw.agents.length, T = raw.targets.length, S = raw.steps;
+    const run = {
+      scenario: raw.scenario, seed: raw.seed, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
+      plans: raw.plans, algorithm: raw.algorithm, aoi: raw.aoi, occlusionModel: raw.occlusion_model,
+      commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
+      trees: [], polygons: raw.polygons.map(points),
+      inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
+      tracks: unpackTracks(raw.tracks, raw.keys, raw.labels),
+      trackOfTarget: raw.track_of_target,
+      maps: raw.maps.map(function (changes) { return unpackMaps(changes, raw.keys); }),
+      paths: raw.paths.map(unpackPaths),
+      epochs: unpackEpochs(raw.epochs),
+      epochIndex: new Map(),
+      epochAt: new Int32Array(S)
+    };
+    for (let i = 0; i + 2 < raw.trees.length; i += 3) {
+      run.trees.push({ x: raw.trees[i], y: raw.trees[i + 1], r: raw.trees[i + 2] });
+    }
+    run.epochs.forEach(function (ep, n) { run.epochIndex.set(ep.epoch, n); });
+    // epochAt[k]: the index of the last planning epoch at or before step k, -1 before the first.
+    let e = -1;
+    for (let k = 0; k < S; k++) {
+      while (e + 1 < run.epochs.length && run.epochs[e + 1].k <= k) e++;
+      run.epochAt[k] = e;
+    }
+    run.uav = function (k, i) {
+      const o = (k * A + i) * 3;
+      return { x: raw.uav[o], y: raw.uav[o + 1], yaw: raw.uav[o + 2] };
+    };
+    run.target = function (k, t) {
+      const o = (k * T + t) * 2;
+      return { x: raw.target[o], y: raw.target[o + 1] };
+    };
+    run.time = function (k) { return k * raw.dt; };
+    return run;
+  };
+})();

@@ -1,0 +1,152 @@
+// The replay page's start: reads the embedded run, draws its first step and keeps the map, the
+// slider, the clock and the timeline in step. CanopyReplay.app is the page's state, which the
+// browser tests drive and read.
+/* global CanopyReplay */
+(function () {
+  "use strict";
+
+  const started = performance.now();
+
+  // The box (m) of everything the run visits, grown by the largest footprint's reach and 10 %.
+  function runBox(run) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, reach = 0;
+    function add(q) {
+      x0 = Math.min(x0, q.x); y0 = Math.min(y0, q.y); x1 = Math.max(x1, q.x); y1 = Math.max(y1, q.y);
+    }
+    for (let k = 0; k < run.steps; k++) {
+      for (let i = 0; i < run.agents.length; i++) add(run.uav(k, i));
+      for (let t = 0; t < run.targets.length; t++) add(run.target(k, t));
+    }
+    run.agents.forEach(function (a) {
+      const f = a.footprint;
+      reach = Math.max(reach, f.shape === "rectangle" ? 0.5 * Math.hypot(f.size[0], f.size[1]) : f.radius);
+    });
+    const pad = reach + 0.1 * Math.max(x1 - x0 + 2 * reach, y1 - y0 + 2 * reach, 2);
+    return [x0 - pad, y0 - pad, x1 + pad, y1 + pad];
+  }
+
+  function App(run) {
+    this.run = run;
+    this.view = new CanopyReplay.View(document.getElementById("map"));
+    this.ctx = this.view.canvas.getContext("2d");
+    this.timeline = new CanopyReplay.Timeline(document.getElementById("timeline"), run);
+    this.box = runBox(run);
+    const layers = {};
+    CanopyReplay.LAYERS.forEach(function (l) { layers[l.id] = true; });
+    this.state = { k: 0, agent: 0, layers: layers, selection: null, playing: false, rate: 1 };
+    this.stats = { firstPaintMs: NaN, draws: 0, drawMs: 0, drawMsMax: 0, frames: 0,
+      stepsPlayed: 0, frameGaps: [] };
+    this.series = null;
+  }
+
+  App.prototype.fit = function () {
+    this.view.resize();
+    this.view.fit(this.box);
+    this.draw();
+  };
+
+  App.prototype.draw = function () {
+    const t0 = performance.now(), s = this.state;
+    this.view.resize();
+    CanopyReplay.drawMap(this.ctx, this.view, this.run, s);
+    document.getElementById("slider").value = String(s.k);
+    document.getElementById("clock").textContent = "k = " + s.k + " / " + (this.run.steps - 1) +
+      "   t = " + this.run.time(s.k).toFixed(2) + " s";
+    if (this.series) {
+      this.timeline.draw(s.k);
+      const r = this.series.readout(s.k), out = document.getElementById("readout");
+      out.textContent = r.text;
+      Object.keys(r.fields).forEach(function (key) { out.dataset[key] = r.fields[key]; });
+    }
+    const ms = performance.now() - t0;
+    this.stats.draws++;
+    this.stats.drawMs += ms;
+    this.stats.drawMsMax = Math.max(this.stats.drawMsMax, ms);
+  };
+
+  App.prototype.setStep = function (k) {
+    this.state.k = Math.min(this.run.steps - 1, Math.max(0, Math.round(k)));
+    this.draw();
+  };
+
+  App.prototype.setLayer = function (id, on) {
+    this.state.layers[id] = on;
+    const box = document.getElementById("layer-" + id);
+    if (box) box.checked = on;
+    this.draw();
+  };
+
+  App.prototype.refreshTimeline = function () {
+    const sel = this.state.selection;
+    if (!sel) return;
+    this.series = CanopyReplay.timelineSeries(this.run, sel, this.state.agent);
+    document.getElementById("timeline-title").textContent = this.series.title;
+    this.timeline.set(this.series);
+  };
+
+  App.prototype.setAgent = function (i) {
+    this.state.agent = i;
+    document.getElementById("agent").value = String(i);
+    this.refreshTimeline();
+    this.draw();
+  };
+
+  // Selects an agent (whose beliefs are then shown) or a target, and shows its timeline.
+  App.prototype.select = function (selection) {
+    this.state.selection = selection;
+    if (selection.kind === "agent") this.state.agent = selection.index;
+    document.getElementById("agent").value = String(this.state.agent);
+    this.refreshTimeline();
+    this.draw();
+  };
+
+  App.prototype.pause = function () {
+    this.state.playing = false;
+    document.getElementById("play").textContent = "\u25b6 play";
+  };
+
+  App.prototype.togglePlay = function () {
+    if (this.state.playing) return this.pause();
+    if (this.state.k >= this.run.steps - 1) this.state.k = 0;
+    this.state.playing = true;
+    document.getElementById("play").textContent = "\u23f8 pause";
+    const app = this;
+    let last = null, owed = 0;
+    function frame(now) {
+      if (!app.state.playing) return;
+      if (last !== null) {
+        app.stats.frameGaps.push(now - last);
+        owed += (now - last) / 1000 * app.state.rate;
+      }
+      last = now;
+      // At most one step per frame (the fastest speed is 60 steps/s): a late frame slows the
+      // playback down instead of skipping steps, so every step is drawn.
+      if (owed >= 1) {
+        owed = Math.min(owed - 1, 1);
+        app.stats.stepsPlayed++;
+        app.setStep(app.state.k + 1);
+      }
+      app.stats.frames++;
+      if (app.state.k >= app.run.steps - 1) return app.pause();
+      requestAnimationFrame(frame);
+    }
+    requestAnimationFrame(frame);
+  };
+
+  const raw = JSON.parse(document.getElementById("replay-data").textContent);
+  const run = CanopyReplay.decode(raw);
+  document.getElementById("scenario").textContent = run.scenario;
+  document.getElementById("subtitle").textContent = "seed " + run.seed + " \u00b7 " + run.steps +
+    " steps of " + run.dt + " s \u00b7 planner " + run.algorithm + " \u00b7 " + run.agents.length +
+    " agents, " + run.targets.length + " people, " + (run.trees.length + run.polygons.length) +
+    " trees and walls";
+  const app = new App(run);
+  CanopyReplay.app = app;
+  CanopyReplay.bindControls(app);
+  // A person's timeline from the start, so that the page shows every part of itself at once.
+  if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
+  app.refreshTimeline();
+  app.fit();
+  app.stats.firstPaintMs = performance.now() - started;
+  app.stats.firstPaintSinceNavigation = performance.now();
+})();

@@ -1,0 +1,243 @@
+// The timeline below the map: the chosen target's or agent's history over the whole run, with
+// a cursor at the current step. A target shows the chosen agent's track of it (tr P of the
+// position block), which footprints held it, who saw it, who owned it (m-Ownership, paper
+// Def. 1) and the agent's OSPA; an agent shows the same for itself over every target.
+/* global CanopyReplay */
+(function () {
+  "use strict";
+
+  const LEFT = 190;      // CSS px of row labels
+  const CHART = 56;      // CSS px of a line chart
+  const STRIP = 11;      // CSS px of an on/off strip
+  const FONT = "11px 'DejaVu Sans', sans-serif";
+
+  function precise(v) {
+    return typeof v === "number" && isFinite(v) ? v.toPrecision(4) : "n/a";
+  }
+
+  function names(run, list) {
+    return list.map(function (i) { return run.agents[i].name; });
+  }
+
+  function agentsWith(run, table, k, t) {
+    const out = [];
+    for (let i = 0; i < run.agents.length; i++) {
+      if (table[k][i].indexOf(t) >= 0) out.push(i);
+    }
+    return out;
+  }
+
+  // tr P_pos (m²) of agent a's track of target t at every step (NaN without one).
+  function targetTrace(run, a, t) {
+    const out = new Float64Array(run.steps);
+    for (let k = 0; k < run.steps; k++) {
+      const j = run.trackOfTarget[k][a][t];
+      const track = j >= 0 ? run.tracks[k][a][j] : null;
+      out[k] = track ? track.pxx + track.pyy : NaN;
+    }
+    return out;
+  }
+
+  // What the timeline shows for a selection ({kind: "target" | "agent", index}) seen through
+  // agent a: a title, a line chart of tr P, strips, a line chart of OSPA, and the readout of a
+  // step as {text, fields}.
+  CanopyReplay.timelineSeries = function (run, selection, a) {
+    const A = run.agents.length, strips = [];
+    let title, trace, traceLabel, readout;
+    const ospa = run.ospa[a];
+    if (selection.kind === "target") {
+      const t = selection.index, target = run.targets[t];
+      title = "person " + target.name + ", seen through " + run.agents[a].name + "'s beliefs";
+      trace = targetTrace(run, a, t);
+      traceLabel = "tr P of " + run.agents[a].name + "'s track (m\u00b2)";
+      for (let i = 0; i < A; i++) {
+        strips.push({ label: "in footprint of " + run.agents[i].name, colour: run.agents[i].colour,
+          on: function (k) { return run.inFootprint[k][i].indexOf(t) >= 0; } });
+      }
+      for (let i = 0; i < A; i++) {
+        strips.push({ label: "seen by " + run.agents[i].name, colour: run.agents[i].colour,
+          on: function (k) { return run.visible[k][i].indexOf(t) >= 0; } });
+      }
+      if (run.owned) {
+        strips.push({ label: "owner (" + run.m + "-ownership)", owners: function (k) {
+          return agentsWith(run, run.owned, k, t);
+        } });
+      }
+      readout = function (k) {
+        const covered = names(run, agentsWith(run, run.inFootprint, k, t));
+        const seen = names(run, agentsWith(run, run.visible, k, t));
+        const owners = run.owned ? names(run, agentsWith(run, run.owned, k, t)) : [];
+        const fields = {
+          k: String(k), target: target.name, agent: run.agents[a].name,
+          trace: isNaN(trace[k]) ? "none" : precise(trace[k]),
+          covered: covered.join(","), visible: seen.join(","), owners: owners.join(","),
+          ospa: precise(ospa[k])
+        };
+        const text = "k = " + k + "   t = " + run.time(k).toFixed(2) + " s   " + target.name +
+          "   tr P (" + fields.agent + "'s track) = " + (isNaN(trace[k]) ? "no track" : fields.trace + " m\u00b2") +
+          "\nin footprint of: " + (covered.join(", ") || "none") +
+          "   seen by: " + (seen.join(", ") || "nobody") +
+          "   owned by: " + (owners.join(", ") || "nobody") +
+          "   OSPA of " + fields.agent + " = " + fields.ospa + " m";
+        return { text: text, fields: fields };
+      };
+    } else {
+      const i = selection.index, agent = run.agents[i];
+      a = i;
+      title = "agent " + agent.name + " (" + agent.kind + ")";
+      trace = new Float64Array(run.steps);
+      for (let k = 0; k < run.steps; k++) {
+        trace[k] = run.tracks[k][i].reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
+      }
+      traceLabel = "\u03a3 tr P of its tracks (m\u00b2)";
+      run.targets.forEach(function (target, t) {
+        strips.push({ label: target.name + " in its footprint", colour: agent.colour,
+          on: function (k) { return run.inFootprint[k][i].indexOf(t) >= 0; } });
+      });
+      run.targets.forEach(function (target, t) {
+        strips.push({ label: target.name + " seen", colour: agent.colour,
+          on: function (k) { return run.visible[k][i].indexOf(t) >= 0; } });
+      });
+      if (run.owned) {
+        run.targets.forEach(function (target, t) {
+          strips.push({ label: target.name + " owned (" + run.m + "-own.)", colour: agent.colour,
+            on: function (k) { return run.owned[k][i].indexOf(t) >= 0; } });
+        });
+      }
+      readout = function (k) {
+        const targetNames = function (list) {
+          return list.map(function (t) { return run.targets[t].name; });
+        };
+        const fields = {
+          k: String(k), agent: agent.name, trace: precise(trace[k]),
+          tracks: String(run.tracks[k][i].length),
+          covered: targetNames(run.inFootprint[k][i]).join(","),
+          visible: targetNames(run.visible[k][i]).join(","),
+          owners: run.owned ? targetNames(run.owned[k][i]).join(",") : "",
+          ospa: precise(run.ospa[i][k])
+        };
+        const text = "k = " + k + "   t = " + run.time(k).toFixed(2) + " s   " + agent.name +
+          ": " + fields.tracks + " tracks, \u03a3 tr P = " + fields.trace + " m\u00b2" +
+          "\nin its footprint: " + (fields.covered.replace(/,/g, ", ") || "nobody") +
+          "   seen: " + (fields.visible.replace(/,/g, ", ") || "nobody") +
+          "   owns: " + (fields.owners.replace(/,/g, ", ") || "nothing") +
+          "   OSPA = " + fields.ospa + " m";
+        return { text: text, fields: fields };
+      };
+    }
+    return { title: title, trace: trace, traceLabel: traceLabel, strips: strips,
+      ospa: ospa, ospaLabel: "OSPA of " + run.agents[a].name + " (m)", readout: readout,
+      colour: run.agents[a].colour };
+  };
+
+  function Timeline(canvas, run) {
+    this.canvas = canvas;
+    this.run = run;
+    this.series = null;
+    this.cache = null;  // the drawn history without its cursor
+  }
+
+  Timeline.prototype.height = function () {
+    return this.series ? CHART + 8 + this.series.strips.length * STRIP + 8 + CHART + 14 : 0;
+  };
+
+  // Step k ↔ x (CSS px).
+  Timeline.prototype.x = function (k, width) {
+    return LEFT + (width - LEFT - 8) * (this.run.steps > 1 ? k / (this.run.steps - 1) : 0);
+  };
+  Timeline.prototype.stepAt = function (x, width) {
+    const f = (x - LEFT) / Math.max(1, width - LEFT - 8);
+    return Math.min(this.run.steps - 1, Math.max(0, Math.round(f * (this.run.steps - 1))));
+  };
+
+  Timeline.prototype.set = function (series) {
+    this.series = series;
+    this.cache = null;
+    this.canvas.style.height = this.height() + "px";
+  };
+
+  function lineChart(ctx, tl, values, top, width, colour, label) {
+    let max = 0;
+    for (let k = 0; k < values.length; k++) if (isFinite(values[k])) max = Math.max(max, values[k]);
+    if (!(max > 0)) max = 1;
+    ctx.strokeStyle = "rgb(200,200,195)";
+    ctx.lineWidth = 1;
+    ctx.strokeRect(LEFT + 0.5, top + 0.5, width - LEFT - 8, CHART);
+    ctx.beginPath();
+    let pen = false;
+    for (let k = 0; k < values.length; k++) {
+      if (!isFinite(values[k])) { pen = false; continue; }
+      const x = tl.x(k, width), y = top + CHART - CHART * values[k] / max;
+      if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+      pen = true;
+    }
+    ctx.strokeStyle = colour;
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    ctx.fillStyle = "rgb(20,20,20)";
+    ctx.fillText(label, 4, top + 12);
+    ctx.fillStyle = "rgb(90,90,90)";
+    ctx.fillText("max " + max.toPrecision(3), 4, top + 26);
+  }
+
+  Timeline.prototype.drawHistory = function (ctx, width) {
+    const s = this.series, run = this.run;
+    ctx.fillStyle = "rgb(250,250,246)";
+    ctx.fillRect(0, 0, width, this.height());
+    ctx.font = FONT;
+    lineChart(ctx, this, s.trace, 2, width, s.colour, s.traceLabel);
+    let top = CHART + 10;
+    const self = this;
+    s.strips.forEach(function (strip) {
+      ctx.fillStyle = "rgb(20,20,20)";
+      ctx.fillText(strip.label, 4, top + 9);
+      ctx.fillStyle = "rgb(236,236,230)";
+      ctx.fillRect(LEFT, top + 1, width - LEFT - 8, STRIP - 2);
+      for (let k = 0; k < run.steps; k++) {
+        const x0 = self.x(k - 0.5, width), x1 = self.x(k + 0.5, width);
+        if (strip.owners) {
+          const owners = strip.owners(k);
+          owners.forEach(function (i, n) {
+            ctx.fillStyle = run.agents[i].colour;
+            const h = (STRIP - 2) / owners.length;
+            ctx.fillRect(x0, top + 1 + n * h, x1 - x0, h);
+          });
+        } else if (strip.on(k)) {
+          ctx.fillStyle = strip.colour;
+          ctx.fillRect(x0, top + 1, x1 - x0, STRIP - 2);
+        }
+      }
+      top += STRIP;
+    });
+    lineChart(ctx, this, s.ospa, top + 8, width, s.colour, s.ospaLabel);
+  };
+
+  Timeline.prototype.draw = function (k) {
+    const canvas = this.canvas;
+    if (!this.series) return;
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.max(1, Math.round(canvas.getBoundingClientRect().width)), height = this.height();
+    if (canvas.width !== Math.round(width * ratio) || canvas.height !== Math.round(height * ratio)) {
+      canvas.width = Math.round(width * ratio);
+      canvas.height = Math.round(height * ratio);
+      this.cache = null;
+    }
+    const ctx = canvas.getContext("2d");
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    if (!this.cache) {
+      this.drawHistory(ctx, width);
+      this.cache = ctx.getImageData(0, 0, canvas.width, canvas.height);
+    } else {
+      ctx.putImageData(this.cache, 0, 0);
+    }
+    const x = Math.round(this.x(k, width)) + 0.5;
+    ctx.strokeStyle = "rgb(20,20,20)";
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    ctx.moveTo(x, 0);
+    ctx.lineTo(x, height);
+    ctx.stroke();
+  };
+
+  CanopyReplay.Timeline = Timeline;
+})();

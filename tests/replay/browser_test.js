@@ -1,0 +1,376 @@
+// The replay page in a real browser (Debian's headless chromium), its answers checked against
+// the run's own files. Usage: node browser_test.js CANOPY_BINARY SOURCE_DIR WORK_DIR
+// Exit 0 all passed, 1 a failure, 77 (ctest's skip) when chromium is not installed.
+"use strict";
+
+const fs = require("fs");
+const path = require("path");
+const { spawnSync } = require("child_process");
+const { Browser, Page } = require("./cdp.js");
+const expect = require("./record.js");
+
+const [canopy, source, work] = process.argv.slice(2);
+const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
+if (!fs.existsSync(chromium)) {
+  console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
+  process.exit(77);
+}
+
+const results = [];
+async function check(name, body) {
+  try {
+    await body();
+    results.push(name);
+    console.log("ok - " + name);
+  } catch (e) {
+    results.push(null);
+    console.log("not ok - " + name + "\n    " + String(e && e.stack || e).split("\n").join("\n    "));
+  }
+}
+function assert(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+function canopyRun(args) {
+  const r = spawnSync(canopy, args, { encoding: "utf8" });
+  if (r.status !== 0) throw new Error("canopy " + args.join(" ") + ": " + r.stderr);
+  return r;
+}
+
+// The map canvas's pixels (RGBA) as a Buffer, with its width and height.
+async function mapPixels(page) {
+  const r = await page.evaluate(`(() => {
+    const c = document.getElementById("map"), d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
+    let s = "";
+    for (let i = 0; i < d.length; i += 0x8000) s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
+    return { w: c.width, h: c.height, data: btoa(s) };
+  })()`);
+  return { w: r.w, h: r.h, data: Buffer.from(r.data, "base64") };
+}
+
+// Distance (px) from (x, y) to the polygon's boundary, negative inside.
+function signedDistance(poly, x, y) {
+  let inside = false, best = Infinity;
+  for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
+    const [ax, ay] = poly[j], [bx, by] = poly[i];
+    if ((by > y) !== (ay > y) && x < ((ax - bx) * (y - by)) / (ay - by) + bx) inside = !inside;
+    const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+    const u = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - u * dx, y - ay - u * dy));
+  }
+  return inside ? -best : best;
+}
+
+// Compares two captures against shapes given as distance functions (px): every changed pixel
+// lies within `margin` px of a shape, and at least `share` of the pixels deeper than `margin`
+// inside the shapes changed.
+function compareToShapes(a, b, shapes, margin, share) {
+  let stray = 0, inner = 0, innerChanged = 0, changed = 0;
+  for (let y = 0; y < a.h; y++) {
+    for (let x = 0; x < a.w; x++) {
+      const o = 4 * (y * a.w + x);
+      const differs = a.data[o] !== b.data[o] || a.data[o + 1] !== b.data[o + 1] || a.data[o + 2] !== b.data[o + 2];
+      let d = Infinity;
+      for (const shape of shapes) d = Math.min(d, shape(x + 0.5, y + 0.5));
+      if (differs) changed++;
+      if (differs && d > margin) stray++;
+      if (d < -margin) {
+        inner++;
+        if (differs) innerChanged++;
+      }
+    }
+  }
+  assert(changed > 0, "nothing changed");
+  assert(stray === 0, stray + " changed pixels outside the layer's shapes (of " + changed + ")");
+  assert(innerChanged >= share * inner,
+    "only " + innerChanged + " of " + inner + " pixels inside the shapes changed");
+  return { changed, inner, innerChanged };
+}
+
+async function setLayers(page, on) {
+  await page.evaluate(`(() => { const on = ${JSON.stringify(on)};
+    Object.keys(on).forEach((id) => CanopyReplay.app.setLayer(id, on[id])); })()`);
+}
+
+async function main() {
+  fs.mkdirSync(work, { recursive: true });
+  const runDir = path.join(work, "probe");
+  canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--out", runDir, "--html"]);
+  const run = expect.readRun(runDir);
+  const pageFile = path.join(runDir, "replay.html");
+
+  await check("the same run gives the same file bytes", async () => {
+    const a = path.join(work, "a.html"), b = path.join(work, "b.html");
+    canopyRun(["view", runDir, "--out", a]);
+    canopyRun(["view", runDir, "--out", b]);
+    const bytes = fs.readFileSync(a);
+    assert(bytes.equals(fs.readFileSync(b)), "two views differ");
+    assert(bytes.equals(fs.readFileSync(pageFile)), "view and run --html differ");
+  });
+
+  const browser = new Browser(chromium);
+  try {
+    const page = await Page.open(browser, 1280, 900);
+    const url = "file://" + path.resolve(pageFile);
+    await page.navigate(url);
+    const state = await page.evaluate("({ k: CanopyReplay.app.state.k, steps: CanopyReplay.app.run.steps })");
+
+    await check("the page loads with no console error or failed request", async () => {
+      assert(state.steps === run.record.length, "the page has " + state.steps + " steps, the record " + run.record.length);
+      assert(page.errors.length === 0, page.errors.join("\n"));
+      assert(page.failed.length === 0, "failed requests: " + page.failed.join(", "));
+      const outside = page.requests.filter((u) => u !== url && !u.startsWith("data:"));
+      assert(outside.length === 0, "requests beyond the file: " + outside.join(", "));
+    });
+
+    await check("at step k the pixel at each UAV's recorded position has its colour", async () => {
+      let checked = 0;
+      for (const k of [0, 17, 30, 44, run.record.length - 1]) {
+        await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+        const img = await mapPixels(page);
+        const pixels = [];
+        for (const uav of run.record[k].uavs) {
+          pixels.push(await page.evaluate(`CanopyReplay.app.view.toPixel(${uav.p[0]}, ${uav.p[1]})`));
+        }
+        pixels.forEach((px, i) => {
+          // A later agent's dart (drawn on top) within 12 px may cover this one.
+          if (pixels.some((q, j) => j > i && Math.hypot(q.x - px.x, q.y - px.y) < 12)) return;
+          const o = 4 * (px.y * img.w + px.x), want = expect.PALETTE[i % 8];
+          const got = [img.data[o], img.data[o + 1], img.data[o + 2]];
+          assert(got.every((v, c) => Math.abs(v - want[c]) <= 2),
+            `k=${k} ${run.config.uavs[i].name} at pixel (${px.x}, ${px.y}): got ${got}, want ${want}`);
+          checked++;
+        });
+      }
+      assert(checked >= 15, "only " + checked + " UAV positions checked");
+    });
+
+    await check("toggling a layer changes exactly the pixels of its shapes", async () => {
+      const k = 30;
+      await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+      await setLayers(page, { truth: false, tracks: false, map: false, plans: false, links: false,
+        trees: true, sensors: true });
+      const view = await page.evaluate("({ s: CanopyReplay.app.view.scale, r: CanopyReplay.app.view.ratio })");
+      const screen = async (x, y) => page.evaluate(`(() => { const p = CanopyReplay.app.view.toScreen(${x}, ${y});
+        return [p.x * CanopyReplay.app.view.ratio, p.y * CanopyReplay.app.view.ratio]; })()`);
+      // Footprints and sectors, from the record's poses and the scenario's fov.
+      const footprints = [];
+      for (let i = 0; i < run.config.uavs.length; i++) {
+        const poly = [];
+        for (const [x, y] of expect.footprint(run, k, i)) poly.push(await screen(x, y));
+        footprints.push((x, y) => signedDistance(poly, x, y));
+      }
+      const allOn = await mapPixels(page);
+      await setLayers(page, { sensors: false });
+      const noSensors = await mapPixels(page);
+      const s = compareToShapes(allOn, noSensors, footprints, 2.5, 0.9);
+      console.log(`    sensors: ${s.changed} pixels changed, ${s.innerChanged} of ${s.inner} inside`);
+      // Trees and walls, from the scenario's explicit occluders.
+      const crowns = [];
+      for (const o of run.config.occluders) {
+        if (o.type === "disc") {
+          const c = await screen(o.centre[0], o.centre[1]), r = o.radius * view.s * view.r;
+          crowns.push((x, y) => Math.hypot(x - c[0], y - c[1]) - r);
+        } else {
+          assert(o.type === "polygon", "the probe holds explicit trees only");
+          const poly = [];
+          for (const [x, y] of o.vertices) poly.push(await screen(x, y));
+          crowns.push((x, y) => signedDistance(poly, x, y));
+        }
+      }
+      await setLayers(page, { trees: false });
+      const none = await mapPixels(page);
+      const t = compareToShapes(noSensors, none, crowns, 2.0, 0.9);
+      console.log(`    trees: ${t.changed} pixels changed, ${t.innerChanged} of ${t.inner} inside`);
+      // Links in range (the probe sets no fusion.comm_range: every pair), over the bare ground.
+      const segments = [];
+      const poses = run.record[k].uavs;
+      for (let i = 0; i < poses.length; i++) {
+        for (let j = i + 1; j < poses.length; j++) {
+          const a = await screen(poses[i].p[0], poses[i].p[1]), b = await screen(poses[j].p[0], poses[j].p[1]);
+          segments.push((x, y) => signedDistance([a, b], x, y) - 0.75 * view.r);
+        }
+      }
+      assert(run.config.fusion.comm_range === null || run.config.fusion.comm_range === undefined,
+        "the probe's links are every pair");
+      await setLayers(page, { links: true });
+      const withLinks = await mapPixels(page);
+      const l = compareToShapes(withLinks, none, segments, 2.0, 0.9);
+      console.log(`    links: ${l.changed} pixels changed`);
+      await setLayers(page, { truth: true, tracks: true, map: true, plans: true, links: true,
+        trees: true, sensors: true });
+    });
+
+    await check("the slider, the keys and a click on a target give that target's timeline", async () => {
+      const k0 = 25;
+      await page.evaluate(`(() => { const s = document.getElementById("slider");
+        s.value = "${k0}"; s.dispatchEvent(new Event("input")); })()`);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0, "the slider did not move to " + k0);
+      // A target no agent stands on (a click there selects the target).
+      const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
+        return { x: r.left, y: r.top }; })()`);
+      const at = async (p) => page.evaluate(`CanopyReplay.app.view.toScreen(${p[0]}, ${p[1]})`);
+      // Not the target shown already, so that the click has to change the timeline.
+      const shown = await page.evaluate("CanopyReplay.app.state.selection");
+      let t = -1, click = null;
+      for (let ti = 0; ti < run.record[k0].targets.length && t < 0; ti++) {
+        if (shown && shown.kind === "target" && shown.index === ti) continue;
+        const p = await at(run.record[k0].targets[ti].p);
+        let clear = true;
+        for (const u of run.record[k0].uavs) {
+          const q = await at(u.p);
+          if (Math.hypot(q.x - p.x, q.y - p.y) < 16) clear = false;
+        }
+        if (clear && expect.targetAt(run, k0, 0, ti).covered) { t = ti; click = p; }
+      }
+      assert(t >= 0, "no target clear of the agents at k=" + k0);
+      await page.click(rect.x + click.x, rect.y + click.y);
+      const a = await page.evaluate("CanopyReplay.app.state.agent");
+      const compare = async (k) => {
+        const got = await page.evaluate("Object.assign({}, document.getElementById('readout').dataset)");
+        const want = expect.targetAt(run, k, a, t);
+        for (const key of ["k", "target", "agent", "covered", "visible", "owners"]) {
+          assert(got[key] === want[key], `k=${k} ${key}: page says "${got[key]}", the record "${want[key]}"`);
+        }
+        if (want.trace === null) {
+          assert(got.trace === "none", `k=${k} trace: page ${got.trace}, the record has no track`);
+        } else {
+          assert(Math.abs(+got.trace - want.trace) <= 2e-3 * want.trace + 1e-9,
+            `k=${k} tr P: page ${got.trace}, record ${want.trace}`);
+        }
+        assert(Math.abs(+got.ospa - want.ospa) <= 1e-3 * want.ospa + 1e-9,
+          `k=${k} OSPA: page ${got.ospa}, summary ${want.ospa}`);
+        const title = await page.evaluate("document.getElementById('timeline-title').textContent");
+        assert(title.indexOf(want.target) >= 0, "the timeline's title does not name " + want.target);
+      };
+      await compare(k0);
+      await page.key("ArrowRight", "ArrowRight", 39, false);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0 + 1, "-> did not step once");
+      await compare(k0 + 1);
+      const period = Math.round(run.config.planner.plan_period / run.config.clock.dt);
+      await page.key("ArrowRight", "ArrowRight", 39, true);
+      assert(await page.evaluate("CanopyReplay.app.state.k") === k0 + 1 + period, "shift+-> did not step a plan period");
+      await compare(k0 + 1 + period);
+      await page.key("ArrowLeft", "ArrowLeft", 37, false);
+      await compare(k0 + period);
+      for (const k of [0, run.record.length - 1]) {
+        await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+        await compare(k);
+      }
+      await page.key(" ", "Space", 32, false);
+      assert(await page.evaluate("CanopyReplay.app.state.playing") === true, "space did not play");
+      await page.key(" ", "Space", 32, false);
+      assert(await page.evaluate("CanopyReplay.app.state.playing") === false, "space did not pause");
+    });
+
+    await check("the wheel zooms about the cursor, a drag pans, the scale bar follows", async () => {
+      const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
+        return { x: r.left, y: r.top, w: r.width, h: r.height }; })()`);
+      // Mouse events land on whole page pixels: the cursor's place on the map is what is left.
+      const px = Math.round(rect.x + rect.w * 0.3), py = Math.round(rect.y + rect.h * 0.6);
+      const cx = px - rect.x, cy = py - rect.y;
+      const before = await page.evaluate(`({ w: CanopyReplay.app.view.toWorld(${cx}, ${cy}), s: CanopyReplay.app.view.scale })`);
+      await page.wheel(px, py, -400);
+      const after = await page.evaluate(`({ w: CanopyReplay.app.view.toWorld(${cx}, ${cy}), s: CanopyReplay.app.view.scale })`);
+      assert(after.s > 1.5 * before.s, `the scale went from ${before.s} to ${after.s} px/m`);
+      assert(Math.hypot(after.w.x - before.w.x, after.w.y - before.w.y) < 1e-6,
+        `the point under the cursor moved: ${JSON.stringify(before)} -> ${JSON.stringify(after)} rect ${JSON.stringify(rect)}`);
+      // A bar of the 1-2-5 length at most a quarter of the shown width.
+      const widthM = rect.w / after.s, decade = Math.pow(10, Math.floor(Math.log10(widthM / 4)));
+      const bar = [5, 2, 1].map((m) => m * decade).find((l) => l <= widthM / 4 * (1 + 1e-12));
+      assert(await page.evaluate(`CanopyReplay.scaleBarLength(${rect.w} / CanopyReplay.app.view.scale)`) === bar,
+        "the scale bar is not " + bar + " m");
+      await page.drag(px, py, px + 40, py - 25);
+      const moved = await page.evaluate(`CanopyReplay.app.view.toWorld(${cx + 40}, ${cy - 25})`);
+      assert(Math.hypot(moved.x - before.w.x, moved.y - before.w.y) < 1e-6,
+        "the dragged point did not follow the cursor");
+      await page.evaluate("CanopyReplay.app.fit()");
+    });
+
+    await check("every agent's occlusion map on the page is the record's, within 5 cm", async () => {
+      let entries = 0;
+      for (const k of [10, 30, run.record.length - 1]) {
+        for (let a = 0; a < run.record[k].agents.length; a++) {
+          const shown = await page.evaluate(`CanopyReplay.app.run.maps[${a}][${k}]
+            .map((e) => ({ key: e.key, x: [e.x, e.y, e.r], outline: e.outline }))`);
+          const recorded = run.record[k].agents[a].map;
+          assert(shown.length === recorded.length, `k=${k} agent ${a}: ${shown.length} map entries shown, ${recorded.length} recorded`);
+          for (const e of recorded) {
+            const s = shown.find((x) => x.key === e.key.join(":"));
+            assert(s, `k=${k} agent ${a}: map entry ${e.key} missing`);
+            e.x.forEach((v, n) => assert(Math.abs(v - s.x[n]) < 0.055, `k=${k} agent ${a} entry ${e.key}: ${s.x} vs ${e.x}`));
+            assert(!e.outline === !s.outline, `k=${k} agent ${a} entry ${e.key}: outline shown ${!!s.outline}`);
+            entries++;
+          }
+        }
+      }
+      assert(entries > 0, "no map entries in the probe's record");
+    });
+
+    await check("still no console error after every interaction", async () => {
+      assert(page.errors.length === 0, page.errors.join("\n"));
+    });
+
+    await check("intentions lost on the links are marked lost, the rest as planned against", async () => {
+      const dir = path.join(work, "lossy");
+      canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--set",
+        "fusion.comm_drop=0.5", "--out", dir, "--html"]);
+      const lossy = expect.readRun(dir);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+      // From the record: agent a expected teammate j's plan of this epoch when j sent before it
+      // (messages are in planning order), else the epoch before; it planned against joint_epoch[j].
+      let lost = 0, ok = 0, previous = null;
+      for (const line of lossy.record) {
+        if (!line.plan) continue;
+        const order = line.plan.messages.map((m) => m.from);
+        for (const part of line.plan.agents) {
+          const a = part.agent;
+          const got = await tab.evaluate(`CanopyReplay.intentions(CanopyReplay.app.run, ${line.k}, ${a})
+            .map((i) => [i.from, i.epoch, i.status])`);
+          const want = [];
+          for (const j of order) {
+            if (j === a) continue;
+            const expected = order.indexOf(j) < order.indexOf(a) ? line.plan.epoch : (previous === null ? -1 : previous);
+            const held = part.joint_epoch[j];
+            const status = expected >= 0 && held < expected ? "lost" : held < 0 ? "none" : "ok";
+            want.push([j, held, status]);
+            if (status === "lost") lost++; else ok++;
+          }
+          want.sort((x, y) => x[0] - y[0]);
+          assert(JSON.stringify(got) === JSON.stringify(want),
+            `k=${line.k} agent ${a}: page ${JSON.stringify(got)}, record ${JSON.stringify(want)}`);
+        }
+        previous = line.plan.epoch;
+      }
+      assert(lost > 0 && ok > 0, `${lost} lost and ${ok} received intentions: the run tests nothing`);
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+    });
+
+    await check("names holding </script> and <!-- are shown as text", async () => {
+      const name = "x</script><script>document.title=1</script><!--", person = "T</script>1";
+      const dir = path.join(work, "hostile");
+      canopyRun(["run", "demo", "--set", "name=" + JSON.stringify(name), "--set",
+        "targets.0.name=" + JSON.stringify(person), "--set", "clock.duration=2", "--out", dir, "--html"]);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+      const shown = await tab.evaluate(`({ h1: document.getElementById("scenario").textContent,
+        title: document.title, timeline: document.getElementById("timeline-title").textContent })`);
+      assert(shown.h1 === name, "the heading shows " + JSON.stringify(shown.h1));
+      assert(shown.title === "canopy replay: " + name, "the title is " + JSON.stringify(shown.title));
+      assert(shown.timeline.indexOf(person) >= 0, "the timeline shows " + JSON.stringify(shown.timeline));
+    });
+  } finally {
+    await browser.close();
+  }
+  const failed = results.filter((r) => r === null).length;
+  console.log(`${results.length - failed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+}
+
+main().catch((e) => {
+  console.log("not ok - the harness itself: " + (e && e.stack || e));
+  console.log("0 passed, 1 failed");
+  process.exit(1);
+});
