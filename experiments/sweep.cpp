@@ -121,6 +121,7 @@ SweepSpec loadSweepText(const std::string& text, const std::string& file,
   Json effective = Json::object();
   spec::ObjectReader root = Field(document, file, "", &effective).object();
   SweepSpec sweep;
+  sweep.file = file;
   sweep.load = load;
   sweep.name = root.string("name", fs::path(file).stem().string());
   const std::string scenario = root.required("scenario").string();

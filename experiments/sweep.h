@@ -27,6 +27,7 @@ struct SweepAxis {
 };
 
 struct SweepSpec {
+  std::string file;  // the sweep file (errors of its axes name it); not part of its identity
   std::string name;
   std::string scenario;  // base scenario: a path (resolved beside the sweep file) or a library name
   int trials = 1;        // per configuration

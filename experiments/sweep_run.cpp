@@ -38,6 +38,39 @@ void clearTemporaries(const fs::path& config_dir) {
   }
 }
 
+// The field of the sweep file that made configuration `config` fail to load with `error`: the
+// axis whose override the error names ("axes[i].path", or "axes[i].set[v]" for a named axis),
+// else "set" for the overrides every configuration gets, else "axes".
+std::string axisOf(const SweepSpec& sweep, const SweepConfig& config,
+                   const spec::ScenarioError& error) {
+  // "uavs[0].v_max" → "uavs.0.v_max", the --set spelling of the paths in the sweep.
+  std::string dotted;
+  for (const char c : error.field()) {
+    if (c == '[') dotted += '.';
+    else if (c != ']') dotted += c;
+  }
+  const auto names = [&dotted](const std::string& assignment) {
+    const std::string path = assignment.substr(0, assignment.find('='));
+    return !path.empty() && (dotted == path || dotted.starts_with(path + "."));
+  };
+  for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
+    const SweepAxis& axis = sweep.axes[a];
+    const std::string at = "axes[" + std::to_string(a) + "]";
+    if (axis.set.empty()) {
+      if (names(axis.path)) return at + ".path";
+      continue;
+    }
+    for (std::size_t v = 0; v < axis.set.size(); ++v) {
+      if (config.point.size() > a && config.point[a] != axis.path + "=" + axis.values[v]) continue;
+      for (const std::string& assignment : axis.set[v])
+        if (names(assignment)) return at + ".set[" + std::to_string(v) + "]";
+    }
+  }
+  for (const std::string& assignment : sweep.fixed)
+    if (names(assignment)) return "set";
+  return "axes";
+}
+
 }  // namespace
 
 PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool strict,
@@ -48,7 +81,14 @@ PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool
   for (const SweepConfig& config : prepared.configs) {  // bad overrides fail before any write
     spec::LoadOptions load = sweep.load;
     load.overrides = config.overrides;
-    prepared.specs.push_back(spec::loadScenario(sweep.scenario, load));
+    try {
+      prepared.specs.push_back(spec::loadScenario(sweep.scenario, load));
+    } catch (const spec::ScenarioError& e) {
+      throw spec::ScenarioError(sweep.file.empty() ? sweep.name : sweep.file,
+                                axisOf(sweep, config, e),
+                                "configuration " + config.id + " is not a valid scenario: " +
+                                    e.what());
+    }
     trees += static_cast<double>(prepared.specs.back().trees.size());
   }
   if (const double limit = spec::workLimits(sweep.load.budget_scale).trees; trees > limit) {

@@ -120,6 +120,30 @@ TEST(Sweep, ANamedAxisNeedsOneGroupPerValue) {
   }
 }
 
+// A configuration that is not a valid scenario is blamed on the sweep's own field: the axis whose
+// value made it (a path axis, a named axis's group) or the overrides every configuration gets.
+TEST(Sweep, ABadConfigurationNamesTheSweepFilesAxis) {
+  const auto blamed = [](const std::string& text) -> std::string {
+    try {
+      prepareSweep(loadSweepText(text, "bad_sweep.json"), fs::temp_directory_path() / "unused",
+                   false, false);
+    } catch (const spec::ScenarioError& e) {
+      EXPECT_EQ(e.file(), "bad_sweep.json") << e.what();
+      return e.field();
+    }
+    return "(loaded)";
+  };
+  EXPECT_EQ(blamed(R"({"scenario": "demo", "axes": [{"path": "planner.horizon", "values": [1]},
+                      {"path": "uavs.0.v_max", "values": [2, -3]}]})"),
+            "axes[1].path");
+  EXPECT_EQ(blamed(R"({"scenario": "demo", "axes": [{"name": "fast", "values": [1, 2],
+                      "set": [{"uavs.0.v_max": 3}, {"uavs.1.v_max": -1}]}]})"),
+            "axes[0].set[1]");
+  EXPECT_EQ(blamed(R"({"scenario": "demo", "set": {"tracking.sigma_a": -1},
+                      "axes": [{"path": "planner.horizon", "values": [1]}]})"),
+            "set");
+}
+
 TEST(Sweep, WithTrialsAndSeedChangesTheEffectiveTextToo) {
   const SweepSpec sweep = loadSweep(CANOPY_SOURCE_DIR "/scenarios/sweeps/handover_horizons.json");
   const SweepSpec fewer = withTrialsAndSeed(sweep, 3, 9);
