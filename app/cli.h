@@ -1,11 +1,15 @@
 #pragma once
-// Small helpers for the command line: argument cursor and typed option values.
+// The command line's shared pieces on CLI11: exit codes, options whose text is read and checked
+// by our own readers (so every message names the option and the value it expected), the options
+// of every command that loads scenarios, and output directories.
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <string>
-#include <vector>
 
-#include "core/types.h"
+#include "core/printable.h"
 #include "spec/loader.h"
 
 namespace canopy::app {
@@ -15,46 +19,56 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
 
-/// Walks argv; option values are checked as they are taken, failures throw ScenarioError
-/// naming the option (exit code 2).
-class Args {
- public:
-  Args(int argc, char** argv, int first);
-  bool done() const { return next_ >= args_.size(); }
-  const std::string& peek() const { return args_[next_]; }
-  std::string take() { return args_[next_++]; }
-  /// The value after option `name`.
-  std::string value(const std::string& name);
-  std::uint64_t unsignedValue(const std::string& name);
-  int intValue(const std::string& name, int min_value, int max_value);
-  double doubleValue(const std::string& name);
-  /// The value after option `name` as an output directory (checkOutputDir).
-  std::string outputDirValue(const std::string& name);
-  /// "a,b,c,d" as numbers.
-  std::vector<double> listValue(const std::string& name, std::size_t count);
-  /// The arguments not taken yet.
-  std::vector<std::string> rest() const {
-    return {args_.begin() + static_cast<long>(next_), args_.end()};
-  }
-  /// The whole command line, for manifests.
-  std::string joined() const;
-
- private:
-  std::vector<std::string> args_;
-  std::size_t next_;
-};
-
 /// Throws ScenarioError("command line", what, message); `what` and `message` are shown through
 /// printable() by main.
 [[noreturn]] void usageError(const std::string& what, const std::string& message);
 
-/// The options shared by every command that loads scenarios: `--budget K` (every work limit of
-/// spec/budget.h times K) and `--allow-path DIR` (includes and track files may also be read
-/// from DIR). Takes its value and returns true when `arg` is one of them.
-bool takeLoadOption(Args& args, const std::string& arg, spec::LoadOptions& load);
+/// How an option's text becomes a value of type T: `read` gives the value, or nullopt when the
+/// text is not one; `expected` says what was expected ("an integer in [1, 1024]").
+template <class T>
+struct Reader {
+  std::function<std::optional<T>(const std::string& text)> read;
+  std::string expected;
+};
 
-/// A usage error naming `source` (the option) when `dir` cannot be an output directory: it exists
-/// and is not a directory (a link to one is fine), or one of its parents is not a directory.
+Reader<int> integerIn(int min_value, int max_value);
+Reader<std::uint64_t> nonNegativeInteger();
+/// Any text (checked later, e.g. against the scenario).
+Reader<std::string> anyText();
+/// A finite number for which `in_range` holds; `expected` names the range.
+Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range);
+
+/// Declares `NAME VALUE` on `command` (VALUE: `value_name` in --help), read into `target` (the
+/// last one given wins). Text the reader refuses is a usage error, "NAME: expected …, got 'TEXT'".
+template <class Target, class T>
+CLI::Option* addValue(CLI::App& command, const std::string& name, const std::string& value_name,
+                      Target& target, const Reader<T>& reader, const std::string& meaning) {
+  CLI::Option* option = command.add_option_function<std::string>(
+      name, [&target, read = reader.read](const std::string& text) { target = *read(text); },
+      meaning);
+  option->check(CLI::Validator(
+      [reader](std::string& text) {
+        return reader.read(text)
+                   ? std::string()
+                   : "expected " + reader.expected + ", got '" + printable(text, 100) + "'";
+      },
+      ""));
+  return option->type_name(value_name);
+}
+
+/// Declares `NAME DIR` on `command`, a directory to write into: a usage error when
+/// outputDirProblem(DIR) is not empty.
+CLI::Option* addOutputDir(CLI::App& command, const std::string& name, std::string& target,
+                          const std::string& meaning);
+
+/// Declares `--budget K` (every work limit of spec/budget.h times K) on `command`, and with
+/// `allow_path` also `--allow-path DIR` (includes and track files may also be read from DIR).
+void addLoadOptions(CLI::App& command, spec::LoadOptions& load, bool allow_path = true);
+
+/// Why `dir` cannot be an output directory ("" when it can): it exists and is not a directory
+/// (a link to one is fine), or one of its parents is not a directory.
+std::string outputDirProblem(const std::filesystem::path& dir);
+/// A usage error naming `source` (the option) when outputDirProblem(dir) is not empty.
 void checkOutputDir(const std::filesystem::path& dir, const std::string& source);
 
 }  // namespace canopy::app

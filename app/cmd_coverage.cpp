@@ -6,7 +6,6 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/printable.h"
 #include "core/text_file.h"
 #include "render/coverage_check.h"
@@ -42,38 +41,51 @@ int check(const std::string& csv, const std::string& golden_path, double toleran
   return kExitFailure;
 }
 
-}  // namespace
-
-int coverageCommand(Args& args) {
-  std::string run_dir, golden;
-  std::optional<double> tolerance;
-  std::optional<render::ImageSize> size;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--size") {
-      size = imageSizeValue(args, arg);
-    } else if (arg == "--check") {
-      golden = args.value(arg);
-    } else if (arg == "--tolerance") {
-      tolerance = args.doubleValue(arg);
-      if (*tolerance < 0.0 || *tolerance > 1.0)
-        usageError(arg, "expected a fraction F in [0, 1] (of the AOI's pixels)");
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("coverage", arg);
-    } else if (run_dir.empty()) {
-      run_dir = arg;
-    } else {
-      usageError(arg, "expected one run directory, got a second one");
-    }
+class Coverage : public Command {
+ public:
+  explicit Coverage(CLI::App& canopy)
+      : Command(canopy, "coverage", "canopy coverage RUN_DIR [options]",
+                "Rendered coverage of a finished run, one CSV row per step, or --check against a "
+                "golden CSV.") {
+    CLI::App& o = options();
+    o.add_option("RUN_DIR", run_dir_, "the --out directory of `canopy run`");
+    addImageSize(o, size_, "size of the counting mask")
+        ->default_str("the AOI at 800 px along its longer side");
+    o.add_option("--check", golden_,
+                 "compare with a pinned CSV: exit 0 match, 1 differing rows, 2 bad input")
+        ->type_name("GOLDEN.csv")
+        ->default_str("none (print the CSV)");
+    char tolerance[32];
+    std::snprintf(tolerance, sizeof tolerance, "%g", render::kDefaultCoverageTolerance);
+    addValue(o, "--tolerance", "F", tolerance_,
+             finiteNumber("a fraction F in [0, 1] (of the AOI's pixels)",
+                          [](double f) { return f >= 0.0 && f <= 1.0; }),
+             "with --check: pixel counts may differ by F·aoi_px, fractions by F")
+        ->default_str(tolerance);
   }
-  if (run_dir.empty())
+  int run() override;
+
+ private:
+  std::string run_dir_, golden_;
+  std::optional<double> tolerance_;
+  std::optional<render::ImageSize> size_;
+};
+
+int Coverage::run() {
+  if (run_dir_.empty())
     usageError("coverage", "expected RUN_DIR, the --out directory of `canopy run`");
-  if (tolerance && golden.empty()) usageError("--tolerance", "only applies with --check");
-  const std::string csv = render::coverageCsvOfRun(run_dir, size);
-  if (!golden.empty())
-    return check(csv, golden, tolerance.value_or(render::kDefaultCoverageTolerance));
+  if (tolerance_ && golden_.empty()) usageError("--tolerance", "only applies with --check");
+  const std::string csv = render::coverageCsvOfRun(run_dir_, size_);
+  if (!golden_.empty())
+    return check(csv, golden_, tolerance_.value_or(render::kDefaultCoverageTolerance));
   std::fputs(csv.c_str(), stdout);
   return kExitOk;
+}
+
+}  // namespace
+
+std::unique_ptr<Command> makeCoverage(CLI::App& canopy) {
+  return std::make_unique<Coverage>(canopy);
 }
 
 }  // namespace canopy::app

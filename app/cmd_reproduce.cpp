@@ -6,7 +6,6 @@
 
 #include "analysis/report.h"
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "core/text_file.h"
@@ -14,40 +13,47 @@
 
 namespace canopy::app {
 
-int reproduceCommand(Args& args) {
-  std::string out;
-  int trials = 40;
-  int jobs = std::max(1u, std::thread::hardware_concurrency());
-  std::uint64_t seed = 1;
-  bool mpi = false;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--out") {
-      out = args.outputDirValue(arg);
-    } else if (arg == "--trials") {
-      trials = args.intValue(arg, 1, 100000);
-    } else if (arg == "--jobs") {
-      jobs = args.intValue(arg, 1, 1024);
-    } else if (arg == "--seed") {
-      seed = args.unsignedValue(arg);
-    } else if (arg == "--mpi") {
-      mpi = true;
-    } else {
-      unknownOption("reproduce", arg);
-    }
+namespace {
+
+class Reproduce : public Command {
+ public:
+  explicit Reproduce(CLI::App& canopy)
+      : Command(canopy, "reproduce", "canopy reproduce --out DIR [options]",
+                "The paper's experiment table and three sensitivity studies → DIR/report.md.") {
+    CLI::App& o = options();
+    addOutputDir(o, "--out", out_, "where the sweeps and report.md go")->default_str("required");
+    addValue(o, "--trials", "N", trials_, integerIn(1, 100000),
+             "trials per configuration (sensitivity maps: N/2)")
+        ->default_str(std::to_string(trials_));
+    addValue(o, "--jobs", "N", jobs_, integerIn(1, 1024), "trials run at once")
+        ->default_str("the number of cores");
+    addValue(o, "--seed", "S", seed_, nonNegativeInteger(), "the sweeps' seed")
+        ->default_str(std::to_string(seed_));
+    o.add_flag("--mpi", mpi_, "deal trials over the ranks of mpirun");
   }
-  if (out.empty()) usageError("reproduce", "expected --out DIR");
-  const bool analyses = !mpi || (experiments::mpiAvailable() && experiments::mpiWorld().rank == 0);
+  int run() override;
+
+ private:
+  std::string out_;
+  int trials_ = 40;
+  int jobs_ = defaultJobs();
+  std::uint64_t seed_ = 1;
+  bool mpi_ = false;
+};
+
+int Reproduce::run() {
+  if (out_.empty()) usageError("reproduce", "expected --out DIR");
+  const bool analyses = !mpi_ || (experiments::mpiAvailable() && experiments::mpiWorld().rank == 0);
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::ExperimentResult> results;
   int ran = 0;
   auto runAll = [&](const std::vector<analysis::Experiment>& experiments) {
     std::vector<analysis::ExperimentResult> done;
     for (const analysis::Experiment& experiment : experiments) {
-      const std::filesystem::path dir = std::filesystem::path(out) / experiment.scenario;
-      checkOutputDirectories(dir / "analysis", out);  // no links planted in DIR
-      ran += mpi ? runSweepOverMpi(experiment.sweep, dir, jobs)
-                 : runSweepWithProgress(experiment.sweep, dir, jobs);
+      const std::filesystem::path dir = std::filesystem::path(out_) / experiment.scenario;
+      checkOutputDirectories(dir / "analysis", out_);  // no links planted in DIR
+      ran += mpi_ ? runSweepOverMpi(experiment.sweep, dir, jobs_)
+                  : runSweepWithProgress(experiment.sweep, dir, jobs_);
       if (!analyses) continue;  // under MPI only rank 0 analyses and reports
       analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
       analysis::writeTables(analysed, dir / "analysis");
@@ -56,25 +62,31 @@ int reproduceCommand(Args& args) {
     }
     return done;
   };
-  results = runAll(analysis::paperExperiments(trials, seed));
+  results = runAll(analysis::paperExperiments(trials_, seed_));
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
   const std::vector<analysis::ExperimentResult> studies =
-      runAll(analysis::sensitivityStudies(std::max(1, trials / 2), seed));
-  if (mpi) ran = experiments::sumOverRanks(ran);  // the trials every rank ran now
+      runAll(analysis::sensitivityStudies(std::max(1, trials_ / 2), seed_));
+  if (mpi_) ran = experiments::sumOverRanks(ran);  // the trials every rank ran now
   if (!analyses) return kExitOk;
   analysis::ReportContext context;
-  context.trials = trials;
-  context.seed = seed;
-  context.jobs = jobs;
-  context.ranks = mpi ? experiments::mpiWorld().size : 1;
+  context.trials = trials_;
+  context.seed = seed_;
+  context.jobs = jobs_;
+  context.ranks = mpi_ ? experiments::mpiWorld().size : 1;
   context.trials_run = ran;
   context.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::filesystem::path report = std::filesystem::path(out) / "report.md";
+  const std::filesystem::path report = std::filesystem::path(out_) / "report.md";
   writeFileAtomically(report, analysis::reportMarkdown(results, context, studies));
   std::printf("reproduce: %d trials run in %.1f s → %s\n", ran, context.wall_seconds,
               printable(report.string()).c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+std::unique_ptr<Command> makeReproduce(CLI::App& canopy) {
+  return std::make_unique<Reproduce>(canopy);
 }
 
 }  // namespace canopy::app

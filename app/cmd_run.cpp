@@ -5,7 +5,6 @@
 #include <string>
 
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "render/frame_observer.h"
@@ -27,92 +26,101 @@ std::string getenvOr(const char* name, const char* fallback) {
 
 }  // namespace
 
-render::ImageSize imageSizeValue(Args& args, const std::string& name) {
-  const std::string text = args.value(name);
-  const std::optional<render::ImageSize> size = render::parseImageSize(text);
-  if (!size) {
-    usageError(name, "expected WxH with both sides in [" + std::to_string(render::kMinImageSide) +
-                         ", " + std::to_string(render::kMaxImageSide) +
-                         "] px (e.g. 800x600), got '" + text + "'");
-  }
-  return *size;
+CLI::Option* addImageSize(CLI::App& command, std::optional<render::ImageSize>& size,
+                          const std::string& meaning) {
+  const Reader<render::ImageSize> image_size{
+      [](const std::string& text) { return render::parseImageSize(text); },
+      "WxH with both sides in [" + std::to_string(render::kMinImageSide) + ", " +
+          std::to_string(render::kMaxImageSide) + "] px (e.g. 800x600)"};
+  return addValue(command, "--size", "WxH", size, image_size, meaning);
 }
 
-int runCommand(Args& args) {
-  std::string scenario;
-  std::string out_dir;
-  spec::LoadOptions load;
-  bool frames = false, video = false, json = false, html = false;
-  std::optional<int> every;
-  std::optional<double> fps;
-  std::optional<std::string> view;
-  std::optional<render::ImageSize> size;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--out") {
-      out_dir = args.outputDirValue(arg);
-    } else if (arg == "--seed") {
-      load.seed = args.unsignedValue(arg);
-    } else if (arg == "--set") {
-      load.overrides.push_back(args.value(arg));
-    } else if (takeLoadOption(args, arg, load)) {
-    } else if (arg == "--frames") {
-      frames = true;
-    } else if (arg == "--frame-every") {
-      every = args.intValue(arg, 1, 1000000);
-    } else if (arg == "--size") {
-      size = imageSizeValue(args, arg);
-    } else if (arg == "--video") {
-      video = frames = true;  // a video is made of frames
-    } else if (arg == "--fps") {
-      fps = args.doubleValue(arg);
-      if (!(*fps > 0.0) || *fps > 1000.0)
-        usageError(arg, "expected frames per second in (0, 1000]");
-    } else if (arg == "--view") {
-      view = args.value(arg);
-    } else if (arg == "--json") {
-      json = true;
-    } else if (arg == "--html") {
-      html = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("run", arg);
-    } else if (scenario.empty()) {
-      scenario = arg;
-    } else {
-      usageError(arg, "expected one scenario, got a second one");
-    }
+namespace {
+
+class Run : public Command {
+ public:
+  Run(CLI::App& canopy, std::string command_line)
+      : Command(canopy, "run", "canopy run [SCENARIO] [options]",
+                "Runs a scenario (a path or a built-in name; default demo) and writes "
+                "manifest.json, record.jsonl, timings.jsonl and summary.json; prints a short "
+                "table of the outcome."),
+        command_line_(std::move(command_line)) {
+    CLI::App& o = options();
+    o.add_option("SCENARIO", scenario_, "a path or a built-in name");
+    addOutputDir(o, "--out", out_dir_, "where the run's files go")
+        ->default_str("out/NAME (the scenario's name)");
+    addValue(o, "--seed", "N", load_.seed, nonNegativeInteger(), "the seed of every random stream")
+        ->default_str("the scenario's seed");
+    o.add_option("--set", load_.overrides, "override a field by its dotted path (repeatable)")
+        ->type_name("PATH=VALUE")
+        ->default_str("none")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    o.add_flag("--json", json_, "print summary.json on stdout instead of the short table");
+    o.add_flag("--frames", frames_, "write DIR/frames/frame_NNNNNN.png");
+    addValue(o, "--frame-every", "K", every_, integerIn(1, 1000000), "a frame every K steps")
+        ->default_str("1");
+    addImageSize(o, size_, "frame size")->default_str("800 px along the view's longer side");
+    addValue(o, "--view", "aoi|action|x0,y0,x1,y1", view_, anyText(),
+             "what every frame shows: the AOI, the padded box of everything that moves, or a "
+             "box (m)")
+        ->default_str("action");  // checked against the scenario by render::viewFor
+    o.add_flag("--video", video_, "also assemble DIR/frames.mp4 with ffmpeg (Debian ffmpeg)");
+    addValue(o, "--fps", "F", fps_,
+             finiteNumber("frames per second in (0, 1000]",
+                          [](double f) { return f > 0.0 && f <= 1000.0; }),
+             "frames per second of the video")
+        ->default_str("real time, 1/(dt·K)");
+    o.add_flag("--html", html_, "also write DIR/replay.html (as `canopy view DIR`)");
+    addLoadOptions(o, load_);
   }
-  if (!frames && every) usageError("--frame-every", "only applies with --frames or --video");
-  if (!frames && size) usageError("--size", "only applies with --frames or --video");
-  if (!video && fps) usageError("--fps", "only applies with --video");
-  if (!frames && view) usageError("--view", "only applies with --frames or --video");
+
+  int run() override;
+
+ private:
+  std::string command_line_;
+  std::string scenario_ = kDefaultScenario;
+  std::string out_dir_;
+  spec::LoadOptions load_;
+  bool frames_ = false, video_ = false, json_ = false, html_ = false;
+  std::optional<int> every_;
+  std::optional<double> fps_;
+  std::optional<std::string> view_;
+  std::optional<render::ImageSize> size_;
+};
+
+int Run::run() {
+  const bool frames = frames_ || video_;  // a video is made of frames
+  if (!frames && every_) usageError("--frame-every", "only applies with --frames or --video");
+  if (!frames && size_) usageError("--size", "only applies with --frames or --video");
+  if (!video_ && fps_) usageError("--fps", "only applies with --video");
+  if (!frames && view_) usageError("--view", "only applies with --frames or --video");
   // A video that cannot be made is known before anything runs.
-  if (video && render::findExecutable("ffmpeg", getenvOr("PATH", "")).empty()) {
+  if (video_ && render::findExecutable("ffmpeg", getenvOr("PATH", "")).empty()) {
     std::fprintf(stderr,
                  "canopy: --video: ffmpeg is not on PATH; install the Debian package ffmpeg "
                  "(apt-get install ffmpeg), or run with --frames only\n");
     return kExitFailure;
   }
-  if (scenario.empty()) scenario = kDefaultScenario;
-  const spec::ScenarioSpec spec = spec::loadScenario(scenario, load);
-  if (out_dir.empty()) {
+  const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
+  if (out_dir_.empty()) {
     // The scenario's name is the file's text: one safe component, so it stays under out/.
-    out_dir = "out/" + safeFileName(spec.name);
-    checkOutputDir(out_dir, "--out (default, from the scenario's name)");
+    out_dir_ = "out/" + safeFileName(spec.name);
+    checkOutputDir(out_dir_, "--out (default, from the scenario's name)");
   }
 
   sim::RunOptions options;
-  options.out_dir = out_dir;
-  options.command_line = args.joined();
+  options.out_dir = out_dir_;
+  options.command_line = command_line_;
   // Without --frames nothing of the renderer is made, so no GL context is ever created.
   std::optional<render::FrameWriter> writer;
   std::optional<render::FrameObserver> frame_observer;
   if (frames) {
     render::FrameOptions frame_options;
     frame_options.dir = options.out_dir / "frames";
-    frame_options.every = every.value_or(1);
-    frame_options.size = size.value_or(render::ImageSize{});
-    writer.emplace(render::sceneModel(spec, render::viewFor(view.value_or("action"), spec)),
+    frame_options.every = every_.value_or(1);
+    frame_options.size = size_.value_or(render::ImageSize{});
+    writer.emplace(render::sceneModel(spec, render::viewFor(view_.value_or("action"), spec)),
                    frame_options);
     frame_observer.emplace(*writer);
     options.observers.push_back(&*frame_observer);
@@ -120,7 +128,7 @@ int runCommand(Args& args) {
   const sim::RunResult result = sim::runScenario(spec, options);
   for (const std::string& warning : sim::runWarnings(result.summary_json))
     std::fprintf(stderr, "canopy: warning: %s\n", printable(warning).c_str());
-  if (json) {
+  if (json_) {
     // JSON escapes C0 controls but passes DEL and C1 in names through: printed line by line.
     std::stringstream summary(result.summary_json);
     for (std::string line; std::getline(summary, line);)
@@ -130,27 +138,33 @@ int runCommand(Args& args) {
         "%s: %d steps in %.3f s → %s/ (manifest.json, record.jsonl, timings.jsonl, "
         "summary.json)\n%s",
         printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
-        printable(out_dir).c_str(), sim::runTable(result.summary_json).c_str());
+        printable(out_dir_).c_str(), sim::runTable(result.summary_json).c_str());
   }
-  if (html) {
+  if (html_) {
     const std::filesystem::path page = options.out_dir / "replay.html";
     const std::size_t bytes = replay::writeReplay(options.out_dir, page);
-    std::fprintf(json ? stderr : stdout, "replay: %s (%.1f kB)\n", printable(page.string()).c_str(),
-                 static_cast<double>(bytes) / 1000.0);
+    std::fprintf(json_ ? stderr : stdout, "replay: %s (%.1f kB)\n",
+                 printable(page.string()).c_str(), static_cast<double>(bytes) / 1000.0);
   }
   if (!writer) return kExitOk;
 
-  std::fprintf(json ? stderr : stdout,
+  std::fprintf(json_ ? stderr : stdout,
                "frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
                writer->framesWritten(), writer->size().width, writer->size().height,
-               every.value_or(1), printable(writer->dir().string()).c_str());
-  if (!video) return kExitOk;
-  const double rate = fps.value_or(1.0 / (spec.dt * every.value_or(1)));  // default: real time
+               every_.value_or(1), printable(writer->dir().string()).c_str());
+  if (!video_) return kExitOk;
+  const double rate = fps_.value_or(1.0 / (spec.dt * every_.value_or(1)));  // default: real time
   const render::VideoResult made =
       render::assembleVideo(writer->dir(), options.out_dir / "frames.mp4", rate);
-  std::fprintf(made.status == render::VideoStatus::made && !json ? stdout : stderr, "%s\n",
+  std::fprintf(made.status == render::VideoStatus::made && !json_ ? stdout : stderr, "%s\n",
                printable(made.message).c_str());
   return made.status == render::VideoStatus::made ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+std::unique_ptr<Command> makeRun(CLI::App& canopy, const std::string& command_line) {
+  return std::make_unique<Run>(canopy, command_line);
 }
 
 }  // namespace canopy::app

@@ -1,9 +1,11 @@
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/printable.h"
 #include "spec/budget.h"
 #include "spec/error.h"
@@ -12,32 +14,46 @@
 
 namespace canopy::app {
 
-int validateCommand(Args& args) {
-  std::string scenario;
-  spec::LoadOptions load;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--set") {
-      load.overrides.push_back(args.value(arg));
-    } else if (takeLoadOption(args, arg, load)) {
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("validate", arg);
-    } else if (scenario.empty()) {
-      scenario = arg;
-    } else {
-      usageError(arg, "expected one scenario, got a second one");
-    }
+namespace {
+
+class Validate : public Command {
+ public:
+  explicit Validate(CLI::App& canopy)
+      : Command(canopy, "validate", "canopy validate SCENARIO [options]",
+                "Checks a scenario file and reports every error found (exit code 2).") {
+    CLI::App& o = options();
+    o.add_option("SCENARIO", scenario_, "a path or a built-in name");
+    o.add_option("--set", load_.overrides, "override a field by its dotted path (repeatable)")
+        ->type_name("PATH=VALUE")
+        ->default_str("none")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    addLoadOptions(o, load_);
   }
-  if (scenario.empty()) usageError("validate", "expected a scenario to check");
-  const spec::ScenarioSpec spec = spec::loadScenario(scenario, load);
+  int run() override;
+
+ private:
+  std::string scenario_;
+  spec::LoadOptions load_;
+};
+
+int Validate::run() {
+  if (scenario_.empty()) usageError("validate", "expected a scenario to check");
+  const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps of %g s\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
               spec.trees.size(), spec.steps(), spec.dt);
   return kExitOk;
 }
 
-int listCommand(Args& args) {
-  if (!args.done()) usageError(args.peek(), "`canopy list` takes no arguments");
+class List : public Command {
+ public:
+  explicit List(CLI::App& canopy)
+      : Command(canopy, "list", "canopy list", "The built-in scenarios and their descriptions.") {}
+  int run() override;
+};
+
+int List::run() {
   for (const std::string& name : spec::libraryScenarios()) {
     std::string description;
     try {
@@ -50,58 +66,81 @@ int listCommand(Args& args) {
   return kExitOk;
 }
 
-int forestCommand(Args& args) {
-  spec::PoissonForestDef def;
-  spec::LoadOptions load;  // only its --budget
-  bool has_aoi = false, has_lambda = false, has_radius = false;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--aoi") {
-      const std::vector<double> v = args.listValue(arg, 4);
-      def.region = {Vec2(v[0], v[1]), Vec2(v[2], v[3])};
-      if (!(v[2] > v[0] && v[3] > v[1]))
-        usageError(arg, "expected x0,y0,x1,y1 with x1 > x0 and y1 > y0");
-      has_aoi = true;
-    } else if (arg == "--lambda") {
-      def.lambda = args.doubleValue(arg);
-      if (def.lambda < 0.0) usageError(arg, "expected a density >= 0 (trees per m²)");
-      has_lambda = true;
-    } else if (arg == "--radius") {
-      const std::string text = args.value(arg);
-      const auto comma = text.find(',');
-      char* end = nullptr;
-      def.radius.lo = std::strtod(text.c_str(), &end);
-      def.radius.hi =
-          comma == std::string::npos ? def.radius.lo : std::strtod(text.c_str() + comma + 1, &end);
-      if (!(def.radius.lo > 0.0) || def.radius.hi < def.radius.lo || *end != '\0') {
-        usageError(arg, "expected a positive radius R or a range R_MIN,R_MAX, got '" + text + "'");
-      }
-      has_radius = true;
-    } else if (arg == "--seed") {
-      def.seed = args.unsignedValue(arg);
-    } else if (arg == "--min-gap") {
-      def.min_gap = args.doubleValue(arg);
-      if (*def.min_gap < 0.0) usageError(arg, "expected a gap >= 0 (m)");
-    } else if (arg == "--budget" && takeLoadOption(args, arg, load)) {
-    } else {
-      unknownOption("forest", arg);
-    }
+// "x0,y0,x1,y1" (m) with x1 > x0 and y1 > y0.
+std::optional<Aabb> readRegion(const std::string& text) {
+  std::vector<double> v;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(x)) return std::nullopt;
+    v.push_back(x);
   }
-  if (!has_aoi || !has_lambda || !has_radius) {
-    usageError("forest", "expected --aoi, --lambda and --radius");
+  if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) return std::nullopt;
+  return Aabb{Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+}
+
+// "R" or "R_MIN,R_MAX" (m), 0 < R_MIN <= R_MAX.
+std::optional<spec::RadiusRange> readRadius(const std::string& text) {
+  const auto comma = text.find(',');
+  char* end = nullptr;
+  spec::RadiusRange r;
+  r.lo = std::strtod(text.c_str(), &end);
+  r.hi = comma == std::string::npos ? r.lo : std::strtod(text.c_str() + comma + 1, &end);
+  if (!(r.lo > 0.0) || !(r.hi >= r.lo) || !std::isfinite(r.hi) || *end != '\0') return std::nullopt;
+  return r;
+}
+
+class Forest : public Command {
+ public:
+  explicit Forest(CLI::App& canopy)
+      : Command(canopy, "forest", "canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R [options]",
+                "Prints a Poisson tree layout as a layout file.") {
+    CLI::App& o = options();
+    addValue(
+        o, "--aoi", "x0,y0,x1,y1", def_.region,
+        Reader<Aabb>{readRegion, "x0,y0,x1,y1 (four finite numbers, m) with x1 > x0 and y1 > y0"},
+        "the region (m)")
+        ->default_str("required")
+        ->required();
+    addValue(o, "--lambda", "L", def_.lambda,
+             finiteNumber("a density >= 0 (trees per m²)", [](double l) { return l >= 0.0; }),
+             "trees per m²")
+        ->default_str("required")
+        ->required();
+    addValue(o, "--radius", "R[,R_MAX]", def_.radius,
+             Reader<spec::RadiusRange>{readRadius, "a positive radius R or a range R_MIN,R_MAX"},
+             "crown radius or range (m)")
+        ->default_str("required")
+        ->required();
+    addValue(o, "--seed", "S", def_.seed, nonNegativeInteger(), "the layout's seed")
+        ->default_str(std::to_string(def_.seed));
+    addValue(o, "--min-gap", "G", def_.min_gap,
+             finiteNumber("a gap >= 0 (m)", [](double g) { return g >= 0.0; }),
+             "least gap between crowns (m), Matérn type-II thinning")
+        ->default_str("none");
+    addLoadOptions(o, load_, /*allow_path=*/false);
   }
-  const double limit = spec::workLimits(load.budget_scale).trees;
-  const double expected = def.lambda * spec::poissonDrawRegion(def).area();
+  int run() override;
+
+ private:
+  spec::PoissonForestDef def_;
+  spec::LoadOptions load_;  // only its --budget
+};
+
+int Forest::run() {
+  const double limit = spec::workLimits(load_.budget_scale).trees;
+  const double expected = def_.lambda * spec::poissonDrawRegion(def_).area();
   if (!(expected <= limit)) {
     usageError("--lambda", spec::budgetMessage(expected, limit,
                                                "trees drawn (λ × the region dilated by "
                                                "2 r_max + min_gap)"));
   }
-  def.max_points = static_cast<std::size_t>(limit);
+  def_.max_points = static_cast<std::size_t>(limit);
   using Json = nlohmann::json;
   std::vector<world::TreeDef> trees;
   try {
-    trees = spec::poissonForest(def);
+    trees = spec::poissonForest(def_);
   } catch (const spec::ForestTooLarge& e) {
     usageError("--seed", "this seed's draw needs more than " + std::to_string(e.max_points) + " " +
                              e.what_counted +
@@ -116,12 +155,27 @@ int forestCommand(Args& args) {
   char description[256];
   std::snprintf(description, sizeof description,
                 "Poisson forest: lambda %g per m2, radius [%g, %g] m, seed %llu%s, %zu trees",
-                def.lambda, def.radius.lo, def.radius.hi, static_cast<unsigned long long>(def.seed),
-                def.min_gap ? (", min gap " + std::to_string(*def.min_gap) + " m").c_str() : "",
+                def_.lambda, def_.radius.lo, def_.radius.hi,
+                static_cast<unsigned long long>(def_.seed),
+                def_.min_gap ? (", min gap " + std::to_string(*def_.min_gap) + " m").c_str() : "",
                 trees.size());
   const Json layout = {{"description", description}, {"occluders", occluders}};
   std::printf("%s\n", layout.dump(2).c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+std::unique_ptr<Command> makeValidate(CLI::App& canopy) {
+  return std::make_unique<Validate>(canopy);
+}
+
+std::unique_ptr<Command> makeList(CLI::App& canopy) {
+  return std::make_unique<List>(canopy);
+}
+
+std::unique_ptr<Command> makeForest(CLI::App& canopy) {
+  return std::make_unique<Forest>(canopy);
 }
 
 }  // namespace canopy::app

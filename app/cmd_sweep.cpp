@@ -10,7 +10,6 @@
 #include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "experiments/sweep.h"
@@ -51,11 +50,11 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-int defaultJobs() {
-  return std::max(1u, std::thread::hardware_concurrency());
-}
-
 }  // namespace
+
+int defaultJobs() {
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                          int jobs, const experiments::Shard& shard) {
@@ -83,10 +82,8 @@ int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::
 
 namespace {
 
-// "I/N" with 0 <= I < N.
-experiments::Shard shardValue(Args& args, const std::string& name) {
-  const std::string text = args.value(name);
-  experiments::Shard shard;
+// "I/N" with 0 <= I < N <= 1000000.
+std::optional<experiments::Shard> readShard(const std::string& text) {
   const std::size_t slash = text.find('/');
   char* end = nullptr;
   const long index = slash == std::string::npos ? -1 : std::strtol(text.c_str(), &end, 10);
@@ -94,11 +91,9 @@ experiments::Shard shardValue(Args& args, const std::string& name) {
   const long count = index_ok ? std::strtol(text.c_str() + slash + 1, &end, 10) : 0;
   if (!index_ok || *end != '\0' || slash + 1 == text.size() || count < 1 || count > 1000000 ||
       index < 0 || index >= count) {
-    usageError(name, "expected I/N with 0 <= I < N <= 1000000, got '" + printable(text, 100) + "'");
+    return std::nullopt;
   }
-  shard.index = static_cast<int>(index);
-  shard.count = static_cast<int>(count);
-  return shard;
+  return experiments::Shard{static_cast<int>(index), static_cast<int>(count)};
 }
 
 int statusCommand(const std::string& dir) {
@@ -114,98 +109,105 @@ int statusCommand(const std::string& dir) {
   return kExitOk;
 }
 
-}  // namespace
+class Sweep : public Command {
+ public:
+  explicit Sweep(CLI::App& canopy)
+      : Command(canopy, "sweep", "canopy sweep SWEEP.json --out DIR [options]",
+                "Monte Carlo trials of a sweep file on a thread pool, a shard or MPI ranks; "
+                "resumable.") {
+    CLI::App& o = options();
+    o.add_option("SWEEP.json", file_, "the sweep file");
+    addOutputDir(o, "--out", out_, "the sweep's folder (resumable)")->default_str("required");
+    addValue(o, "--jobs", "N", jobs_, integerIn(1, 1024), "trials run at once")
+        ->default_str("the number of cores");
+    addValue(o, "--shard", "I/N", shard_,
+             Reader<experiments::Shard>{readShard, "I/N with 0 <= I < N <= 1000000"},
+             "run only shard I of N (0 <= I < N)")
+        ->default_str("all trials");
+    o.add_flag("--mpi", mpi_, "deal trials over the ranks of mpirun");
+    o.add_option("--status", status_, "count the finished trials in DIR and exit")
+        ->type_name("DIR")
+        ->default_str("none");
+    addLoadOptions(o, load_);
+  }
+  int run() override;
 
-int sweepCommand(Args& args) {
-  std::string file, out, status;
-  int jobs = defaultJobs();
-  experiments::Shard shard;
-  bool mpi = false;
-  spec::LoadOptions load;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--out") {
-      out = args.outputDirValue(arg);
-    } else if (arg == "--jobs") {
-      jobs = args.intValue(arg, 1, 1024);
-    } else if (arg == "--shard") {
-      shard = shardValue(args, arg);
-    } else if (arg == "--mpi") {
-      mpi = true;
-    } else if (arg == "--status") {
-      status = args.value(arg);
-    } else if (takeLoadOption(args, arg, load)) {
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("sweep", arg);
-    } else if (file.empty()) {
-      file = arg;
-    } else {
-      usageError(arg, "expected one sweep file, got a second one");
-    }
-  }
-  if (!status.empty()) {
-    if (!file.empty() || !out.empty() || mpi || !shard.whole())
+ private:
+  std::string file_, out_, status_;
+  int jobs_ = defaultJobs();
+  experiments::Shard shard_;
+  bool mpi_ = false;
+  spec::LoadOptions load_;
+};
+
+int Sweep::run() {
+  if (!status_.empty()) {
+    if (!file_.empty() || !out_.empty() || mpi_ || !shard_.whole())
       usageError("--status", "expected only --status DIR");
-    return statusCommand(status);
+    return statusCommand(status_);
   }
-  if (file.empty() || out.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
-  if (mpi && !shard.whole()) usageError("--mpi", "expected either --mpi or --shard, not both");
-  const experiments::SweepSpec sweep = experiments::loadSweep(file, load);
+  if (file_.empty() || out_.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
+  if (mpi_ && !shard_.whole()) usageError("--mpi", "expected either --mpi or --shard, not both");
+  const experiments::SweepSpec sweep = experiments::loadSweep(file_, load_);
   const auto start = std::chrono::steady_clock::now();
   const int ran =
-      mpi ? runSweepOverMpi(sweep, out, jobs) : runSweepWithProgress(sweep, out, jobs, shard);
+      mpi_ ? runSweepOverMpi(sweep, out_, jobs_) : runSweepWithProgress(sweep, out_, jobs_, shard_);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (mpi) {
+  if (mpi_) {
     std::printf("%s: rank %d of %d ran %d trials in %.1f s with %d jobs → %s/trials/\n",
                 printable(sweep.name, 200).c_str(), experiments::mpiWorld().rank,
-                experiments::mpiWorld().size, ran, seconds, jobs, printable(out).c_str());
-  } else if (!shard.whole()) {
+                experiments::mpiWorld().size, ran, seconds, jobs_, printable(out_).c_str());
+  } else if (!shard_.whole()) {
     std::printf(
         "%s: shard %d/%d ran %d trials in %.1f s with %d jobs → %s/trials/ (run without "
         "--shard to finish)\n",
-        printable(sweep.name, 200).c_str(), shard.index, shard.count, ran, seconds, jobs,
-        printable(out).c_str());
+        printable(sweep.name, 200).c_str(), shard_.index, shard_.count, ran, seconds, jobs_,
+        printable(out_).c_str());
   } else {
     std::printf("%s: ran %d trials in %.1f s with %d jobs → %s/trials/\n",
-                printable(sweep.name, 200).c_str(), ran, seconds, jobs, printable(out).c_str());
+                printable(sweep.name, 200).c_str(), ran, seconds, jobs_, printable(out_).c_str());
   }
   return kExitOk;
 }
 
-int analyzeCommand(Args& args) {
-  std::string dir, out;
-  analysis::HeatmapRequest maps;
-  spec::LoadOptions load;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--out") {
-      out = args.outputDirValue(arg);
-    } else if (takeLoadOption(args, arg, load)) {
-    } else if (arg == "--state") {
-      maps.state = args.value(arg);
-    } else if (arg == "--before-hiding") {
-      maps.before_hiding_s = args.doubleValue(arg);
-      if (!(maps.before_hiding_s > 0.0) || maps.before_hiding_s > 1e6)
-        usageError(arg, "expected a window in seconds, in (0, 1e6]");
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("analyze", arg);
-    } else if (dir.empty()) {
-      dir = arg;
-    } else {
-      usageError(arg, "expected one sweep directory, got a second one");
-    }
+class Analyze : public Command {
+ public:
+  explicit Analyze(CLI::App& canopy)
+      : Command(canopy, "analyze", "canopy analyze DIR [options]",
+                "Behaviour statistics of a sweep with 95 % intervals: CSV tables and figures.") {
+    CLI::App& o = options();
+    o.add_option("DIR", dir_, "the sweep's folder");
+    addOutputDir(o, "--out", out_, "where tables and figures go")->default_str("DIR/analysis");
+    o.add_option("--state", maps_.state, "the state the sensitivity maps count at L")
+        ->type_name("NAME")
+        ->default_str("M* (or hidden coverage for occlusion scenarios)");
+    addValue(o, "--before-hiding", "S", maps_.before_hiding_s,
+             finiteNumber("a window in seconds, in (0, 1e6]",
+                          [](double s) { return s > 0.0 && s <= 1e6; }),
+             "maps: coverage in the S seconds before the target is hidden")
+        ->default_str("off");
+    addLoadOptions(o, load_);
   }
-  if (dir.empty()) usageError("analyze", "expected a sweep directory");
-  const analysis::SweepAnalysis result = analysis::analyseSweep(dir, load);
-  analysis::heatmapMetric(result, maps);  // a bad --state fails before anything is written
-  if (out.empty()) {
-    out = dir + "/analysis";
-    checkOutputDir(out, "--out (default, DIR/analysis)");
-    checkOutputDirectories(out, dir);  // not a link planted in the sweep's directory
+  int run() override;
+
+ private:
+  std::string dir_, out_;
+  analysis::HeatmapRequest maps_;
+  spec::LoadOptions load_;
+};
+
+int Analyze::run() {
+  if (dir_.empty()) usageError("analyze", "expected a sweep directory");
+  const analysis::SweepAnalysis result = analysis::analyseSweep(dir_, load_);
+  analysis::heatmapMetric(result, maps_);  // a bad --state fails before anything is written
+  if (out_.empty()) {
+    out_ = dir_ + "/analysis";
+    checkOutputDir(out_, "--out (default, DIR/analysis)");
+    checkOutputDirectories(out_, dir_);  // not a link planted in the sweep's directory
   }
-  analysis::writeTables(result, out);
-  analysis::writeFigures(result, out, maps);
+  analysis::writeTables(result, out_);
+  analysis::writeFigures(result, out_, maps_);
   std::printf(
       "Ownership state at the last step L, per configuration: the share of trials in each state "
       "with its 95 %% Wilson interval.\nA state is the sets of targets each UAV owns (m-ownership: "
@@ -229,15 +231,25 @@ int analyzeCommand(Args& args) {
     }
     std::printf("\n");
   }
-  const std::vector<replay::TrialReplay> replays = replay::writeTrialReplays(result, out);
+  const std::vector<replay::TrialReplay> replays = replay::writeTrialReplays(result, out_);
   for (const replay::TrialReplay& r : replays) {
     std::printf("replay of %s, %s at L: %s/%s\n", printable(r.config, 200).c_str(),
-                printable(r.state, 100).c_str(), printable(out).c_str(),
+                printable(r.state, 100).c_str(), printable(out_).c_str(),
                 printable(r.page.string()).c_str());
   }
   std::printf("tables and figures → %s/ (replays.html links one replay per behaviour)\n",
-              printable(out).c_str());
+              printable(out_).c_str());
   return kExitOk;
+}
+
+}  // namespace
+
+std::unique_ptr<Command> makeSweep(CLI::App& canopy) {
+  return std::make_unique<Sweep>(canopy);
+}
+
+std::unique_ptr<Command> makeAnalyze(CLI::App& canopy) {
+  return std::make_unique<Analyze>(canopy);
 }
 
 }  // namespace canopy::app

@@ -1,34 +1,46 @@
 // `canopy view RUN_DIR [--out FILE]`: the replay page of a finished run (replay/replay_page.h).
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "app/commands.h"
-#include "app/help.h"
 #include "core/printable.h"
 #include "replay/replay_page.h"
 
 namespace canopy::app {
+namespace {
 
-int viewCommand(Args& args) {
-  std::string run_dir, out;
-  while (!args.done()) {
-    const std::string arg = args.take();
-    if (arg == "--out") {
-      out = args.value(arg);
-    } else if (!arg.empty() && arg[0] == '-') {
-      unknownOption("view", arg);
-    } else if (run_dir.empty()) {
-      run_dir = arg;
-    } else {
-      usageError(arg, "expected one run directory, got a second one");
-    }
+class View : public Command {
+ public:
+  explicit View(CLI::App& canopy)
+      : Command(canopy, "view", "canopy view RUN_DIR [--out FILE]",
+                "Writes one self-contained replay.html of a finished run: plays it in any "
+                "browser, offline, with the agents' beliefs, maps, plans and per-target "
+                "timelines.") {
+    CLI::App& o = options();
+    o.add_option("RUN_DIR", run_dir_, "the --out directory of `canopy run`");
+    o.add_option("--out", out_, "where the page goes")
+        ->type_name("FILE")
+        ->default_str("RUN_DIR/replay.html");
   }
-  if (run_dir.empty()) usageError("view", "expected RUN_DIR, the --out directory of `canopy run`");
-  if (out.empty()) out = (std::filesystem::path(run_dir) / "replay.html").string();
-  const std::size_t bytes = replay::writeReplay(run_dir, out);
-  std::printf("replay: %s (%.1f kB; open it in a browser, no server needed)\n",
-              printable(out, 300).c_str(), static_cast<double>(bytes) / 1000.0);
-  return kExitOk;
+  int run() override {
+    if (run_dir_.empty())
+      usageError("view", "expected RUN_DIR, the --out directory of `canopy run`");
+    if (out_.empty()) out_ = (std::filesystem::path(run_dir_) / "replay.html").string();
+    const std::size_t bytes = replay::writeReplay(run_dir_, out_);
+    std::printf("replay: %s (%.1f kB; open it in a browser, no server needed)\n",
+                printable(out_, 300).c_str(), static_cast<double>(bytes) / 1000.0);
+    return kExitOk;
+  }
+
+ private:
+  std::string run_dir_, out_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> makeView(CLI::App& canopy) {
+  return std::make_unique<View>(canopy);
 }
 
 }  // namespace canopy::app

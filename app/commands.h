@@ -1,6 +1,10 @@
 #pragma once
-// One function per `canopy` subcommand; each returns the process exit code.
+// The `canopy` subcommands: each declares its options on CLI11 when made, and runs once they are
+// parsed.
+#include <CLI/CLI.hpp>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli.h"
@@ -9,20 +13,47 @@
 
 namespace canopy::app {
 
-int runCommand(Args& args);       // canopy run [SCENARIO] [options]
-int validateCommand(Args& args);  // canopy validate SCENARIO [--set k=v]...
-int listCommand(Args& args);      // canopy list
-int forestCommand(Args& args);    // canopy forest --aoi … --lambda … --radius … --seed …
-int coverageCommand(Args& args);  // canopy coverage RUN_DIR [--size WxH]
-int viewCommand(Args& args);      // canopy view RUN_DIR [--out FILE]
-int sweepCommand(Args& args);  // canopy sweep SWEEP.json --out DIR [--jobs N] [--shard I/N | --mpi]
-int analyzeCommand(Args& args);  // canopy analyze DIR [--out DIR]
-int reproduceCommand(Args& args);
-int schemaCommand(Args& args);  // canopy schema [--markdown]  // canopy reproduce --out DIR
-                                // [--trials N] [--jobs N] [--seed S]
+/// One subcommand and the values of its options.
+class Command {
+ public:
+  virtual ~Command() = default;
+  /// Runs with the parsed options; returns the process exit code.
+  virtual int run() = 0;
+  const CLI::App& app() const { return *app_; }
+  /// "canopy run [SCENARIO] [options]", the first line of its --help.
+  const std::string& synopsis() const { return synopsis_; }
 
-/// The value after option `name` as "WxH" (px); a usage error (exit code 2) otherwise.
-render::ImageSize imageSizeValue(Args& args, const std::string& name);
+ protected:
+  /// Adds the subcommand `name` to `canopy`; `summary` is its paragraph in --help.
+  Command(CLI::App& canopy, const std::string& name, std::string synopsis,
+          const std::string& summary)
+      : app_(canopy.add_subcommand(name, summary)), synopsis_(std::move(synopsis)) {}
+  CLI::App& options() { return *app_; }
+
+ private:
+  CLI::App* app_;  // owned by `canopy`
+  std::string synopsis_;
+};
+
+/// Every command, in the order `canopy --help` lists them. `command_line` (the whole argv) goes
+/// to the manifest of a run.
+std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& canopy,
+                                                   const std::string& command_line);
+
+std::unique_ptr<Command> makeRun(CLI::App& canopy, const std::string& command_line);
+std::unique_ptr<Command> makeValidate(CLI::App& canopy);
+std::unique_ptr<Command> makeCoverage(CLI::App& canopy);
+std::unique_ptr<Command> makeView(CLI::App& canopy);
+std::unique_ptr<Command> makeSweep(CLI::App& canopy);
+std::unique_ptr<Command> makeAnalyze(CLI::App& canopy);
+std::unique_ptr<Command> makeReproduce(CLI::App& canopy);
+std::unique_ptr<Command> makeForest(CLI::App& canopy);
+std::unique_ptr<Command> makeSchema(CLI::App& canopy);
+std::unique_ptr<Command> makeList(CLI::App& canopy);
+
+/// `--size WxH` (px) on `command`, read into `size`.
+CLI::Option* addImageSize(CLI::App& command, std::optional<render::ImageSize>& size,
+                          const std::string& meaning);
 /// Runs a sweep (the trials `shard` owns) with a progress bar on stderr; returns the number of
 /// trials run now.
 int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
@@ -30,6 +61,8 @@ int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesys
 /// Runs a sweep over the MPI ranks (experiments/sweep_mpi.h); exit 2 naming --mpi without MPI.
 int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                     int jobs);
+/// Trials run at once unless --jobs says: the number of cores.
+int defaultJobs();
 
 /// The scenario `canopy run` uses when none is given.
 inline constexpr const char* kDefaultScenario = "demo";

@@ -1,4 +1,4 @@
-// canopy: the command line. Thin: parses, calls the libraries, prints.
+// canopy: the command line. Thin: parses (CLI11), calls the libraries, prints.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,67 +14,164 @@
 #include "core/printable.h"
 #include "spec/error.h"
 
+namespace canopy::app {
+
+std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& canopy,
+                                                   const std::string& command_line) {
+  std::vector<std::unique_ptr<Command>> commands;
+  commands.push_back(makeRun(canopy, command_line));
+  commands.push_back(makeValidate(canopy));
+  commands.push_back(makeCoverage(canopy));
+  commands.push_back(makeView(canopy));
+  commands.push_back(makeSweep(canopy));
+  commands.push_back(makeAnalyze(canopy));
+  commands.push_back(makeReproduce(canopy));
+  commands.push_back(makeForest(canopy));
+  commands.push_back(makeSchema(canopy));
+  commands.push_back(makeList(canopy));
+  return commands;
+}
+
+}  // namespace canopy::app
+
 namespace {
 
 using namespace canopy::app;
-
-bool wantsHelp(const Args& args) {
-  for (const std::string& arg : args.rest()) {
-    if (arg == "--help" || arg == "-h") return true;
-  }
-  return false;
-}
-
-int dispatch(const std::string& command, Args& args) {
-  if (command == "help" || command == "--help" || command == "-h") {
-    const CommandHelp* about = args.done() ? nullptr : findCommand(args.peek());
-    std::fputs(about ? helpText(*about).c_str() : overviewText().c_str(), stdout);
-    return kExitOk;
-  }
-  if (command == "--version" || command == "version") {
-    std::printf("%s\n", versionText());
-    return kExitOk;
-  }
-  if (const CommandHelp* about = findCommand(command); about && wantsHelp(args)) {
-    std::fputs(helpText(*about).c_str(), stdout);
-    return kExitOk;
-  }
-  if (command == "run") return runCommand(args);
-  if (command == "validate") return validateCommand(args);
-  if (command == "list") return listCommand(args);
-  if (command == "forest") return forestCommand(args);
-  if (command == "coverage") return coverageCommand(args);
-  if (command == "view") return viewCommand(args);
-  if (command == "sweep") return sweepCommand(args);
-  if (command == "analyze") return analyzeCommand(args);
-  if (command == "reproduce") return reproduceCommand(args);
-  if (command == "schema") return schemaCommand(args);
-  std::vector<std::string> names;
-  for (const CommandHelp& c : commands()) names.emplace_back(c.name);
-  const std::string guess = nearest(command, names);
-  std::fprintf(stderr, "canopy: unknown command '%s'%s\n\n%s",
-               canopy::printable(command, 100).c_str(),
-               guess.empty() ? "" : ("; did you mean `canopy " + guess + "`?").c_str(),
-               overviewText().c_str());
-  return kExitUsage;
-}
 
 // Every message may quote the user's text (names, paths, values): shown through printable().
 void report(const std::string& message) {
   std::fprintf(stderr, "canopy: %s\n", canopy::printable(message).c_str());
 }
 
+// The words CLI11 left over: an option `command` does not take (with the nearest it does), or a
+// second positional. Throws the usage error.
+void refuseLeftovers(const CLI::App& command) {
+  bool options_ended = false;
+  for (const std::string& word : command.remaining()) {
+    if (word == "--" && !options_ended) {  // the end of options, kept by CLI11
+      options_ended = true;
+      continue;
+    }
+    if (!options_ended && word.size() > 1 && word[0] == '-') {
+      const std::string guess = nearest(word, optionNames(command));
+      const std::string name = command.get_name();
+      usageError(word, "unknown option for `canopy " + name + "`" +
+                           (guess.empty() ? "" : "; did you mean " + guess + "?") + " (`canopy " +
+                           name + " --help` lists them)");
+    }
+    const std::vector<const CLI::Option*> positionals =
+        command.get_options([](const CLI::Option* o) { return o->get_positional(); });
+    if (positionals.empty()) {
+      usageError(word, "`canopy " + command.get_name() + "` takes no " +
+                           (command.get_options().size() > 1 ? "positional " : "") + "arguments");
+    }
+    usageError(word, "expected one " + positionals.front()->get_name(true) + ", got a second one");
+  }
+}
+
+// CLI11's own refusals in our words: the option, then what it expected. CLI11's messages start
+// with the option's name ("--seed: 1 required N missing", "--aoi is required"); those two are
+// said plainly, any other is shown as CLI11 words it.
+std::string parseErrorMessage(const CLI::ParseError& e, const CLI::App* command) {
+  const std::string what = e.what();
+  if (!command) return what;
+  for (const CLI::Option* o : command->get_options()) {
+    const std::string name = o->get_name();
+    if (name.empty() || what.rfind(name, 0) != 0) continue;
+    const std::string value = name + " " + o->get_type_name();
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) &&
+        what.find(" missing") != std::string::npos)
+      return name + ": expected a value after " + name + " (" + value + ")";
+    if (dynamic_cast<const CLI::RequiredError*>(&e)) return name + ": required, expected " + value;
+  }
+  return what;
+}
+
+int unknownCommand(const std::string& word, std::span<const std::unique_ptr<Command>> commands) {
+  std::vector<std::string> names;
+  for (const std::unique_ptr<Command>& c : commands) names.push_back(c->app().get_name());
+  const std::string guess = nearest(word, names);
+  std::fprintf(stderr, "canopy: unknown command '%s'%s\n\n%s", canopy::printable(word, 100).c_str(),
+               guess.empty() ? "" : ("; did you mean `canopy " + guess + "`?").c_str(),
+               overviewText(commands).c_str());
+  return kExitUsage;
+}
+
+}  // namespace
+
+namespace {
+
+// Parses argv and runs the command it names; the exit code.
+int dispatch(int argc, char** argv) {
+  std::string command_line;
+  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
+  CLI::App canopy("multi-UAV target tracking under unknown occlusions", "canopy");
+  canopy.set_help_flag("-h,--help", "this text");
+  canopy.set_version_flag("--version", versionText());
+  canopy.allow_extras();  // left over words are refused by refuseLeftovers, in our words
+  canopy.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  const std::vector<std::unique_ptr<Command>> commands = makeCommands(canopy, command_line);
+  // `canopy help [COMMAND]` and `canopy version`, older spellings of --help and --version.
+  CLI::App* help = canopy.add_subcommand("help")->group("")->allow_extras();
+  CLI::App* version = canopy.add_subcommand("version")->group("");
+
+  const auto helpOf = [&](const CLI::App* app) -> std::string {
+    for (const std::unique_ptr<Command>& c : commands) {
+      if (&c->app() == app) return helpText(*c);
+    }
+    return overviewText(commands);
+  };
+  try {
+    canopy.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    const std::vector<CLI::App*> parsed = canopy.get_subcommands();
+    std::fputs(helpOf(parsed.empty() ? nullptr : parsed.front()).c_str(), stdout);
+    return kExitOk;
+  } catch (const CLI::CallForVersion& e) {
+    std::printf("%s\n", e.what());
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    const std::vector<CLI::App*> parsed = canopy.get_subcommands();
+    if (!parsed.empty())
+      refuseLeftovers(*parsed.front());  // a typo first: "--lamda" before "--lambda is required"
+    usageError("", parseErrorMessage(e, parsed.empty() ? nullptr : parsed.front()));
+  }
+  const std::vector<CLI::App*> parsed = canopy.get_subcommands();
+  if (parsed.empty()) {
+    if (canopy.remaining().empty()) {
+      std::fputs(overviewText(commands).c_str(), stderr);
+      return kExitUsage;
+    }
+    return unknownCommand(canopy.remaining().front(), commands);
+  }
+  if (!canopy.remaining().empty()) return unknownCommand(canopy.remaining().front(), commands);
+  const CLI::App* chosen = parsed.front();
+  if (chosen == help) {
+    // CLI11 reads the word after `help` as a second subcommand when it names one.
+    std::fputs(helpOf(parsed.size() > 1 ? parsed[1] : nullptr).c_str(), stdout);
+    return kExitOk;
+  }
+  if (parsed.size() > 1) {  // CLI11 takes a command's name anywhere on the line as that command
+    usageError(parsed[1]->get_name(), "a second command after `canopy " + chosen->get_name() +
+                                          "`; a file of that name is ./" + parsed[1]->get_name());
+  }
+  if (chosen == version) {
+    std::printf("%s\n", versionText().c_str());
+    return kExitOk;
+  }
+  refuseLeftovers(*chosen);
+  for (const std::unique_ptr<Command>& c : commands) {
+    if (&c->app() == chosen) return c->run();
+  }
+  return kExitFailure;  // every subcommand is a Command, help or version
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fputs(canopy::app::overviewText().c_str(), stderr);
-    return kExitUsage;
-  }
-  Args args(argc, argv, 2);
   int code = kExitFailure;
   try {
-    code = dispatch(argv[1], args);
+    code = dispatch(argc, argv);
   } catch (const canopy::spec::ScenarioErrors& e) {
     for (const canopy::spec::ScenarioError& each : e.errors()) report(each.what());
     return kExitUsage;

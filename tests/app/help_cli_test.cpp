@@ -5,7 +5,10 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
 
 #include "tests/app/cli.h"
 
@@ -73,6 +76,122 @@ TEST(HelpCli, MistypedCommandsAndOptionsGetASuggestion) {
   const Outcome far = runIn(dir, "sweep x.json --zzzzzz");
   EXPECT_EQ(far.code, 2);
   EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+  // Every command's options, whatever comes before the typo; nothing ran.
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"sweeep x.json", "unknown command 'sweeep'; did you mean `canopy sweep`?"},
+           {"valdiate demo", "unknown command 'valdiate'; did you mean `canopy validate`?"},
+           {"coverage r --check g.csv --tolerence 0.1",
+            "--tolerence: unknown option for `canopy coverage`; did you mean --tolerance?"},
+           {"forest --aoi 0,0,10,10 --lamda 1 --radius 1",
+            "--lamda: unknown option for `canopy forest`; did you mean --lambda?"},
+           {"run demo --frames --frame-evry 2",
+            "--frame-evry: unknown option for `canopy run`; did you mean --frame-every?"},
+           {"analyze d --hepl",
+            "--hepl: unknown option for `canopy analyze`; did you mean --help?"}}) {
+    const Outcome o = runIn(dir, args);
+    EXPECT_EQ(o.code, 2) << args;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << args << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
+// The options of a command as its --help lists them: "--jobs" → "N" ("" for a flag).
+std::map<std::string, std::string> helpOptions(const std::string& help) {
+  std::map<std::string, std::string> options;
+  const std::regex row(R"(\n  (--[a-z-]+)( [^ ]+)? +.*\[)");
+  for (std::sregex_iterator m(help.begin(), help.end(), row), end; m != end; ++m)
+    options[(*m)[1]] = (*m)[2].matched ? (*m)[2].str().substr(1) : "";
+  return options;
+}
+
+// README's tour table and each command's --help say the same options, and the parser takes every
+// one of them: `canopy COMMAND OPTION VALUE --zz-canary` is refused for the canary, so OPTION and
+// its VALUE were taken (and nothing runs).
+TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
+  const fs::path dir = fresh("readme_options");
+  fs::create_directories(dir);
+  const std::string readme = slurp(CANOPY_README);
+  const std::size_t tour = readme.find("## A short tour");
+  ASSERT_NE(tour, std::string::npos);
+  const std::string table =
+      readme.substr(tour, readme.find("\n\n", readme.find("| command", tour)) - tour);
+  // Rows: | `./canopy NAME …` | or | `… NAME …` | (the second row of run).
+  std::map<std::string, std::set<std::string>> readme_options;
+  const std::regex row(R"(\| `(?:\./canopy|…) (\w+)([^`]*)`)");
+  const std::regex option_name(R"(--[a-z][a-z-]*)");
+  for (std::sregex_iterator m(table.begin(), table.end(), row), end; m != end; ++m) {
+    const std::string rest = (*m)[2];
+    readme_options[(*m)[1]];
+    for (std::sregex_iterator o(rest.begin(), rest.end(), option_name); o != end; ++o)
+      readme_options[(*m)[1]].insert(o->str());
+  }
+  const std::set<std::string> commands = {"run",       "validate", "coverage", "sweep", "analyze",
+                                          "reproduce", "forest",   "schema",   "list"};
+  std::set<std::string> in_readme;
+  for (const auto& [command, options] : readme_options) in_readme.insert(command);
+  EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
+  // A value each option takes, by the name --help gives it.
+  const std::map<std::string, std::string> samples = {{"DIR", "."},
+                                                      {"N", "2"},
+                                                      {"K", "2"},
+                                                      {"S", "1"},
+                                                      {"F", "0.5"},
+                                                      {"G", "1"},
+                                                      {"L", "0.01"},
+                                                      {"WxH", "64x48"},
+                                                      {"I/N", "0/2"},
+                                                      {"NAME", "x"},
+                                                      {"GOLDEN.csv", "g.csv"},
+                                                      {"PATH=VALUE", "seed=1"},
+                                                      {"R[,R_MAX]", "1,2"},
+                                                      {"x0,y0,x1,y1", "0,0,10,10"},
+                                                      {"aoi|action|x0,y0,x1,y1", "aoi"}};
+  for (const std::string& command : commands) {
+    SCOPED_TRACE(command);
+    const Outcome help = runIn(dir, command + " --help");
+    ASSERT_EQ(help.code, 0) << help.err;
+    const std::map<std::string, std::string> options = helpOptions(help.out);
+    for (const std::string& option : readme_options[command])
+      EXPECT_TRUE(options.count(option)) << "README lists " << option << ", --help does not";
+    // forest refuses to parse without its three required options.
+    const std::string base =
+        command == "forest" ? "forest --aoi 0,0,10,10 --lambda 1 --radius 1" : command;
+    for (const auto& [option, value] : options) {
+      ASSERT_TRUE(value.empty() || samples.count(value)) << option << " " << value;
+      const std::string args =
+          base + " " + option + (value.empty() ? "" : " " + samples.at(value)) + " --zz-canary";
+      const Outcome o = runIn(dir, args);
+      EXPECT_EQ(o.code, 2) << args;
+      EXPECT_NE(o.err.find("command line: --zz-canary: unknown option for `canopy " + command),
+                std::string::npos)
+          << args << ": " << o.err;
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
+// CLI11's own refusals come out in the program's words: the option and what it expected.
+TEST(HelpCli, MissingValuesAndRequiredOptionsNameTheOption) {
+  const fs::path dir = fresh("missing_values");
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"run demo --seed",
+            "canopy: command line: --seed: expected a value after --seed (--seed N)"},
+           {"sweep s.json --out", "canopy: command line: --out: expected a value after --out"},
+           {"forest --lambda 1 --radius 1",
+            "canopy: command line: --aoi: required, expected --aoi x0,y0,x1,y1"},
+           {"run demo --frames --frame-every 0",
+            "canopy: command line: --frame-every: expected an integer in [1, 1000000], got '0'"},
+           {"sweep s.json --out o --jobs=abc",
+            "canopy: command line: --jobs: expected an integer in [1, 1024], got 'abc'"},
+           {"run a b", "canopy: command line: b: expected one SCENARIO, got a second one"},
+           {"list extra", "canopy: command line: extra: `canopy list` takes no arguments"}}) {
+    const Outcome o = runIn(dir, args);
+    EXPECT_EQ(o.code, 2) << args;
+    EXPECT_NE(o.err.find(expected), std::string::npos) << args << ": " << o.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
   fs::remove_all(dir);
 }
 
