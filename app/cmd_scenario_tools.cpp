@@ -40,9 +40,10 @@ class Validate : public Command {
 int Validate::run() {
   if (scenario_.empty()) usageError("validate", "expected a scenario to check");
   const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
-  std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps of %g s\n",
+  // A run records steps k = 0 … duration/dt: one more than the number of dt it spans.
+  std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps (k = 0 … %d, dt = %g s)\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
-              spec.trees.size(), spec.steps(), spec.dt);
+              spec.trees.size(), spec.steps() + 1, spec.steps(), spec.dt);
   return kExitOk;
 }
 
@@ -159,8 +160,11 @@ int Forest::run() {
                 static_cast<unsigned long long>(def_.seed),
                 def_.min_gap ? (", min gap " + std::to_string(*def_.min_gap) + " m").c_str() : "",
                 trees.size());
-  const Json layout = {{"description", description}, {"occluders", occluders}};
-  std::printf("%s\n", layout.dump(2).c_str());
+  // One tree a line: a layout of 10⁴ trees stays 10⁴ lines long, and still one JSON document.
+  std::printf("{\n  \"description\": %s,\n  \"occluders\": [", Json(description).dump().c_str());
+  for (std::size_t i = 0; i < occluders.size(); ++i)
+    std::printf("%s\n    %s", i ? "," : "", occluders[i].dump().c_str());
+  std::printf("%s]\n}\n", occluders.empty() ? "" : "\n  ");
   return kExitOk;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -243,6 +244,44 @@ TEST_F(Outputs, ControlCharactersInNamesNeverReachTheTerminal) {
   EXPECT_EQ(validate.code, 2);
   EXPECT_NE(validate.err.find("got the string \"\\u001b[31m\""), std::string::npos) << validate.err;
   EXPECT_FALSE(hasControlBytes(validate.err)) << validate.err;
+}
+
+}  // namespace
+}  // namespace canopy::cli_test
+
+namespace canopy::cli_test {
+namespace {
+
+// `validate` counts the steps a run records: k = 0 … duration/dt, so 30 s of 0.2 s is 151 steps,
+// as many lines as record.jsonl then holds (counted from a real run).
+TEST_F(Outputs, ValidateCountsTheStepsARunRecords) {
+  const Outcome checked = runIn(base_, "validate demo --set clock.duration=2");
+  EXPECT_EQ(checked.code, 0) << checked.err;
+  EXPECT_NE(checked.out.find("11 steps (k = 0 … 10, dt = 0.2 s)"), std::string::npos)
+      << checked.out;
+  ASSERT_EQ(runIn(base_, "run demo --set clock.duration=2 --out r").code, 0);
+  std::ifstream record(base_ / "r" / "record.jsonl");
+  int lines = 0;
+  for (std::string line; std::getline(record, line);) ++lines;
+  EXPECT_EQ(lines, 11);
+}
+
+// `forest` writes one tree a line, and the whole is one JSON layout document.
+TEST_F(Outputs, ForestPrintsOneTreeALine) {
+  const Outcome forest =
+      runIn(base_, "forest --aoi 0,0,100,100 --lambda 0.003 --radius 1,2 --seed 3");
+  ASSERT_EQ(forest.code, 0) << forest.err;
+  int tree_lines = 0, lines = 0;
+  std::stringstream text(forest.out);
+  for (std::string line; std::getline(text, line); ++lines)
+    tree_lines += line.find("\"type\":\"disc\"") != std::string::npos;
+  const std::size_t trees = forest.out.find(" trees\"");
+  ASSERT_NE(trees, std::string::npos);
+  const std::size_t start = forest.out.rfind(' ', trees - 1) + 1;
+  const int stated = std::stoi(forest.out.substr(start, trees - start));
+  EXPECT_GT(stated, 0);
+  EXPECT_EQ(tree_lines, stated);
+  EXPECT_EQ(lines, stated + 5);  // {, description, "occluders": [, one line a tree, ], }
 }
 
 }  // namespace
