@@ -126,8 +126,8 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
     for (std::sregex_iterator o(rest.begin(), rest.end(), option_name); o != end; ++o)
       readme_options[(*m)[1]].insert(o->str());
   }
-  const std::set<std::string> commands = {"run",       "validate", "coverage", "sweep", "analyze",
-                                          "reproduce", "forest",   "schema",   "list"};
+  const std::set<std::string> commands = {"run",     "validate",  "coverage", "view",   "sweep",
+                                          "analyze", "reproduce", "forest",   "schema", "list"};
   std::set<std::string> in_readme;
   for (const auto& [command, options] : readme_options) in_readme.insert(command);
   EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
@@ -143,6 +143,7 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
                                                       {"I/N", "0/2"},
                                                       {"NAME", "x"},
                                                       {"GOLDEN.csv", "g.csv"},
+                                                      {"FILE", "page.html"},
                                                       {"PATH=VALUE", "seed=1"},
                                                       {"R[,R_MAX]", "1,2"},
                                                       {"x0,y0,x1,y1", "0,0,10,10"},

@@ -280,7 +280,9 @@ TEST(Sweep, BadSweepFilesNameTheFieldAndBadOverridesFailBeforeAnyTrial) {
     runSweep(bad, {dir, 1, {}, {}});
     FAIL() << "expected a ScenarioError";
   } catch (const spec::ScenarioError& e) {
-    EXPECT_EQ(e.field(), "planner.horizon");
+    EXPECT_EQ(e.file(), "s.json");  // the sweep's own field, and the scenario's in the message
+    EXPECT_EQ(e.field(), "axes[0].path");
+    EXPECT_NE(std::string(e.what()).find("planner.horizon"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(dir / "trials"));
   EXPECT_FALSE(fs::exists(dir / "sweep.json"));  // nothing is written before every config loads
