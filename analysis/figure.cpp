@@ -35,6 +35,36 @@ std::string points(const std::vector<Vec2>& ps) {
 
 }  // namespace
 
+std::vector<std::vector<Vec2>> dashPieces(const Line& line) {
+  double total = 0.0;
+  for (const double d : line.dash) total += d;
+  if (line.dash.empty() || total <= 0.0 || line.points.size() < 2) return {line.points};
+  std::vector<std::vector<Vec2>> pieces;
+  std::size_t phase = 0;            // index into dash: even = drawn, odd = skipped
+  double left = line.dash.front();  // px left in this phase
+  std::vector<Vec2> piece{line.points.front()};
+  for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
+    Vec2 a = line.points[i];
+    const Vec2 b = line.points[i + 1];
+    double length = (b - a).norm();
+    while (length > left) {  // the phase ends inside this segment
+      a += (b - a) * (left / length);
+      length -= left;
+      if (phase % 2 == 0) {
+        piece.push_back(a);
+        pieces.push_back(std::move(piece));
+      }
+      piece = {a};
+      phase = (phase + 1) % line.dash.size();
+      left = line.dash[phase];
+    }
+    left -= length;
+    if (phase % 2 == 0) piece.push_back(b);
+  }
+  if (phase % 2 == 0 && piece.size() > 1) pieces.push_back(std::move(piece));
+  return pieces;
+}
+
 std::string toSvg(const Figure& figure) {
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << figure.width << "\" height=\""
@@ -47,7 +77,13 @@ std::string toSvg(const Figure& figure) {
     } else if (const auto* l = std::get_if<Line>(&shape)) {
       svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\""
           << rgb(l->colour) << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\""
-          << l->width << "\" stroke-linejoin=\"round\"/>\n";
+          << l->width << "\" stroke-linejoin=\"round\"";
+      if (!l->dash.empty()) {
+        svg << " stroke-dasharray=\"";
+        for (std::size_t i = 0; i < l->dash.size(); ++i) svg << (i ? "," : "") << l->dash[i];
+        svg << '"';
+      }
+      svg << "/>\n";
     } else if (const auto* t = std::get_if<Label>(&shape)) {
       const char* anchor = t->anchor == Anchor::start    ? "start"
                            : t->anchor == Anchor::middle ? "middle"

@@ -25,7 +25,11 @@ struct Line {
   std::vector<Vec2> points;  // px
   double width = 1.0;        // px
   Colour colour;
+  std::vector<double> dash;  // px drawn, px skipped, … along the line; empty: solid
 };
+
+/// The pieces of `line` that are drawn under its dash pattern (the whole line when solid).
+std::vector<std::vector<Vec2>> dashPieces(const Line& line);
 
 enum class Anchor { start, middle, end };
 
