@@ -134,7 +134,7 @@ void addBodies(const world::WorldSnapshot& truth, const TargetTrails& trails, co
 }
 
 // What the title box and the names should not cover, in image pixels: the trees, the targets'
-// trails, the bodies' and estimates' markers.
+// trails, the UAVs' plans, the bodies' and estimates' markers.
 LabelSpace labelSpace(const SceneModel& model, const world::WorldSnapshot& truth,
                       std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,
                       const Viewport& v, ImageSize size, double band, const Sizes& z) {
@@ -152,6 +152,13 @@ LabelSpace labelSpace(const SceneModel& model, const world::WorldSnapshot& truth
     const std::vector<Vec2>& trail = trails.trail(t);
     for (std::size_t k = 0; k + 1 < trail.size(); ++k)
       space.addSegment(v.toPixel(trail[k]), v.toPixel(trail[k + 1]), internal::kCoverTrail);
+  }
+  for (std::size_t i = 0; i < beliefs.size() && i < truth.uavs.size(); ++i) {
+    Vec2 from = truth.uavs[i].position;
+    for (const Vec2& to : beliefs[i].planned_path) {
+      space.addSegment(v.toPixel(from), v.toPixel(to), internal::kCoverPlan);
+      from = to;
+    }
   }
   const auto marker = [&](const Vec2& at, double half) {
     const Vec2 px = v.toPixel(at);

@@ -1,6 +1,6 @@
 #pragma once
 // Where a frame's names and its title box may go: what they should not cover (other names, the
-// title box, the bodies' markers, the targets' trails, the trees), each in image pixels with a
+// title box, the bodies' markers, the targets' trails, the UAVs' plans, the trees), each in image pixels with a
 // weight, and the cost of a candidate box, the sum of the weights it touches. scene_builder.cpp
 // places the title box and each name at its first candidate of least cost: the first clear one
 // when there is one.
@@ -14,6 +14,7 @@ namespace canopy::render::internal {
 inline constexpr double kCoverName = 1000.0;   // a name or the title box: text over text
 inline constexpr double kCoverMarker = 100.0;  // a target's dot, a UAV's arrow, an estimate
 inline constexpr double kCoverTrail = 10.0;    // one segment of a target's trail
+inline constexpr double kCoverPlan = 5.0;      // one segment of a UAV's plan
 inline constexpr double kCoverTree = 1.0;      // a crown
 inline constexpr double kOffImage = 1e6;       // a box not wholly inside the image
 
