@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <string>
 #include <cmath>
 #include <cstdio>
 
@@ -87,7 +88,8 @@ Figure heatmapFigure(const Heatmap& map, const std::string& title) {
       const ConfidenceInterval& ci = cell->value.ci;
       const std::string interval = ci.bounded()
                                        ? "[" + fixed2(ci.low) + ", " + fixed2(ci.high) + "]"
-                                       : "no interval (n = 1)";
+                                       : "too few trials (n = " +
+                                             std::to_string(cell->value.trials) + ")";
       f.shapes.push_back(Label{Vec2(cx, y0 + 44), interval, 8, Anchor::middle, ink});
     }
   }
