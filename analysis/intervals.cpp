@@ -103,8 +103,8 @@ ConfidenceInterval boundedMeanInterval(const SampleMoments& sample, double lo, d
   const double u = std::clamp((sample.mean() - lo) / (hi - lo), 0.0, 1.0);
   if (u == 0.0 || u == 1.0) return {sample.mean(), sample.mean()};  // every value at that bound
   const double s_u = std::sqrt(sample.variance()) / (hi - lo);
-  const double eta = std::log(u / (1.0 - u));                      // η = logit(u)
-  const double se = s_u / (std::sqrt(n) * u * (1.0 - u));           // se_η = s_u / (√n u(1 − u))
+  const double eta = std::log(u / (1.0 - u));              // η = logit(u)
+  const double se = s_u / (std::sqrt(n) * u * (1.0 - u));  // se_η = s_u / (√n u(1 − u))
   const double half = studentTQuantile(0.975, sample.count() - 1) * se;
   const auto back = [&](double y) { return lo + (hi - lo) / (1.0 + std::exp(-y)); };  // σ
   return {back(eta - half), back(eta + half)};

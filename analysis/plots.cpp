@@ -204,7 +204,8 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
   const int facets = n ? facet_of.back() + 1 : 1;
   // A series' place among its panel's, which picks its line and marker.
   std::vector<int> slot(n);
-  for (int c = 0; c < n; ++c) slot[c] = c == 0 || facet_of[c] != facet_of[c - 1] ? 0 : slot[c - 1] + 1;
+  for (int c = 0; c < n; ++c)
+    slot[c] = c == 0 || facet_of[c] != facet_of[c - 1] ? 0 : slot[c - 1] + 1;
   const int panels = static_cast<int>(target_names.size()) * facets;
   const double left = 70, right = 30, panel_h = 170, panel_gap = 45, legend_row = 18;
   const double top = 75 + legend_row * static_cast<double>(n);  // legend above the panels

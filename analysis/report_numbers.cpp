@@ -19,7 +19,8 @@ std::string percentWithInterval(const Estimate& e) {
 std::string numberWithInterval(const Estimate& e, const char* format) {
   char value[32], low[32], high[32];
   std::snprintf(value, sizeof value, format, e.value);
-  if (!e.ci.bounded()) return std::string(value) + " [too few trials: " + std::to_string(e.trials) + "]";
+  if (!e.ci.bounded())
+    return std::string(value) + " [too few trials: " + std::to_string(e.trials) + "]";
   std::snprintf(low, sizeof low, format, e.ci.low);
   std::snprintf(high, sizeof high, format, e.ci.high);
   return std::string(value) + " [" + low + ", " + high + "]";

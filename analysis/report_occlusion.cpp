@@ -19,7 +19,6 @@ std::string decisionsOf(const ConfigStatistics& s) {
   return period.empty() ? "1" : num(std::strtod(period.c_str(), nullptr), "%g");
 }
 
-
 // "[0.62, 0.71]": the catch-up threshold's interval.
 std::string thresholdText(const CatchUpFinding& c) {
   const ConfidenceInterval t = c.threshold();
@@ -88,12 +87,12 @@ void writeReaction(std::ostream& md, const Findings& findings) {
   md << "|---|---|---:|---:|---:|---:|---|\n";
   for (const ReactionRow& row : findings.reaction) {
     const double paper = row.map == "a_priori" ? kPaperReactionAPriori : kPaperReactionDynamic;
-    md << "| " << row.decisions << " | " << row.map << " | " << timeWithInterval(row.onset)
-       << " | " << timeWithInterval(row.half) << " | " << numberWithInterval(row.while_hidden)
-       << " | " << paperReaction(row.map) << " | "
-       << (row.map != "none" ? timeVerdict(paper, row.onset)
-                             : verdictText(claimAbove(row.while_hidden.ci,
-                                                      {kKeepsObserving, kKeepsObserving})))
+    md << "| " << row.decisions << " | " << row.map << " | " << timeWithInterval(row.onset) << " | "
+       << timeWithInterval(row.half) << " | " << numberWithInterval(row.while_hidden) << " | "
+       << paperReaction(row.map) << " | "
+       << (row.map != "none"
+               ? timeVerdict(paper, row.onset)
+               : verdictText(claimAbove(row.while_hidden.ci, {kKeepsObserving, kKeepsObserving})))
        << " |\n";
   }
   md << "\n";
@@ -103,8 +102,8 @@ void writeWastedCoverageFinding(std::ostream& md, const Findings& findings) {
   md << "2. **A-priori and dynamic maps cut wasted coverage of occluded trajectories** — "
      << verdictOf(findings.wasted) << ":\n";
   for (const WastedCoverageCase& c : findings.wasted) {
-    md << "  - " << c.scenario << ", " << c.target << ", " << c.map << ", " << c.decisions
-       << ": " << numberWithInterval(c.with_map) << " vs " << numberWithInterval(c.without_map)
+    md << "  - " << c.scenario << ", " << c.target << ", " << c.map << ", " << c.decisions << ": "
+       << numberWithInterval(c.with_map) << " vs " << numberWithInterval(c.without_map)
        << " with no map — " << verdictText(c.verdict()) << "\n";
   }
   md << "\n";
@@ -121,8 +120,7 @@ void writeCatchUpFinding(std::ostream& md, const Findings& findings) {
   for (const CatchUpFinding& c : findings.catch_up) {
     md << "  - " << c.decisions << ": " << numberWithInterval(c.dynamic) << " (dynamic) vs "
        << numberWithInterval(c.a_priori) << " (a-priori) and " << numberWithInterval(c.none)
-       << " (no map); threshold " << thresholdText(c) << " — " << verdictText(c.verdict())
-       << "\n";
+       << " (no map); threshold " << thresholdText(c) << " — " << verdictText(c.verdict()) << "\n";
   }
   md << "\n";
 }
@@ -144,8 +142,7 @@ void writeReactionOrderFinding(std::ostream& md, const Findings& findings) {
     md << "  - " << period.label << ": the a-priori map reacts before I hides — "
        << (before ? verdictText(*before) : "cannot be checked")
        << "; the dynamic map later (half-way times) — "
-       << (later ? verdictText(*later) : "cannot be checked") << " (" << onsets
-       << ")\n";
+       << (later ? verdictText(*later) : "cannot be checked") << " (" << onsets << ")\n";
   }
   md << "\n";
 }
@@ -155,10 +152,9 @@ void writeFirstRankingFinding(std::ostream& md, const Findings& findings) {
   md << "5. **Occlusion Sharing, I's first occlusion: the maps ranked a-priori, dynamic, none** "
         "(mean coverage of I while hidden):\n";
   for (const FirstOcclusionRanking& r : findings.first_ranking) {
-    md << "  - " << r.decisions << ": "
-       << verdictText(r.verdict()) << " — " << numberWithInterval(r.a_priori) << " (a-priori), "
-       << numberWithInterval(r.dynamic) << " (dynamic), " << numberWithInterval(r.none)
-       << " (no map)\n";
+    md << "  - " << r.decisions << ": " << verdictText(r.verdict()) << " — "
+       << numberWithInterval(r.a_priori) << " (a-priori), " << numberWithInterval(r.dynamic)
+       << " (dynamic), " << numberWithInterval(r.none) << " (no map)\n";
   }
   md << "\n";
 }

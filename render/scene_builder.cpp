@@ -22,8 +22,8 @@ namespace {
 
 using internal::addLegend;
 using internal::addScaleBar;
-using internal::LabelSpace;
 using internal::kTextLineHeight;
+using internal::LabelSpace;
 using internal::legendEntries;
 using internal::nameOr;
 using internal::rectangle;
@@ -207,11 +207,11 @@ void addNames(const SceneModel& model, const world::WorldSnapshot& truth, const 
       const Vec2 above_right(g, -line - g), below_right(g, g), above_left(-g - width, -line - g),
           below_left(-g - width, g), far_above(-0.5 * width, -2.0 * line - g),
           far_below(-0.5 * width, line + g);
-      const std::vector<Vec2> ring =
-          above_first ? std::vector<Vec2>{above_right, above_left, below_right, below_left,
-                                          far_above, far_below}
-                      : std::vector<Vec2>{below_right, below_left, above_right, above_left,
-                                          far_below, far_above};
+      const std::vector<Vec2> ring = above_first
+                                         ? std::vector<Vec2>{above_right, above_left, below_right,
+                                                             below_left,  far_above,  far_below}
+                                         : std::vector<Vec2>{below_right, below_left, above_right,
+                                                             above_left,  far_below,  far_above};
       offsets.insert(offsets.end(), ring.begin(), ring.end());
     }
     std::vector<Aabb> boxes;

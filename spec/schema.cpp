@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <iterator>
-#include <set>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 
 #include "spec/loader.h"

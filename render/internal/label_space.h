@@ -1,9 +1,9 @@
 #pragma once
 // Where a frame's names and its title box may go: what they should not cover (other names, the
-// title box, the bodies' markers, the targets' trails, the UAVs' plans, the trees), each in image pixels with a
-// weight, and the cost of a candidate box, the sum of the weights it touches. scene_builder.cpp
-// places the title box and each name at its first candidate of least cost: the first clear one
-// when there is one.
+// title box, the bodies' markers, the targets' trails, the UAVs' plans, the trees), each in image
+// pixels with a weight, and the cost of a candidate box, the sum of the weights it touches.
+// scene_builder.cpp places the title box and each name at its first candidate of least cost: the
+// first clear one when there is one.
 #include <vector>
 
 #include "core/types.h"

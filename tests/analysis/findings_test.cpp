@@ -114,13 +114,12 @@ TEST(Findings, ReactionVerdictsFollowTheBootstrapIntervals) {
   je.analysis.configs = {
       withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=1.0"}, five_late),
       withTrials({"planner.occlusion_map=\"dynamic\"", "planner.replan_period=1.0"}, five_late),
-      withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=0.2"},
-                 five_early),
+      withTrials({"planner.occlusion_map=\"a_priori\"", "planner.replan_period=0.2"}, five_early),
       withTrials({"planner.occlusion_map=\"dynamic\"", "planner.replan_period=0.2"}, five_late)};
   const Findings f = computeFindings({je});
   const std::string second = decisionPeriods()[0].label, step = decisionPeriods()[1].label;
-  EXPECT_EQ(*reactsBeforeHiding(f.reaction, second), Verdict::fails);  // [2.6, 2.6] after 2.2
-  EXPECT_EQ(*reactsBeforeHiding(f.reaction, step), Verdict::holds);    // [2.0, 2.0] before 2.2
+  EXPECT_EQ(*reactsBeforeHiding(f.reaction, second), Verdict::fails);       // [2.6, 2.6] after 2.2
+  EXPECT_EQ(*reactsBeforeHiding(f.reaction, step), Verdict::holds);         // [2.0, 2.0] before 2.2
   EXPECT_EQ(*dynamicReactsLater(f.reaction, second), Verdict::consistent);  // the same times
   EXPECT_EQ(*dynamicReactsLater(f.reaction, step), Verdict::holds);         // 2.6 after 2.0
 }
@@ -171,14 +170,12 @@ TEST(Findings, FirstOcclusionRankingHoldsOnlyWhenEachStepSeparates) {
   const FirstOcclusionRanking seen{
       "", {0.77, {0.65, 0.88}}, {0.97, {0.94, 1.00}}, {1.0, {1.0, 1.0}}};
   EXPECT_EQ(seen.verdict(), Verdict::consistent);
-  EXPECT_EQ(
-      (FirstOcclusionRanking{"", {0.5, {0.4, 0.6}}, {0.8, {0.7, 0.9}}, {1.0, {0.95, 1.0}}}
-           .verdict()),
-      Verdict::holds);
-  EXPECT_EQ(
-      (FirstOcclusionRanking{"", {0.9, {0.85, 0.95}}, {0.5, {0.4, 0.6}}, {1.0, {0.95, 1.0}}}
-           .verdict()),
-      Verdict::fails);  // dynamic clearly below a-priori
+  EXPECT_EQ((FirstOcclusionRanking{"", {0.5, {0.4, 0.6}}, {0.8, {0.7, 0.9}}, {1.0, {0.95, 1.0}}}
+                 .verdict()),
+            Verdict::holds);
+  EXPECT_EQ((FirstOcclusionRanking{"", {0.9, {0.85, 0.95}}, {0.5, {0.4, 0.6}}, {1.0, {0.95, 1.0}}}
+                 .verdict()),
+            Verdict::fails);  // dynamic clearly below a-priori
 }
 
 TEST(Findings, NoExperimentsGiveNoFindings) {

@@ -53,10 +53,8 @@ struct Case {
 
 TEST(ReportNumbers, AFindingHoldsOnlyWhenEveryCaseHoldsElseEachVerdictIsCounted) {
   EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::holds}, {Verdict::holds}}), "holds");
-  EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::holds},
-                                        {Verdict::consistent},
-                                        {Verdict::consistent},
-                                        {Verdict::fails}}),
+  EXPECT_EQ(verdictOf(std::vector<Case>{
+                {Verdict::holds}, {Verdict::consistent}, {Verdict::consistent}, {Verdict::fails}}),
             "holds in 1, consistent in 2, fails in 1 of 4 cases");
   EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::consistent}, {Verdict::too_few_trials}}),
             "holds in 0, consistent in 1, too few trials in 1 of 2 cases");

@@ -306,7 +306,8 @@ TEST(BuildScene, NamesAndTitleStayClearOfMarkersTrailsAndTrees) {
   Fixture f;
   f.model.trees.clear();
   for (double x = -45; x <= 45; x += 9) {
-    for (double y = -25; y <= 25; y += 10) f.model.trees.push_back(world::TreeDef::disc({x, y}, 1.2));
+    for (double y = -25; y <= 25; y += 10)
+      f.model.trees.push_back(world::TreeDef::disc({x, y}, 1.2));
   }
   f.model.trees.push_back(world::TreeDef::disc({-3.5, 4.5}, 1.5));  // above right of T1's dot
   f.model.trees.push_back(world::TreeDef::disc({-47, 28}, 2.0));    // the title's usual corner
