@@ -35,13 +35,27 @@ std::string points(const std::vector<Vec2>& ps) {
 
 }  // namespace
 
+std::vector<double> dashPattern(Dash dash) {
+  switch (dash) {
+    case Dash::solid:
+      return {};
+    case Dash::dashed:
+      return {10, 5};
+    case Dash::dotted:
+      return {2, 4};
+    case Dash::dash_dot:
+      return {10, 4, 2, 4};
+  }
+  return {};
+}
+
 std::vector<std::vector<Vec2>> dashPieces(const Line& line) {
-  double total = 0.0;
-  for (const double d : line.dash) total += d;
-  if (line.dash.empty() || total <= 0.0 || line.points.size() < 2) return {line.points};
+  const std::vector<double> pattern = dashPattern(line.dash);
+  const std::size_t count = pattern.size();
+  if (count == 0 || line.points.size() < 2) return {line.points};
   std::vector<std::vector<Vec2>> pieces;
   std::size_t phase = 0;            // index into dash: even = drawn, odd = skipped
-  double left = line.dash.front();  // px left in this phase
+  double left = pattern.front();    // px left in this phase
   std::vector<Vec2> piece{line.points.front()};
   for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
     Vec2 a = line.points[i];
@@ -55,8 +69,8 @@ std::vector<std::vector<Vec2>> dashPieces(const Line& line) {
         pieces.push_back(std::move(piece));
       }
       piece = {a};
-      phase = (phase + 1) % line.dash.size();
-      left = line.dash[phase];
+      phase = (phase + 1) % count;
+      left = pattern[phase];
     }
     left -= length;
     if (phase % 2 == 0) piece.push_back(b);
@@ -78,9 +92,9 @@ std::string toSvg(const Figure& figure) {
       svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\""
           << rgb(l->colour) << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\""
           << l->width << "\" stroke-linejoin=\"round\"";
-      if (!l->dash.empty()) {
+      if (const std::vector<double> pattern = dashPattern(l->dash); !pattern.empty()) {
         svg << " stroke-dasharray=\"";
-        for (std::size_t i = 0; i < l->dash.size(); ++i) svg << (i ? "," : "") << l->dash[i];
+        for (std::size_t i = 0; i < pattern.size(); ++i) svg << (i ? "," : "") << pattern[i];
         svg << '"';
       }
       svg << "/>\n";

@@ -34,8 +34,12 @@ void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, d
   };
   for (int i = 0; i < kSegments; ++i) {
     const auto p = at(i), q = at(i + 1);
-    f.shapes.push_back(FilledPolygon{
-        {Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])}, fill});
+    // Built in place: GCC 12 reports moving a temporary Shape holding a polygon as reading the
+    // Line alternative's members uninitialised (-Wmaybe-uninitialized, a false positive).
+    f.shapes.emplace_back(
+        std::in_place_type<FilledPolygon>,
+        FilledPolygon{{Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])},
+                      fill});
   }
 }
 
@@ -163,7 +167,7 @@ namespace {
 // Each series of a panel is told apart by its line and marker as well as by its colour (for
 // readers and printers without colour, and so that equal curves do not hide each other: the
 // markers are staggered along the time axis).
-const std::vector<double> kDashes[kSeriesPerPanel] = {{}, {10, 5}, {2, 4}, {10, 4, 2, 4}};
+constexpr Dash kDashes[kSeriesPerPanel] = {Dash::solid, Dash::dashed, Dash::dotted, Dash::dash_dot};
 
 }  // namespace
 

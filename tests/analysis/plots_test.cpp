@@ -48,7 +48,7 @@ TEST(CoverageFigure, UpToFourConfigurationsShareAPanelEachWithItsOwnDashAndMarke
   const Drawn d = drawn(f);
   EXPECT_EQ(d.headings, 1);
   ASSERT_EQ(d.curves.size(), 4u);
-  std::set<std::vector<double>> dashes;
+  std::set<Dash> dashes;
   for (const Line* l : d.curves) dashes.insert(l->dash);
   EXPECT_EQ(dashes.size(), 4u);  // solid, dashed, dotted, dash-dot
   // Markers: one per legend row, and on each curve every 4th step (at least 4 steps apart, so
@@ -69,7 +69,7 @@ TEST(CoverageFigure, MoreThanFourConfigurationsAreFacetedEvenly) {
   ASSERT_EQ(d.curves.size(), 12u);
   // Within a panel (three curves in a row) the dashes differ.
   for (std::size_t panel = 0; panel < 4; ++panel) {
-    std::set<std::vector<double>> dashes;
+    std::set<Dash> dashes;
     for (std::size_t i = 0; i < 3; ++i) dashes.insert(d.curves[3 * panel + i]->dash);
     EXPECT_EQ(dashes.size(), 3u) << "panel " << panel;
   }
@@ -77,7 +77,7 @@ TEST(CoverageFigure, MoreThanFourConfigurationsAreFacetedEvenly) {
 
 TEST(Figure, DashPiecesCutALineByItsPattern) {
   // 0 → 30 px along x with 10 on, 5 off: drawn 0–10, 15–25, and 30 exactly ends an "on" run.
-  const Line line{{Vec2(0, 0), Vec2(20, 0), Vec2(30, 0)}, 1, {}, {10, 5}};
+  const Line line{{Vec2(0, 0), Vec2(20, 0), Vec2(30, 0)}, 1, {}, Dash::dashed};
   const auto pieces = dashPieces(line);
   ASSERT_EQ(pieces.size(), 2u);
   EXPECT_DOUBLE_EQ(pieces[0].front().x(), 0.0);
@@ -85,7 +85,7 @@ TEST(Figure, DashPiecesCutALineByItsPattern) {
   EXPECT_DOUBLE_EQ(pieces[1].front().x(), 15.0);
   EXPECT_DOUBLE_EQ(pieces[1][1].x(), 20.0);  // the corner is kept
   EXPECT_DOUBLE_EQ(pieces[1].back().x(), 25.0);
-  EXPECT_EQ(dashPieces(Line{{Vec2(0, 0), Vec2(5, 0)}, 1, {}, {}}).size(), 1u);  // solid
+  EXPECT_EQ(dashPieces(Line{{Vec2(0, 0), Vec2(5, 0)}, 1, {}, Dash::solid}).size(), 1u);
 }
 
 }  // namespace
