@@ -26,8 +26,8 @@ std::string numberWithInterval(const Estimate& e, const char* format = "%.2f");
 std::string paperVerdict(double paper, const Estimate& ours);
 
 /// A finding's verdict over its cases (each case's verdict(), analysis/findings.h): "holds" when
-/// every case holds, else the count of each verdict, "holds in 2, consistent in 3, fails in 1 of
-/// 6 cases" (verdicts with no case left out).
+/// every case holds, else the count of each verdict given, "holds in 2, consistent in 3, fails in
+/// 1 of 6 cases".
 template <typename Case>
 std::string verdictOf(const std::vector<Case>& cases) {
   int count[4] = {0, 0, 0, 0};
@@ -36,7 +36,7 @@ std::string verdictOf(const std::vector<Case>& cases) {
   std::string text;
   for (const Verdict v :
        {Verdict::holds, Verdict::consistent, Verdict::fails, Verdict::too_few_trials}) {
-    if (!count[static_cast<int>(v)] && !(v == Verdict::holds)) continue;
+    if (!count[static_cast<int>(v)]) continue;
     text += (text.empty() ? "" : ", ") + std::string(verdictText(v)) + " in " +
             std::to_string(count[static_cast<int>(v)]);
   }

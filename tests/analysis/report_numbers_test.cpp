@@ -57,7 +57,7 @@ TEST(ReportNumbers, AFindingHoldsOnlyWhenEveryCaseHoldsElseEachVerdictIsCounted)
                 {Verdict::holds}, {Verdict::consistent}, {Verdict::consistent}, {Verdict::fails}}),
             "holds in 1, consistent in 2, fails in 1 of 4 cases");
   EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::consistent}, {Verdict::too_few_trials}}),
-            "holds in 0, consistent in 1, too few trials in 1 of 2 cases");
+            "consistent in 1, too few trials in 1 of 2 cases");
 }
 
 }  // namespace
