@@ -35,6 +35,50 @@ std::string points(const std::vector<Vec2>& ps) {
 
 }  // namespace
 
+std::vector<double> dashPattern(Dash dash) {
+  switch (dash) {
+    case Dash::solid:
+      return {};
+    case Dash::dashed:
+      return {10, 5};
+    case Dash::dotted:
+      return {2, 4};
+    case Dash::dash_dot:
+      return {10, 4, 2, 4};
+  }
+  return {};
+}
+
+std::vector<std::vector<Vec2>> dashPieces(const Line& line) {
+  const std::vector<double> pattern = dashPattern(line.dash);
+  const std::size_t count = pattern.size();
+  if (count == 0 || line.points.size() < 2) return {line.points};
+  std::vector<std::vector<Vec2>> pieces;
+  std::size_t phase = 0;            // index into dash: even = drawn, odd = skipped
+  double left = pattern.front();    // px left in this phase
+  std::vector<Vec2> piece{line.points.front()};
+  for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
+    Vec2 a = line.points[i];
+    const Vec2 b = line.points[i + 1];
+    double length = (b - a).norm();
+    while (length > left) {  // the phase ends inside this segment
+      a += (b - a) * (left / length);
+      length -= left;
+      if (phase % 2 == 0) {
+        piece.push_back(a);
+        pieces.push_back(std::move(piece));
+      }
+      piece = {a};
+      phase = (phase + 1) % count;
+      left = pattern[phase];
+    }
+    left -= length;
+    if (phase % 2 == 0) piece.push_back(b);
+  }
+  if (phase % 2 == 0 && piece.size() > 1) pieces.push_back(std::move(piece));
+  return pieces;
+}
+
 std::string toSvg(const Figure& figure) {
   std::ostringstream svg;
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << figure.width << "\" height=\""
@@ -47,7 +91,13 @@ std::string toSvg(const Figure& figure) {
     } else if (const auto* l = std::get_if<Line>(&shape)) {
       svg << "<polyline points=\"" << points(l->points) << "\" fill=\"none\" stroke=\""
           << rgb(l->colour) << "\" stroke-opacity=\"" << l->colour.alpha << "\" stroke-width=\""
-          << l->width << "\" stroke-linejoin=\"round\"/>\n";
+          << l->width << "\" stroke-linejoin=\"round\"";
+      if (const std::vector<double> pattern = dashPattern(l->dash); !pattern.empty()) {
+        svg << " stroke-dasharray=\"";
+        for (std::size_t i = 0; i < pattern.size(); ++i) svg << (i ? "," : "") << pattern[i];
+        svg << '"';
+      }
+      svg << "/>\n";
     } else if (const auto* t = std::get_if<Label>(&shape)) {
       const char* anchor = t->anchor == Anchor::start    ? "start"
                            : t->anchor == Anchor::middle ? "middle"

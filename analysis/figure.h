@@ -21,11 +21,21 @@ struct FilledPolygon {
   Colour fill;
 };
 
+/// A line's pattern: solid, dashed (10 px on, 5 off), dotted (2 on, 4 off), dash-dot
+/// (10 on, 4 off, 2 on, 4 off).
+enum class Dash { solid, dashed, dotted, dash_dot };
+/// The pattern in px drawn, px skipped, …; empty for solid.
+std::vector<double> dashPattern(Dash dash);
+
 struct Line {
   std::vector<Vec2> points;  // px
   double width = 1.0;        // px
   Colour colour;
+  Dash dash = Dash::solid;
 };
+
+/// The pieces of `line` that are drawn under its dash pattern (the whole line when solid).
+std::vector<std::vector<Vec2>> dashPieces(const Line& line);
 
 enum class Anchor { start, middle, end };
 

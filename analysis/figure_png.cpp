@@ -36,11 +36,13 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
       polygon.fill = rgba(p->fill);
       render::add(scene.world, std::move(polygon));
     } else if (const auto* l = std::get_if<Line>(&shape)) {
-      render::Polyline line;
-      for (const Vec2& v : l->points) line.points.push_back(world(v));
-      line.width_px = l->width;
-      line.colour = rgba(l->colour);
-      render::add(scene.world, std::move(line));
+      for (const std::vector<Vec2>& piece : dashPieces(*l)) {
+        render::Polyline line;
+        for (const Vec2& v : piece) line.points.push_back(world(v));
+        line.width_px = l->width;
+        line.colour = rgba(l->colour);
+        render::add(scene.world, std::move(line));
+      }
     } else if (const auto* t = std::get_if<Label>(&shape)) {
       render::Text text;
       text.scale = t->size / 7.0;  // a capital letter is 7 font units high

@@ -1,6 +1,7 @@
 #include "analysis/findings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace canopy::analysis {
@@ -17,9 +18,7 @@ Estimate cooperation(const ConfigStatistics& s) {
     for (int c = 1; c < 5; ++c) in += columns[c] == m_star;
     per_trial.push_back(in / 4.0);
   }
-  Estimate e = meanOf(per_trial);
-  e.ci = clipped(e.ci, 0.0, 1.0);
-  return e;
+  return boundedMeanOf(per_trial, 0.0, 1.0);
 }
 
 const OcclusionStatistics* episode(const ConfigStatistics& s, int target) {
@@ -158,15 +157,56 @@ FailureSymptoms symptoms(const std::vector<ExperimentResult>& results,
     f.single_swarm_never = s && s->stateFraction("M*", 4) == 0.0;
   }
   const std::string every_second = decisionPeriods().front().label;
-  f.reaction_late = reactionOf(reaction, "a_priori", every_second) &&
-                    !reactsBeforeHiding(reaction, every_second);
+  const std::optional<Verdict> before = reactsBeforeHiding(reaction, every_second);
+  f.reaction_late = before && *before != Verdict::holds;
   for (const FirstOcclusionRanking& r : ranking) {
-    if (r.decisions == every_second) f.first_occlusion_unranked = !r.holds();
+    if (r.decisions == every_second) f.first_occlusion_unranked = r.verdict() != Verdict::holds;
   }
   return f;
 }
 
 }  // namespace
+
+const char* verdictText(Verdict v) {
+  switch (v) {
+    case Verdict::holds:
+      return "holds";
+    case Verdict::consistent:
+      return "consistent";
+    case Verdict::fails:
+      return "fails";
+    case Verdict::too_few_trials:
+      return "too few trials";
+  }
+  return "";
+}
+
+Verdict claimAbove(const ConfidenceInterval& above, const ConfidenceInterval& below) {
+  // An interval unbounded on both sides: no interval at all.
+  const auto none = [](const ConfidenceInterval& ci) {
+    return std::isinf(ci.low) && std::isinf(ci.high);
+  };
+  if (none(above) || none(below)) return Verdict::too_few_trials;
+  if (above.low > below.high) return Verdict::holds;
+  if (above.high < below.low) return Verdict::fails;
+  return Verdict::consistent;
+}
+
+Verdict allOf(std::initializer_list<Verdict> parts) {
+  for (const Verdict v : {Verdict::too_few_trials, Verdict::fails, Verdict::consistent}) {
+    if (std::find(parts.begin(), parts.end(), v) != parts.end()) return v;
+  }
+  return Verdict::holds;
+}
+
+ConfidenceInterval CatchUpFinding::threshold() const {
+  return {0.75 * a_priori.ci.low + 0.25 * none.ci.low,
+          0.75 * a_priori.ci.high + 0.25 * none.ci.high};
+}
+
+Verdict CatchUpFinding::verdict() const {
+  return allOf({claimAbove(none.ci, a_priori.ci), claimAbove(threshold(), dynamic.ci)});
+}
 
 const ExperimentResult* findExperiment(const std::vector<ExperimentResult>& results,
                                        const std::string& scenario) {
@@ -201,17 +241,20 @@ const ConfigStatistics* findOcclusionConfig(const ExperimentResult& r, const std
   return nullptr;
 }
 
-std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows,
-                                       const std::string& decisions) {
+std::optional<Verdict> dynamicReactsLater(const std::vector<ReactionRow>& rows,
+                                          const std::string& decisions) {
   const ReactionRow* a_priori = reactionOf(rows, "a_priori", decisions);
   const ReactionRow* dynamic = reactionOf(rows, "dynamic", decisions);
   if (!a_priori || !dynamic || !a_priori->half.time_s || !dynamic->half.time_s) return std::nullopt;
-  return *dynamic->half.time_s > *a_priori->half.time_s;
+  return claimAbove(dynamic->half.ci, a_priori->half.ci);
 }
 
-bool reactsBeforeHiding(const std::vector<ReactionRow>& rows, const std::string& decisions) {
+std::optional<Verdict> reactsBeforeHiding(const std::vector<ReactionRow>& rows,
+                                          const std::string& decisions) {
   const ReactionRow* a_priori = reactionOf(rows, "a_priori", decisions);
-  return a_priori && a_priori->onset.time_s && *a_priori->onset.time_s < kJointEffectHiding;
+  if (!a_priori) return std::nullopt;
+  if (!a_priori->onset.time_s) return Verdict::fails;  // never leaves I
+  return claimAbove({kJointEffectHiding, kJointEffectHiding}, a_priori->onset.ci);
 }
 
 Findings computeFindings(const std::vector<ExperimentResult>& results) {

@@ -2,6 +2,7 @@
 // The report's qualitative findings as values: each computed from the experiments into a small
 // struct with its numbers and its verdict, so that report.md only renders them (and tests check
 // the computation without reading prose).
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,12 +12,25 @@
 
 namespace canopy::analysis {
 
+/// How report.md decides a claim from the 95 % intervals printed beside it (docs/design-notes.md,
+/// "Verdicts"): it "holds" when the intervals separate in the claimed direction, "fails" when they
+/// separate the other way, and is "consistent" when they overlap (the trials cannot tell); a
+/// number with no interval (one trial, or too few agreeing trials) gives "too few trials".
+enum class Verdict { holds, consistent, fails, too_few_trials };
+const char* verdictText(Verdict v);
+/// The claim "`above` is greater than `below`": holds when above.low > below.high, fails when
+/// above.high < below.low. An interval end at ±∞ bounds nothing on that side.
+Verdict claimAbove(const ConfidenceInterval& above, const ConfidenceInterval& below);
+/// A claim made of several: too few trials when any part is, fails when any part fails, holds when
+/// every part holds, consistent otherwise.
+Verdict allOf(std::initializer_list<Verdict> parts);
+
 /// Finding 1: a longer horizon is more cooperative. Per scenario and planner, the mean over
 /// trials of the fraction of the Sankey columns L/4 … L spent in M*, at H = 5 and H = 1.
 struct HorizonCase {
   std::string scenario, planner;
   Estimate h5, h1;
-  bool holds() const { return h5.value > h1.value; }
+  Verdict verdict() const { return claimAbove(h5.ci, h1.ci); }
 };
 
 /// Finding 2: a map cuts the wasted coverage of an occluded trajectory (footprints on it while
@@ -24,18 +38,20 @@ struct HorizonCase {
 struct WastedCoverageCase {
   std::string scenario, target, map, decisions;  // decisions: DecisionPeriod::label
   Estimate with_map, without_map;
-  bool holds() const { return with_map.value < without_map.value; }
+  Verdict verdict() const { return claimAbove(without_map.ci, with_map.ci); }
 };
 
 /// Finding 3 (Occlusion Sharing, III): the dynamic map closes at least 75 % of the gap between
-/// no map and the a-priori map.
+/// no map and the a-priori map: there is a gap (no map above a-priori) and the dynamic map is
+/// below the threshold T = a_priori + 0.25 (none − a_priori) = 0.75 a_priori + 0.25 none, whose
+/// interval is taken as [0.75 a.low + 0.25 n.low, 0.75 a.high + 0.25 n.high] (each end from the
+/// same end of both intervals: wider than T's own interval, so the verdict errs towards
+/// "consistent").
 struct CatchUpFinding {
   std::string decisions;
   Estimate a_priori, dynamic, none;
-  bool holds() const {
-    return none.value > a_priori.value &&
-           dynamic.value - a_priori.value <= 0.25 * (none.value - a_priori.value);
-  }
+  ConfidenceInterval threshold() const;
+  Verdict verdict() const;
 };
 
 /// Finding 5 (Occlusion Sharing, I's 0.8 s occlusion): the maps ranked in the order of their
@@ -43,10 +59,10 @@ struct CatchUpFinding {
 struct FirstOcclusionRanking {
   std::string decisions;
   Estimate a_priori, dynamic, none;
-  bool holds() const { return a_priori.value < dynamic.value && dynamic.value < none.value; }
-  /// Each step of the ranking clear of sampling error: the lower map's interval lies below the
-  /// higher map's point estimate.
-  bool clear() const { return a_priori.ci.high < dynamic.value && dynamic.ci.high < none.value; }
+  /// Both steps of the ranking: dynamic above a-priori, and no map above dynamic.
+  Verdict verdict() const {
+    return allOf({claimAbove(dynamic.ci, a_priori.ci), claimAbove(none.ci, dynamic.ci)});
+  }
 };
 
 /// Joint Effect's reaction to I hiding, per map and decision period: the first time the mean
@@ -61,14 +77,17 @@ struct ReactionRow {
 /// is hidden, on average (docs/calibration.md's rule).
 inline constexpr double kKeepsObserving = 0.8;
 
-/// Finding 4: the dynamic map reacts later than the a-priori map (half-way times) at the given
-/// decision period; nothing when either map never gets there.
-std::optional<bool> dynamicReactsLater(const std::vector<ReactionRow>& rows,
-                                       const std::string& decisions);
+/// Finding 4: the dynamic map reacts later than the a-priori map (half-way times, by their
+/// bootstrap intervals) at the given decision period; nothing when either map never gets there.
+std::optional<Verdict> dynamicReactsLater(const std::vector<ReactionRow>& rows,
+                                          const std::string& decisions);
 
 /// The a-priori onset of a row set at one decision period is before I hides (2.2 s, the
-/// paper's interval), as the paper's ≈ 1.6 s is.
-bool reactsBeforeHiding(const std::vector<ReactionRow>& rows, const std::string& decisions);
+/// paper's interval), as the paper's ≈ 1.6 s is: holds when the onset's interval ends before
+/// 2.2 s, fails when it starts after 2.2 s (or the curve never crosses), consistent when it
+/// reaches 2.2 s; nothing when the decision period was not run.
+std::optional<Verdict> reactsBeforeHiding(const std::vector<ReactionRow>& rows,
+                                          const std::string& decisions);
 
 /// Symptoms behind the findings that fail, each with the numbers that show it.
 struct FailureSymptoms {

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "analysis/heatmap.h"
 #include "render/scene.h"
@@ -85,9 +86,9 @@ Figure heatmapFigure(const Heatmap& map, const std::string& title) {
       f.shapes.push_back(
           Label{Vec2(cx, y0 + 26), fixed2(cell->value.value), 12, Anchor::middle, ink});
       const ConfidenceInterval& ci = cell->value.ci;
-      const std::string interval = ci.bounded()
-                                       ? "[" + fixed2(ci.low) + ", " + fixed2(ci.high) + "]"
-                                       : "no interval (n = 1)";
+      const std::string interval =
+          ci.bounded() ? "[" + fixed2(ci.low) + ", " + fixed2(ci.high) + "]"
+                       : "too few trials (n = " + std::to_string(cell->value.trials) + ")";
       f.shapes.push_back(Label{Vec2(cx, y0 + 44), interval, 8, Anchor::middle, ink});
     }
   }

@@ -80,14 +80,34 @@ double SampleMoments::variance() const {
   return n_ < 2 ? 0.0 : m2_ / (n_ - 1);
 }
 
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// No interval: a single trial, or agreeing trials too few to say the spread is zero.
+bool tooFewTrials(const SampleMoments& sample) {
+  return sample.count() < 2 || (sample.variance() == 0.0 && sample.count() < kMinTrialsForPoint);
+}
+}  // namespace
+
 ConfidenceInterval meanInterval(const SampleMoments& sample) {
   const int n = sample.count();
-  if (n < 2) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    return {-kInf, kInf};
-  }
+  if (tooFewTrials(sample)) return {-kInf, kInf};
   const double half = studentTQuantile(0.975, n - 1) * std::sqrt(sample.variance() / n);
   return {sample.mean() - half, sample.mean() + half};
+}
+
+ConfidenceInterval boundedMeanInterval(const SampleMoments& sample, double lo, double hi) {
+  assert(hi > lo);
+  if (tooFewTrials(sample)) return {-kInf, kInf};
+  const double n = sample.count();
+  const double u = std::clamp((sample.mean() - lo) / (hi - lo), 0.0, 1.0);
+  if (u == 0.0 || u == 1.0) return {sample.mean(), sample.mean()};  // every value at that bound
+  const double s_u = std::sqrt(sample.variance()) / (hi - lo);
+  const double eta = std::log(u / (1.0 - u));              // η = logit(u)
+  const double se = s_u / (std::sqrt(n) * u * (1.0 - u));  // se_η = s_u / (√n u(1 − u))
+  const double half = studentTQuantile(0.975, sample.count() - 1) * se;
+  const auto back = [&](double y) { return lo + (hi - lo) / (1.0 + std::exp(-y)); };  // σ
+  return {back(eta - half), back(eta + half)};
 }
 
 ConfidenceInterval meanInterval(const std::vector<double>& values) {
@@ -100,13 +120,19 @@ ConfidenceInterval clipped(const ConfidenceInterval& ci, double lo, double hi) {
 }
 
 Estimate proportion(int k, int n) {
-  return {n ? static_cast<double>(k) / n : 0.0, wilsonInterval(k, n)};
+  return {n ? static_cast<double>(k) / n : 0.0, wilsonInterval(k, n), n};
 }
 
 Estimate meanOf(const std::vector<double>& values) {
   SampleMoments sample;
   for (const double x : values) sample.add(x);
-  return {sample.mean(), meanInterval(sample)};
+  return {sample.mean(), meanInterval(sample), sample.count()};
+}
+
+Estimate boundedMeanOf(const std::vector<double>& values, double lo, double hi) {
+  SampleMoments sample;
+  for (const double x : values) sample.add(x);
+  return {sample.mean(), boundedMeanInterval(sample, lo, hi), sample.count()};
 }
 
 }  // namespace canopy::analysis

@@ -1,6 +1,7 @@
 #pragma once
 // 95 % confidence intervals for the numbers `analyze` and the report print: the Wilson score
-// interval for a proportion k/n and the Student-t interval for a mean of independent trials.
+// interval for a proportion k/n, the Student-t interval for a mean of independent trials, and a
+// Student-t interval on the logit scale for a mean of values that lie in a known range.
 #include <vector>
 
 namespace canopy::analysis {
@@ -42,7 +43,13 @@ class SampleMoments {
   double m2_ = 0.0;  // Σ (x − mean)²
 };
 
-/// The 95 % Student-t interval of the mean, mean ± t_{0.975, n−1} · s / √n; unbounded for n < 2.
+/// Fewer trials than this cannot give a zero-width interval: two or three agreeing trials say
+/// little about the spread, so such an interval is refused ("too few trials") rather than printed
+/// as a point.
+constexpr int kMinTrialsForPoint = 5;
+
+/// The 95 % Student-t interval of the mean, mean ± t_{0.975, n−1} · s / √n; unbounded for n < 2
+/// and for s = 0 with n < kMinTrialsForPoint.
 ConfidenceInterval meanInterval(const SampleMoments& sample);
 ConfidenceInterval meanInterval(const std::vector<double>& values);
 
@@ -50,14 +57,26 @@ ConfidenceInterval meanInterval(const std::vector<double>& values);
 /// an unbounded interval stays unbounded, so that "no interval" remains visible.
 ConfidenceInterval clipped(const ConfidenceInterval& ci, double lo, double hi);
 
-/// A number and its 95 % interval.
+/// The 95 % interval of the mean of values known to lie in [lo, hi] (a fraction of columns, the
+/// footprints of N UAVs on a target), always inside (lo, hi): Student t on the logit scale by the
+/// delta method. With u = (x̄ − lo)/(hi − lo), s_u = s/(hi − lo) and σ(y) = 1/(1 + e^{−y}):
+///   η = ln(u/(1 − u)),  se_η = s_u / (√n · u(1 − u)),
+///   [lo + (hi − lo) · σ(η − t_{0.975,n−1} se_η),  lo + (hi − lo) · σ(η + t_{0.975,n−1} se_η)].
+/// Every value at one bound gives that point (with n ≥ kMinTrialsForPoint); unbounded as
+/// meanInterval is (n < 2, or s = 0 with n < kMinTrialsForPoint).
+ConfidenceInterval boundedMeanInterval(const SampleMoments& sample, double lo, double hi);
+
+/// A number, its 95 % interval, and the trials behind it.
 struct Estimate {
   double value = 0.0;
   ConfidenceInterval ci;
+  int trials = 0;
 };
 /// k/n with its Wilson interval (value 0 for n = 0).
 Estimate proportion(int k, int n);
 /// The mean of `values` with its Student-t interval.
 Estimate meanOf(const std::vector<double>& values);
+/// The mean of `values`, each in [lo, hi], with boundedMeanInterval.
+Estimate boundedMeanOf(const std::vector<double>& values, double lo, double hi);
 
 }  // namespace canopy::analysis

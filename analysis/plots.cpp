@@ -34,8 +34,12 @@ void addBand(Figure& f, double x0, double a0, double b0, double x1, double a1, d
   };
   for (int i = 0; i < kSegments; ++i) {
     const auto p = at(i), q = at(i + 1);
-    f.shapes.push_back(FilledPolygon{
-        {Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])}, fill});
+    // Built in place: GCC 12 reports moving a temporary Shape holding a polygon as reading the
+    // Line alternative's members uninitialised (-Wmaybe-uninitialized, a false positive).
+    f.shapes.emplace_back(
+        std::in_place_type<FilledPolygon>,
+        FilledPolygon{{Vec2(p[0], p[1]), Vec2(q[0], q[1]), Vec2(q[0], q[2]), Vec2(p[0], p[2])},
+                      fill});
   }
 }
 
@@ -158,22 +162,73 @@ Figure sankeyFigure(const ConfigStatistics& stats, const std::string& title) {
   return f;
 }
 
+namespace {
+
+// Each series of a panel is told apart by its line and marker as well as by its colour (for
+// readers and printers without colour, and so that equal curves do not hide each other: the
+// markers are staggered along the time axis).
+constexpr Dash kDashes[kSeriesPerPanel] = {Dash::solid, Dash::dashed, Dash::dotted, Dash::dash_dot};
+
+}  // namespace
+
+std::vector<Vec2> seriesMarker(int index, const Vec2& at, double r) {
+  switch (index % kSeriesPerPanel) {
+    case 0: {  // disc (an octagon)
+      std::vector<Vec2> ring;
+      for (int i = 0; i < 8; ++i) {
+        const double a = (i + 0.5) * std::acos(-1.0) / 4.0;
+        ring.push_back(at + r * Vec2(std::cos(a), std::sin(a)));
+      }
+      return ring;
+    }
+    case 1:  // square
+      return {at + Vec2(-r, -r), at + Vec2(r, -r), at + Vec2(r, r), at + Vec2(-r, r)};
+    case 2:  // triangle, point up
+      return {at + Vec2(0, -1.2 * r), at + Vec2(1.1 * r, 0.8 * r), at + Vec2(-1.1 * r, 0.8 * r)};
+    default:  // diamond
+      return {at + Vec2(0, -1.3 * r), at + Vec2(1.3 * r, 0), at + Vec2(0, 1.3 * r),
+              at + Vec2(-1.3 * r, 0)};
+  }
+}
+
+std::vector<int> coverageFacets(int configs) {
+  const int facets = std::max(1, (configs + kSeriesPerPanel - 1) / kSeriesPerPanel);
+  std::vector<int> facet_of(configs);
+  // Balanced: 6 configurations → 3 + 3, not 4 + 2.
+  for (int c = 0; c < configs; ++c) facet_of[c] = c * facets / std::max(configs, 1);
+  return facet_of;
+}
+
 Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
                       const std::vector<std::string>& labels,
                       const std::vector<std::string>& target_names, const std::string& title) {
   Figure f;
-  const int panels = static_cast<int>(target_names.size());
+  const int n = static_cast<int>(configs.size());
+  const std::vector<int> facet_of = coverageFacets(n);
+  const int facets = n ? facet_of.back() + 1 : 1;
+  // A series' place among its panel's, which picks its line and marker.
+  std::vector<int> slot(n);
+  for (int c = 0; c < n; ++c)
+    slot[c] = c == 0 || facet_of[c] != facet_of[c - 1] ? 0 : slot[c - 1] + 1;
+  const int panels = static_cast<int>(target_names.size()) * facets;
   const double left = 70, right = 30, panel_h = 170, panel_gap = 45, legend_row = 18;
-  const double top =
-      75 + legend_row * static_cast<double>(configs.size());  // legend above the panels
+  const double top = 75 + legend_row * static_cast<double>(n);  // legend above the panels
   f.width = 900;
   f.height = static_cast<int>(top + panels * (panel_h + panel_gap) + 20);
   f.shapes.push_back(Label{Vec2(f.width / 2.0, 30), title, 14, Anchor::middle, kInk});
-  for (std::size_t c = 0; c < configs.size(); ++c) {  // one legend row per configuration
+  const auto styled = [&](int c, std::vector<Vec2> points, double width) {
+    return Line{std::move(points), width, seriesColour(c), kDashes[slot[c]]};
+  };
+  const auto marker = [&](int c, const Vec2& at) {
+    return FilledPolygon{seriesMarker(slot[c], at, 4.0), seriesColour(c)};
+  };
+  for (int c = 0; c < n; ++c) {  // one legend row per configuration
     const double ly = 55 + legend_row * static_cast<double>(c);
-    f.shapes.push_back(
-        Line{{Vec2(left, ly), Vec2(left + 30, ly)}, 3, seriesColour(static_cast<int>(c))});
-    f.shapes.push_back(Label{Vec2(left + 38, ly + 5), labels[c], 10, Anchor::start, kInk});
+    f.shapes.push_back(styled(c, {Vec2(left, ly), Vec2(left + 40, ly)}, 2.5));
+    f.shapes.push_back(marker(c, Vec2(left + 20, ly)));
+    std::string text = labels[c];
+    if (facets > 1) text += "  (panel " + std::to_string(facet_of[c] + 1) + ")";
+    f.shapes.push_back(Label{Vec2(left + 48, ly + 5), text, 10, Anchor::start, kInk});
   }
   f.shapes.push_back(FilledPolygon{{Vec2(f.width - 250.0, 48), Vec2(f.width - 220.0, 48),
                                     Vec2(f.width - 220.0, 62), Vec2(f.width - 250.0, 62)},
@@ -193,9 +248,13 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
   }
   y_max = std::ceil(y_max * 2.0) / 2.0;  // to the next 0.5
   const double plot_w = f.width - left - right;
+  // About ten markers per curve, each series' shifted by a quarter of the spacing (at least one
+  // step), so that no two series of a panel put a marker at the same time.
+  const int marker_every = std::max(kSeriesPerPanel, steps / 10);
 
-  for (int t = 0; t < panels; ++t) {
-    const double y0 = top + t * (panel_h + panel_gap);  // panel's top
+  for (int p = 0; p < panels; ++p) {
+    const int t = p / facets, facet = p % facets;
+    const double y0 = top + p * (panel_h + panel_gap);  // panel's top
     auto px = [&](double time, double value) {
       return Vec2(left + plot_w * time / t_end, y0 + panel_h * (1.0 - value / y_max));
     };
@@ -216,19 +275,22 @@ Figure coverageFigure(const std::vector<const ConfigStatistics*>& configs,
       f.shapes.push_back(Label{px(time, 0) + Vec2(0, 16), text, 9, Anchor::middle, kInk});
     }
     f.shapes.push_back(Line{{px(0, y_max), px(0, 0), px(t_end, 0)}, 1.5, kInk});
-    f.shapes.push_back(Label{Vec2(left, y0 - 8),
-                             "trajectory " + target_names[t] + ": mean number of footprints", 10,
-                             Anchor::start, kInk});
-    for (std::size_t c = 0; c < configs.size(); ++c) {  // bands first, so every line stays on top
-      Colour band = seriesColour(static_cast<int>(c));
+    std::string heading = "trajectory " + target_names[t] + ": mean number of footprints";
+    if (facets > 1) heading += " (panel " + std::to_string(facet + 1) + ")";
+    f.shapes.push_back(Label{Vec2(left, y0 - 8), heading, 10, Anchor::start, kInk});
+    for (int c = 0; c < n; ++c) {  // bands first, so every line stays on top
+      if (facet_of[c] != facet) continue;
+      Colour band = seriesColour(c);
       band.alpha = 0.18;
       addIntervalBand(f, configs[c]->coverage_ci[t], dt, y_max, px, band);
     }
-    for (std::size_t c = 0; c < configs.size(); ++c) {
-      Line curve{{}, 2.5, seriesColour(static_cast<int>(c))};
-      for (int k = 0; k < steps; ++k)
-        curve.points.push_back(px(k * dt, configs[c]->coverage[t][k]));
-      f.shapes.push_back(std::move(curve));
+    for (int c = 0; c < n; ++c) {
+      if (facet_of[c] != facet) continue;
+      std::vector<Vec2> curve;
+      for (int k = 0; k < steps; ++k) curve.push_back(px(k * dt, configs[c]->coverage[t][k]));
+      f.shapes.push_back(styled(c, curve, 2.5));
+      for (int k = slot[c] * marker_every / kSeriesPerPanel; k < steps; k += marker_every)
+        f.shapes.push_back(marker(c, curve[k]));
     }
   }
   return f;

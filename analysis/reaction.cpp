@@ -52,7 +52,10 @@ CrossingTime firstCrossing(const ConfigStatistics& s, int target, double level,
     t = crossing(s, target, level, chosen);
   }
   std::sort(times.begin(), times.end());
-  result.ci = {nearestRank(times, 0.025), nearestRank(times, 0.975)};
+  const ConfidenceInterval ci{nearestRank(times, 0.025), nearestRank(times, 0.975)};
+  // Agreeing trials, too few to say the spread is nil: no interval ("too few trials").
+  if (ci.low == ci.high && n < kMinTrialsForPoint) return result;
+  result.ci = ci;
   return result;
 }
 

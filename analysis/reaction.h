@@ -14,7 +14,8 @@ struct CrossingTime {
   std::optional<double> time_s;  // none: the mean curve never falls below the level
   /// Percentiles 2.5 and 97.5 of the crossing time over resamples of the trials; a resample
   /// whose mean never falls below the level counts as +∞, so high = +∞ when more than 2.5 % of
-  /// them never do. Unbounded (±∞) with fewer than two trials.
+  /// them never do. Unbounded (±∞) with fewer than two trials, and when fewer than
+  /// kMinTrialsForPoint trials give a zero-width interval.
   ConfidenceInterval ci;
   bool contains(double t) const { return ci.contains(t); }
 };

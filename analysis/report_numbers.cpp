@@ -7,8 +7,8 @@ namespace canopy::analysis {
 
 std::string percentWithInterval(const Estimate& e) {
   char text[64];
-  if (!e.ci.bounded()) {  // a mean of per-trial fractions over a single trial
-    std::snprintf(text, sizeof text, "%.1f %% [no interval: 1 trial]", 100.0 * e.value);
+  if (!e.ci.bounded()) {  // one trial, or fewer than kMinTrialsForPoint agreeing ones
+    std::snprintf(text, sizeof text, "%.1f %% [too few trials: %d]", 100.0 * e.value, e.trials);
     return text;
   }
   std::snprintf(text, sizeof text, "%.1f %% [%.1f, %.1f]", 100.0 * e.value, 100.0 * e.ci.low,
@@ -19,7 +19,8 @@ std::string percentWithInterval(const Estimate& e) {
 std::string numberWithInterval(const Estimate& e, const char* format) {
   char value[32], low[32], high[32];
   std::snprintf(value, sizeof value, format, e.value);
-  if (!e.ci.bounded()) return std::string(value) + " [no interval: 1 trial]";
+  if (!e.ci.bounded())
+    return std::string(value) + " [too few trials: " + std::to_string(e.trials) + "]";
   std::snprintf(low, sizeof low, format, e.ci.low);
   std::snprintf(high, sizeof high, format, e.ci.high);
   return std::string(value) + " [" + low + ", " + high + "]";
@@ -53,7 +54,7 @@ std::string secondsText(double t) {
 std::string timeWithInterval(const CrossingTime& t) {
   if (!t.time_s) return "never";
   std::string text = secondsText(*t.time_s) + " s";
-  if (!std::isfinite(t.ci.low)) return text + " [no interval: 1 trial]";
+  if (!std::isfinite(t.ci.low)) return text + " [too few trials]";
   return text + " [" + secondsText(t.ci.low) + ", " + secondsText(t.ci.high) + "]";
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/findings.h"
 #include "analysis/intervals.h"
 #include "analysis/reaction.h"
 
@@ -11,12 +12,12 @@ namespace canopy::analysis {
 /// The paper ran 40 trials per configuration; fewer are flagged in the report.
 constexpr int kPaperTrials = 40;
 
-/// "72.5 % [57.2, 83.9]": a proportion in percent with its interval in percent ("… [no interval:
-/// 1 trial]" when unbounded).
+/// "72.5 % [57.2, 83.9]": a proportion in percent with its interval in percent ("… [too few
+/// trials: 2]" when there is none).
 std::string percentWithInterval(const Estimate& e);
 
-/// "0.99 [0.95, 1.03]" with `format` for each number; "0.99 [no interval: 1 trial]" when the
-/// interval is unbounded.
+/// "0.99 [0.95, 1.00]" with `format` for each number; "0.99 [too few trials: 2]" when there is
+/// no interval.
 std::string numberWithInterval(const Estimate& e, const char* format = "%.2f");
 
 /// Whether the paper's proportion lies inside our interval, and how far it is from our value in
@@ -24,13 +25,22 @@ std::string numberWithInterval(const Estimate& e, const char* format = "%.2f");
 /// "no; Δ −27.5 pts (beyond ±15)", Δ = paper − ours.
 std::string paperVerdict(double paper, const Estimate& ours);
 
-/// "holds" when every case holds(), else "holds in k of n cases".
+/// A finding's verdict over its cases (each case's verdict(), analysis/findings.h): "holds" when
+/// every case holds, else the count of each verdict given, "holds in 2, consistent in 3, fails in
+/// 1 of 6 cases".
 template <typename Case>
 std::string verdictOf(const std::vector<Case>& cases) {
-  long holds = 0;
-  for (const Case& c : cases) holds += c.holds();
-  if (!cases.empty() && holds == static_cast<long>(cases.size())) return "holds";
-  return "holds in " + std::to_string(holds) + " of " + std::to_string(cases.size()) + " cases";
+  int count[4] = {0, 0, 0, 0};
+  for (const Case& c : cases) ++count[static_cast<int>(c.verdict())];
+  if (!cases.empty() && count[0] == static_cast<int>(cases.size())) return "holds";
+  std::string text;
+  for (const Verdict v :
+       {Verdict::holds, Verdict::consistent, Verdict::fails, Verdict::too_few_trials}) {
+    if (!count[static_cast<int>(v)]) continue;
+    text += (text.empty() ? "" : ", ") + std::string(verdictText(v)) + " in " +
+            std::to_string(count[static_cast<int>(v)]);
+  }
+  return text + " of " + std::to_string(cases.size()) + " cases";
 }
 
 /// "1.8 s [1.6, 2.0]"; "never" when the mean curve never crosses; an interval end of +∞ reads

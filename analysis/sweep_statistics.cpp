@@ -43,9 +43,7 @@ std::vector<double> ConfigStatistics::trialCoverageOver(int target, const Interv
 }
 
 Estimate ConfigStatistics::coverageOver(int target, const Interval& steps) const {
-  Estimate e = meanOf(trialCoverageOver(target, steps));
-  e.ci = clipped(e.ci, 0.0, uavs);
-  return e;
+  return boundedMeanOf(trialCoverageOver(target, steps), 0.0, std::max(uavs, 1));
 }
 
 std::string ConfigStatistics::axisValue(const std::string& path) const {
@@ -141,7 +139,7 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
   for (int k = 0; k < steps; ++k) {
     for (int t = 0; t < targets; ++t) {
       stats.coverage[t][k] = coverage[t][k].mean();
-      stats.coverage_ci[t][k] = clipped(meanInterval(coverage[t][k]), 0.0, stats.uavs);
+      stats.coverage_ci[t][k] = boundedMeanInterval(coverage[t][k], 0.0, std::max(stats.uavs, 1));
     }
     stats.ospa[k] = ospa[k].mean();
     stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, kInf);

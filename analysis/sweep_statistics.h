@@ -51,8 +51,8 @@ struct ConfigStatistics {
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
   std::vector<double> ospa;                   // [k]: mean OSPA (m)
   std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
-  // 95 % t intervals, clipped to what the quantity can take: [0, uavs] footprints, OSPA and
-  // tr(P) ≥ 0.
+  // 95 % intervals inside what the quantity can take: coverage in [0, uavs] footprints by
+  // boundedMeanInterval (t on the logit scale); OSPA and tr(P) ≥ 0, t intervals clipped at 0.
   std::vector<std::vector<ConfidenceInterval>> coverage_ci;  // [t][k]
   std::vector<ConfidenceInterval> ospa_ci, trace_ci;         // [k] (m, m²)
 
@@ -74,7 +74,7 @@ struct ConfigStatistics {
   int reachedBy(const std::string& state, int step) const;
   /// Per trial, the mean number of footprints on target t over the inclusive steps of `steps`.
   std::vector<double> trialCoverageOver(int target, const Interval& steps) const;
-  /// Their mean over trials with its 95 % interval (clipped to [0, uavs]).
+  /// Their mean over trials with its 95 % interval inside [0, uavs] (boundedMeanOf).
   Estimate coverageOver(int target, const Interval& steps) const;
 };
 

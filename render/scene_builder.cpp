@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/internal/label_space.h"
 #include "render/internal/overlay.h"
 #include "render/internal/scene_sizes.h"
 #include "render/internal/text.h"
@@ -21,8 +22,8 @@ namespace {
 
 using internal::addLegend;
 using internal::addScaleBar;
-using internal::addTimeStamp;
 using internal::kTextLineHeight;
+using internal::LabelSpace;
 using internal::legendEntries;
 using internal::nameOr;
 using internal::rectangle;
@@ -115,8 +116,7 @@ void addEstimates(std::span<const agents::AgentBelief> beliefs, const Sizes& z,
   }
 }
 
-void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
-               const TargetTrails& trails, const Viewport& v, const Sizes& z, bool labels,
+void addBodies(const world::WorldSnapshot& truth, const TargetTrails& trails, const Sizes& z,
                std::vector<Primitive>& out) {
   for (int t = 0; t < static_cast<int>(truth.targets.size()); ++t) {
     const std::vector<Vec2>& trail = trails.trail(t);
@@ -131,48 +131,100 @@ void addBodies(const SceneModel& model, const world::WorldSnapshot& truth,
     add(out, Marker{uav.position, MarkerShape::arrow, 18.0 * z.u, uav.yaw,
                     uavColour(static_cast<int>(i)), palette::kTarget, 1.2 * z.u});
   }
-  if (!labels) return;
-  // Names last, on top of every symbol. Each tries, in order, the places around its symbol
-  // (targets first above right, UAVs below right, so that a UAV over its target hides neither)
-  // and takes the first whose box overlaps no name placed before it; the first place if none.
+}
+
+// What the title box and the names should not cover, in image pixels: the trees, the targets'
+// trails, the UAVs' plans, the bodies' and estimates' markers.
+LabelSpace labelSpace(const SceneModel& model, const world::WorldSnapshot& truth,
+                      std::span<const agents::AgentBelief> beliefs, const TargetTrails& trails,
+                      const Viewport& v, ImageSize size, double band, const Sizes& z) {
+  LabelSpace space(Aabb{Vec2::Zero(), Vec2(size.width, size.height - band)});
+  for (const world::TreeDef& tree : model.trees) {
+    if (tree.shape == world::TreeShape::disc) {
+      space.addDisc(v.toPixel(tree.centre), tree.radius / v.pixel_size, internal::kCoverTree);
+    } else {
+      std::vector<Vec2> px;
+      for (const Vec2& p : tree.vertices) px.push_back(v.toPixel(p));
+      space.addPolygon(std::move(px), internal::kCoverTree);
+    }
+  }
+  for (int t = 0; t < static_cast<int>(truth.targets.size()); ++t) {
+    const std::vector<Vec2>& trail = trails.trail(t);
+    for (std::size_t k = 0; k + 1 < trail.size(); ++k)
+      space.addSegment(v.toPixel(trail[k]), v.toPixel(trail[k + 1]), internal::kCoverTrail);
+  }
+  for (std::size_t i = 0; i < beliefs.size() && i < truth.uavs.size(); ++i) {
+    Vec2 from = truth.uavs[i].position;
+    for (const Vec2& to : beliefs[i].planned_path) {
+      space.addSegment(v.toPixel(from), v.toPixel(to), internal::kCoverPlan);
+      from = to;
+    }
+  }
+  const auto marker = [&](const Vec2& at, double half) {
+    const Vec2 px = v.toPixel(at);
+    space.addBox({px - Vec2(half, half), px + Vec2(half, half)}, internal::kCoverMarker);
+  };
+  for (const world::TargetState& target : truth.targets) marker(target.position, 6.5 * z.u);
+  for (const world::UavState& uav : truth.uavs) marker(uav.position, 9.0 * z.u);
+  for (const agents::AgentBelief& belief : beliefs) {
+    for (const agents::TrackEstimate& track : belief.tracks)
+      marker(track.belief.x.head<2>(), 5.0 * z.u);
+  }
+  return space;
+}
+
+// The title box at the first corner of the map (top left, top right, then down either edge)
+// that covers nothing in `space`, or the one that covers least; it joins `space` as a name.
+void placeTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, ImageSize size,
+                    double band, const Sizes& z, LabelSpace& space, std::vector<Primitive>& out) {
+  const std::string text = internal::timeStampText(model, truth);
+  const Vec2 box = internal::timeStampSize(text, z);
+  const double pad = 4.0 * z.u;
+  std::vector<Aabb> candidates;
+  const double left = pad, right = size.width - pad - box.x();
+  for (double y = pad; y + box.y() <= size.height - band - pad; y += box.y() + pad) {
+    candidates.push_back({Vec2(left, y), Vec2(left, y) + box});
+    if (right > left) candidates.push_back({Vec2(right, y), Vec2(right, y) + box});
+  }
+  if (candidates.empty()) candidates.push_back({Vec2(pad, pad), Vec2(pad, pad) + box});
+  const Aabb chosen = candidates[space.best(candidates)];
+  space.addBox(chosen, internal::kCoverName);
+  internal::addTimeStamp(text, chosen.lo, z, out);
+}
+
+// Names last, on top of every symbol. Each tries the places around its symbol, near ones first
+// (targets first above right, UAVs below right, so that a UAV over its target hides neither),
+// and takes the first that covers nothing in `space` (other names, the title box, markers,
+// trails, trees), or the one that covers least.
+void addNames(const SceneModel& model, const world::WorldSnapshot& truth, const Viewport& v,
+              const Sizes& z, LabelSpace& space, std::vector<Primitive>& out) {
   const double line = kTextLineHeight * z.text;
-  std::vector<Aabb> placed_boxes;  // px, relative to the image, of the names placed so far
-  const auto place = [&](const Vec2& at, const std::string& name,
-                         const std::vector<Vec2>& offsets) {
+  const auto place = [&](const Vec2& at, const std::string& name, double gap, bool above_first) {
     const Vec2 px = v.toPixel(at);
     const double width = textWidth(name) * z.text;
-    Vec2 chosen = offsets.front();
-    for (const Vec2& offset : offsets) {
-      const Aabb box{px + offset, px + offset + Vec2(width, line)};
-      const bool clear = std::none_of(placed_boxes.begin(), placed_boxes.end(), [&](const Aabb& b) {
-        return box.lo.x() < b.hi.x() && b.lo.x() < box.hi.x() && box.lo.y() < b.hi.y() &&
-               b.lo.y() < box.hi.y();
-      });
-      if (clear) {
-        chosen = offset;
-        break;
-      }
+    std::vector<Vec2> offsets;
+    for (const double g : {gap, 2.5 * gap, 4.5 * gap}) {
+      const Vec2 above_right(g, -line - g), below_right(g, g), above_left(-g - width, -line - g),
+          below_left(-g - width, g), far_above(-0.5 * width, -2.0 * line - g),
+          far_below(-0.5 * width, line + g);
+      const std::vector<Vec2> ring = above_first
+                                         ? std::vector<Vec2>{above_right, above_left, below_right,
+                                                             below_left,  far_above,  far_below}
+                                         : std::vector<Vec2>{below_right, below_left, above_right,
+                                                             above_left,  far_below,  far_above};
+      offsets.insert(offsets.end(), ring.begin(), ring.end());
     }
-    placed_boxes.push_back({px + chosen, px + chosen + Vec2(width, line)});
-    add(out, Text{at, chosen, name, z.text, palette::kText});
+    std::vector<Aabb> boxes;
+    for (const Vec2& offset : offsets)
+      boxes.push_back({px + offset, px + offset + Vec2(width, line)});
+    const std::size_t chosen = space.best(boxes);
+    space.addBox(boxes[chosen], internal::kCoverName);
+    add(out, Text{at, offsets[chosen], name, z.text, palette::kText});
   };
-  const auto around = [&](double gap, bool above_first, double width) {
-    const Vec2 above_right(gap, -line - gap), below_right(gap, gap),
-        above_left(-gap - width, -line - gap), below_left(-gap - width, gap),
-        far_above(-0.5 * width, -2.0 * line - gap), far_below(-0.5 * width, line + gap);
-    return above_first ? std::vector<Vec2>{above_right, above_left, below_right,
-                                           below_left,  far_above,  far_below}
-                       : std::vector<Vec2>{below_right, below_left, above_right,
-                                           above_left,  far_below,  far_above};
-  };
-  for (std::size_t t = 0; t < truth.targets.size(); ++t) {
-    const std::string name = nameOr(model.target_names, t, "T");
-    place(truth.targets[t].position, name, around(6.0 * z.u, true, textWidth(name) * z.text));
-  }
-  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
-    const std::string name = nameOr(model.uav_names, i, "uav");
-    place(truth.uavs[i].position, name, around(9.0 * z.u, false, textWidth(name) * z.text));
-  }
+  for (std::size_t t = 0; t < truth.targets.size(); ++t)
+    place(truth.targets[t].position, nameOr(model.target_names, t, "T"), 6.0 * z.u, true);
+  for (std::size_t i = 0; i < truth.uavs.size(); ++i)
+    place(truth.uavs[i].position, nameOr(model.uav_names, i, "uav"), 9.0 * z.u, false);
 }
 
 }  // namespace
@@ -221,9 +273,11 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
   addFootprints(model, truth, z, w);
   addBeliefs(truth, beliefs, z, w);
   addEstimates(beliefs, z, w);
-  addBodies(model, truth, trails, v, z, options.labels, w);
+  addBodies(truth, trails, z, w);
+  LabelSpace space = labelSpace(model, truth, beliefs, trails, v, size, band, z);
+  if (options.labels) addNames(model, truth, v, z, space, w);
   addScaleBar(v, size, band, z, scene.overlay);
-  addTimeStamp(model, truth, z, scene.overlay);
+  placeTimeStamp(model, truth, size, band, z, space, scene.overlay);
   return scene;
 }
 

@@ -67,6 +67,26 @@ bool satisfies(double x, Bound bound) {
   return false;
 }
 
+// The log's record of the object at `object_path` of `file` (null without a log).
+ObjectShape* shapeOf(const LoadContext* context, const std::string& file,
+                     const std::string& object_path) {
+  if (!context || !context->log) return nullptr;
+  FieldInfo& info = (*context->log)[fieldPattern(object_path)];
+  info.path = fieldPattern(object_path);
+  return &info.instances[file + "#" + object_path];
+}
+
+// Records that the member at `path` (an object's member, not a list's element) had the choice
+// `value`, in its object's shape.
+void noteChoice(const LoadContext* context, const std::string& file, const std::string& path,
+                const std::string& value) {
+  if (path.empty() || path.back() == ']') return;
+  const std::size_t dot = path.rfind('.');
+  const std::string parent = dot == std::string::npos ? "" : path.substr(0, dot);
+  const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
+  if (ObjectShape* shape = shapeOf(context, file, parent)) shape->choices[key] = value;
+}
+
 }  // namespace
 
 void Field::fail(const std::string& message) const {
@@ -78,6 +98,9 @@ void Field::note(const std::string& type, const std::string& range,
   if (!context_ || !context_->log) return;
   FieldInfo& info = (*context_->log)[fieldPattern(path_)];
   info.path = fieldPattern(path_);
+  // Read with a bound in one place and none in another (the rows [t, x, y] of a track): no one
+  // range.
+  if (info.type == type && info.range != range) info.range_varies = true;
   // A field that takes several forms (a radius or a [min, max] range) lists each: "number | array".
   if (info.type.empty()) {
     info.type = type;
@@ -149,6 +172,7 @@ int Field::choice(const std::vector<std::string>& choices) const {
     const std::string text = value_->get<std::string>();
     for (std::size_t i = 0; i < choices.size(); ++i) {
       if (choices[i] == text) {
+        noteChoice(context_, file_, path_, text);
         if (out_) *out_ = text;
         return static_cast<int>(i);
       }
@@ -209,6 +233,7 @@ ObjectReader::ObjectReader(const Field& field) : field_(field) {
   field.note("object", "");
   if (!field.json().is_object()) field.fail("expected an object, got " + describe(field.json()));
   if (field_.out() && !field_.out()->is_object()) *field_.out() = Json::object();
+  shapeOf(field_.context(), field_.file(), field_.path());
 }
 
 bool ObjectReader::has(const std::string& key) const {
@@ -221,6 +246,8 @@ Field ObjectReader::required(const std::string& key) {
       FieldInfo& info = (*field_.context()->log)[fieldPattern(f->path())];
       info.path = fieldPattern(f->path());
       info.required = !info.default_json;
+      if (ObjectShape* shape = shapeOf(field_.context(), field_.file(), field_.path()))
+        shape->required.insert(key);
     }
     return *f;
   }
@@ -229,6 +256,8 @@ Field ObjectReader::required(const std::string& key) {
 
 std::optional<Field> ObjectReader::optional(const std::string& key) {
   read_.insert(key);
+  if (ObjectShape* shape = shapeOf(field_.context(), field_.file(), field_.path()))
+    shape->allowed.insert(key);
   if (!has(key)) return std::nullopt;
   Json* slot = field_.out() ? &(*field_.out())[key] : nullptr;  // std::map: address is stable
   return Field(field_.json().at(key), field_.file(), joinPath(field_.path(), key), slot,
@@ -288,6 +317,7 @@ int ObjectReader::choice(const std::string& key, const std::vector<std::string>&
   logDefault(key, choices[fallback]);
   if (auto f = optional(key)) return orFallback(fallback, [&] { return f->choice(choices); });
   recordDefault(key, choices[fallback], "string", "", choices);
+  noteChoice(field_.context(), field_.file(), joinPath(field_.path(), key), choices[fallback]);
   return fallback;
 }
 

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 
 #include "spec/loader.h"
@@ -64,8 +66,7 @@ FieldLog loggedFields() {
   files.push_back(dir / "schema_probe.json");
   files.push_back(dir / "schema_probe_2uav.json");
   for (const std::filesystem::path& file : files) loadScenario(file.string(), options);
-  log.erase("");  // the document itself
-  return log;
+  return log;  // "" is the document itself
 }
 
 std::vector<DocumentedField> documentedFields() {
@@ -75,7 +76,7 @@ std::vector<DocumentedField> documentedFields() {
   std::string undocumented, unread;
   std::vector<DocumentedField> out;
   for (const auto& [path, info] : log) {
-    if (path.ends_with("]")) continue;  // a list's elements: described by the list
+    if (path.empty() || path.ends_with("]")) continue;  // the document; a list's elements
     const auto it = docs.find(path);
     if (it == docs.end()) {
       undocumented += " " + path;
@@ -93,6 +94,134 @@ std::vector<DocumentedField> documentedFields() {
   return out;
 }
 
+namespace {
+
+// The node of `schema` that describes `pattern` ("uavs[].fov"), made on the way when absent.
+Json& nodeAt(Json& schema, const std::string& pattern) {
+  Json* node = &schema;
+  for (const std::string& part : steps(pattern))
+    node = part == "[]" ? &(*node)["items"] : &(*node)["properties"][part];
+  return *node;
+}
+
+// Array sizes as the loader logs them ("2 elements", "1+ elements", "3 to 8 elements").
+void addItemCount(Json& node, const std::string& range) {
+  if (!range.ends_with(" elements")) return;
+  const std::size_t to = range.find(" to ");
+  if (range.find('+') != std::string::npos) {
+    node["minItems"] = std::stoi(range);
+  } else if (to != std::string::npos) {
+    node["minItems"] = std::stoi(range);
+    node["maxItems"] = std::stoi(range.substr(to + 4));
+  } else {
+    node["minItems"] = node["maxItems"] = std::stoi(range);
+  }
+}
+
+// A value's own keywords: type(s), bounds, spellings.
+void describeValue(Json& node, const FieldInfo& info) {
+  std::vector<std::string> types;
+  for (std::size_t at = 0; at != std::string::npos && !info.type.empty();) {
+    const std::size_t bar = info.type.find(" | ", at);
+    types.push_back(info.type.substr(at, bar == std::string::npos ? bar : bar - at));
+    at = bar == std::string::npos ? bar : bar + 3;
+  }
+  if (!info.choices.empty() && types.size() > 1) {
+    // A number or a spelling ("yaw": 0.5 or "velocity"): the spellings bind only strings.
+    Json alternatives = Json::array();
+    for (const std::string& type : types) {
+      alternatives.push_back(type == "string" ? Json{{"type", "string"}, {"enum", info.choices}}
+                                              : Json{{"type", type}});
+    }
+    node["anyOf"] = alternatives;
+  } else if (types.size() > 1) {
+    node["type"] = types;
+  } else if (types.size() == 1) {
+    node["type"] = types.front();
+  }
+  if (!info.choices.empty() && types.size() <= 1) node["enum"] = info.choices;
+  if (!info.range_varies) {
+    addRange(node, info.range);
+    addItemCount(node, info.range);
+  }
+  if (info.type == "object" || (node.contains("properties") && types.size() <= 1)) {
+    node["type"] = "object";
+    node["additionalProperties"] = false;
+  }
+}
+
+// A field's keywords: its value's, its default and meaning.
+void describeField(Json& node, const DocumentedField& field) {
+  const FieldInfo& info = field.info;
+  describeValue(node, info);
+  if (info.default_json && !info.default_varies) node["default"] = Json::parse(*info.default_json);
+  node["description"] = field.meaning + (field.unit.empty() ? "" : " (" + field.unit + ")");
+  if (!field.unit.empty()) node["x-unit"] = field.unit;
+}
+
+// What an object requires, from its instances: the members every instance required; when the
+// instances require different members (a disc needs a centre, a grid an origin), one variant per
+// set of required members, each allowing only the members its instances read, and distinguished
+// by the member whose spelling tells them apart ("type"), when one does.
+void addRequirements(Json& node, const FieldInfo& info) {
+  struct Variant {
+    std::set<std::string> allowed;
+    std::map<std::string, std::set<std::string>> choices;
+  };
+  std::map<std::set<std::string>, Variant> variants;
+  for (const auto& [where, shape] : info.instances) {
+    Variant& v = variants[shape.required];
+    v.allowed.insert(shape.allowed.begin(), shape.allowed.end());
+    for (const auto& [key, value] : shape.choices) v.choices[key].insert(value);
+  }
+  if (variants.empty()) return;
+  std::set<std::string> common = variants.begin()->first;
+  for (const auto& [required, v] : variants) {
+    std::set<std::string> both;
+    std::set_intersection(common.begin(), common.end(), required.begin(), required.end(),
+                          std::inserter(both, both.end()));
+    common = both;
+  }
+  if (!common.empty()) node["required"] = common;
+  if (variants.size() == 1) return;
+  // The discriminator: a choice member no spelling of which is in two variants (a variant
+  // without it must not allow it: an occluder's "include" has no "type").
+  std::set<std::string> keys;
+  for (const auto& [required, v] : variants) {
+    for (const auto& [key, values] : v.choices) keys.insert(key);
+  }
+  std::string discriminator;
+  for (const std::string& key : keys) {
+    std::set<std::string> seen;
+    bool separates = true;
+    for (const auto& [required, v] : variants) {
+      const auto it = v.choices.find(key);
+      if (it == v.choices.end()) {
+        separates &= !v.allowed.count(key);
+        continue;
+      }
+      for (const std::string& value : it->second) separates &= seen.insert(value).second;
+    }
+    if (separates) {
+      discriminator = key;
+      break;
+    }
+  }
+  Json one_of = Json::array();
+  for (const auto& [required, v] : variants) {
+    Json variant = {{"additionalProperties", false}};
+    if (!required.empty()) variant["required"] = required;
+    Json& properties = variant["properties"] = Json::object();
+    for (const std::string& key : v.allowed) properties[key] = true;
+    if (v.choices.count(discriminator))
+      properties[discriminator] = {{"enum", v.choices.at(discriminator)}};
+    one_of.push_back(variant);
+  }
+  node["oneOf"] = one_of;
+}
+
+}  // namespace
+
 std::string scenarioSchemaJson() {
   Json schema = {{"$schema", "https://json-schema.org/draft/2020-12/schema"},
                  {"title", "canopy scenario"},
@@ -100,47 +229,40 @@ std::string scenarioSchemaJson() {
                  {"type", "object"},
                  {"additionalProperties", false}};
   for (const DocumentedField& field : documentedFields()) {
-    Json* node = &schema;
+    // Every list and object on the way is typed, so that a value of the wrong kind is refused.
     const std::vector<std::string> parts = steps(field.info.path);
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-      if (parts[i] == "[]") {
+    Json* node = &schema;
+    for (const std::string& part : parts) {
+      if (part == "[]") {
         (*node)["type"] = "array";
         node = &(*node)["items"];
-        continue;
-      }
-      Json& parent = *node;
-      if (!parent.contains("type")) parent["type"] = "object";
-      if (parent["type"] == "object") parent["additionalProperties"] = false;
-      node = &parent["properties"][parts[i]];
-      if (i + 1 == parts.size()) {
-        const FieldInfo& info = field.info;
-        if (info.type.find(" | ") != std::string::npos) {
-          Json types = Json::array();
-          for (std::size_t at = 0; at != std::string::npos;) {
-            const std::size_t bar = info.type.find(" | ", at);
-            types.push_back(info.type.substr(at, bar == std::string::npos ? bar : bar - at));
-            at = bar == std::string::npos ? bar : bar + 3;
-          }
-          (*node)["type"] = types;
-        } else if (!info.type.empty() && !node->contains("type")) {
-          (*node)["type"] = info.type;
-        }
-        if (info.type == "object") (*node)["additionalProperties"] = false;
-        if (!info.range_varies) addRange(*node, info.range);
-        if (!info.choices.empty()) (*node)["enum"] = info.choices;
-        if (info.default_json && !info.default_varies)
-          (*node)["default"] = Json::parse(*info.default_json);
-        (*node)["description"] =
-            field.meaning + (field.unit.empty() ? "" : " (" + field.unit + ")");
-        if (!field.unit.empty()) (*node)["x-unit"] = field.unit;
-        if (info.required) {
-          Json& required = parent["required"];
-          if (!required.is_array()) required = Json::array();
-          required.push_back(parts[i]);
-        }
+      } else {
+        if (!node->contains("type")) (*node)["type"] = "object";
+        if ((*node)["type"] == "object") (*node)["additionalProperties"] = false;
+        node = &(*node)["properties"][part];
       }
     }
+    describeField(*node, field);
   }
+  // Objects' requirements and variants, from what the loader read of each instance.
+  // A list's elements ("[]": described by the list in the reference) get their own type here.
+  for (const auto& [pattern, info] : loggedFields()) {
+    Json& node = pattern.empty() ? schema : nodeAt(schema, pattern);
+    if (pattern.ends_with("]")) describeValue(node, info);
+    if (!info.instances.empty()) addRequirements(node, info);
+  }
+  // A layout file (scenarios/library/layouts/, named by an occluder's "include") holds occluders
+  // as the scenario's list does, bare or as {"description": …, "occluders": [...]}
+  // (spec/internal/occluders.cpp, readOccluders).
+  const Json& occluders = schema["properties"]["occluders"];
+  schema["$defs"]["layout"] = {
+      {"description", "A layout file: the occluders an occluder's \"include\" names."},
+      {"oneOf",
+       {occluders,
+        {{"type", "object"},
+         {"additionalProperties", false},
+         {"required", {"occluders"}},
+         {"properties", {{"description", {{"type", "string"}}}, {"occluders", occluders}}}}}}};
   return schema.dump(2) + "\n";
 }
 

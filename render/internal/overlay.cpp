@@ -122,14 +122,22 @@ double addLegend(const std::vector<LegendEntry>& entries, ImageSize size, const 
   return band;
 }
 
-void addTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
-                  std::vector<Primitive>& out) {
+std::string timeStampText(const SceneModel& model, const world::WorldSnapshot& truth) {
   char text[160];
   std::snprintf(text, sizeof text, "%s%st = %.2f s   k = %d", model.title.c_str(),
                 model.title.empty() ? "" : "   ", truth.time, truth.step);
+  return text;
+}
+
+Vec2 timeStampSize(const std::string& text, const Sizes& z) {
   const double pad = 4.0 * z.u;
-  const Vec2 lo(pad, pad),
-      hi = lo + Vec2(textWidth(text) * z.text + 2.0 * pad, kTextLineHeight * z.text + 2.0 * pad);
+  return {textWidth(text) * z.text + 2.0 * pad, kTextLineHeight * z.text + 2.0 * pad};
+}
+
+void addTimeStamp(const std::string& text, const Vec2& lo, const Sizes& z,
+                  std::vector<Primitive>& out) {
+  const double pad = 4.0 * z.u;
+  const Vec2 hi = lo + timeStampSize(text, z);
   add(out, Polygon{rectangle(lo, hi), palette::kPanel});
   add(out, Polyline{rectangle(lo, hi), z.u, palette::kPanelEdge, true});
   add(out, Text{lo + Vec2(pad, pad), Vec2::Zero(), text, z.text, palette::kText});

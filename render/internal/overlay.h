@@ -26,8 +26,13 @@ std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs
 double addLegend(const std::vector<LegendEntry>& entries, ImageSize size, const Sizes& z,
                  std::vector<Primitive>& out);
 
-/// The scenario's title, t and k in a panel at the top left.
-void addTimeStamp(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
+/// The title panel's text: the scenario's title, t and k.
+std::string timeStampText(const SceneModel& model, const world::WorldSnapshot& truth);
+/// The title panel's size (px) for that text.
+Vec2 timeStampSize(const std::string& text, const Sizes& z);
+/// The title panel with its top-left corner at `lo` (px; scene_builder.cpp picks a corner of the
+/// map clear of what the frame shows).
+void addTimeStamp(const std::string& text, const Vec2& lo, const Sizes& z,
                   std::vector<Primitive>& out);
 
 /// A bar of scaleBarLength(map width) metres at the bottom left of the map, above the legend

@@ -162,12 +162,15 @@ TEST(HeatmapMetric, OcclusionScenariosWithoutMStarMapTheHiddenCoverage) {
   EXPECT_EQ(metric->max, 2.0);  // two UAVs: at most two footprints
   const std::vector<Heatmap> maps = sensitivityMaps(a, *metric);
   ASSERT_EQ(maps.size(), 1u);
-  // Per-trial means over steps 1..2: 2 and 1 → 1.5 ± t_{0.975,1} · √0.5/√2 = 1.5 ± 6.3531024,
-  // clipped to the two UAVs' [0, 2].
+  // Per-trial means over steps 1..2: 2 and 1 → 1.5, s = √0.5; on the logit scale of x/2
+  // (intervals.h): u = 3/4, se_η = (√0.5/2) / (√2 · 3/16) = 4/3, 2 · σ(ln 3 ∓ 12.7062047 · 4/3)
+  // = [2.63333e−7, 1.99999997] (python3): inside the two UAVs' [0, 2], and nearly all of it.
   const HeatmapCell& cell = *maps[0].cells[0][0];
   EXPECT_DOUBLE_EQ(cell.value.value, 1.5);
-  EXPECT_EQ(cell.value.ci.low, 0.0);
-  EXPECT_EQ(cell.value.ci.high, 2.0);
+  EXPECT_NEAR(cell.value.ci.low, 2.63333e-7, 1e-11);
+  EXPECT_NEAR(cell.value.ci.high, 1.99999997, 1e-8);
+  EXPECT_GT(cell.value.ci.low, 0.0);
+  EXPECT_LT(cell.value.ci.high, 2.0);
   EXPECT_EQ(cell.detail, "I 0.2-0.4 s");
 }
 

@@ -72,13 +72,45 @@ TEST(MeanInterval, StudentTIntervalOfASmallSample) {
   EXPECT_NEAR(ci.high, 4.9632432, 1e-6);
 }
 
-TEST(MeanInterval, ConstantSampleIsAPointAndASingleValueIsUnbounded) {
-  const ConfidenceInterval constant = meanInterval(std::vector<double>{2, 2, 2});
+TEST(MeanInterval, ConstantSampleIsAPointFromFiveTrialsAndNoIntervalFromFewer) {
+  const ConfidenceInterval constant = meanInterval(std::vector<double>{2, 2, 2, 2, 2});
   EXPECT_EQ(constant.low, 2.0);
   EXPECT_EQ(constant.high, 2.0);
+  // Two or four agreeing trials: too few to claim a spread of nil.
+  EXPECT_FALSE(meanInterval(std::vector<double>{2, 2}).bounded());
+  EXPECT_FALSE(meanInterval(std::vector<double>{2, 2, 2, 2}).bounded());
   const ConfidenceInterval single = meanInterval(std::vector<double>{2});
   EXPECT_FALSE(single.bounded());
   EXPECT_TRUE(single.contains(1e9));
+}
+
+// {0.5, 0.75, 1, 1}: x̄ = 0.8125, s² = 0.171875 / 3 = 0.0572917, t_{0.975,3} = 3.1824463. The
+// plain t interval is 0.8125 ± 0.3808700 = [0.43163, 1.19337], past 1. On the logit scale
+// (python3, the closed form of intervals.h): η = ln(0.8125/0.1875) = 1.4663371,
+// se_η = 0.2393568 / (2 · 0.8125 · 0.1875) = 0.7855812, η ± t·se_η → σ(·) = [0.2623610, 0.9814107].
+TEST(BoundedMeanInterval, StaysInsideTheRangeByTheLogitClosedForm) {
+  SampleMoments sample;
+  for (const double x : {0.5, 0.75, 1.0, 1.0}) sample.add(x);
+  EXPECT_GT(meanInterval(sample).high, 1.0);  // what the report printed before
+  const ConfidenceInterval ci = boundedMeanInterval(sample, 0.0, 1.0);
+  EXPECT_NEAR(ci.low, 0.2623610, 1e-6);
+  EXPECT_NEAR(ci.high, 0.9814107, 1e-6);
+  // The same values as footprints of two UAVs, in [0, 2]: the interval scales with the range.
+  SampleMoments doubled;
+  for (const double x : {1.0, 1.5, 2.0, 2.0}) doubled.add(x);
+  const ConfidenceInterval two = boundedMeanInterval(doubled, 0.0, 2.0);
+  EXPECT_NEAR(two.low, 2 * 0.2623610, 2e-6);
+  EXPECT_NEAR(two.high, 2 * 0.9814107, 2e-6);
+}
+
+TEST(BoundedMeanInterval, AtABoundIsThatPointAndTooFewAgreeingTrialsHaveNone) {
+  const Estimate all_one = boundedMeanOf({1, 1, 1, 1, 1}, 0.0, 1.0);
+  EXPECT_EQ(all_one.ci.low, 1.0);
+  EXPECT_EQ(all_one.ci.high, 1.0);
+  EXPECT_EQ(all_one.trials, 5);
+  EXPECT_FALSE(boundedMeanOf({0.75, 0.75}, 0.0, 1.0).ci.bounded());  // issue 28's [75.0, 75.0]
+  EXPECT_FALSE(boundedMeanOf({1, 1, 1}, 0.0, 1.0).ci.bounded());
+  EXPECT_FALSE(boundedMeanOf({0.3}, 0.0, 1.0).ci.bounded());
 }
 
 }  // namespace

@@ -11,12 +11,13 @@ TEST(ReportNumbers, ProportionInPercentWithItsWilsonInterval) {
   // 29/40: Wilson [0.571650, 0.838920] (python3, closed form).
   EXPECT_EQ(percentWithInterval(proportion(29, 40)), "72.5 % [57.2, 83.9]");
   EXPECT_EQ(percentWithInterval(proportion(0, 40)), "0.0 % [0.0, 8.8]");
-  EXPECT_EQ(percentWithInterval(meanOf({0.25})), "25.0 % [no interval: 1 trial]");
+  EXPECT_EQ(percentWithInterval(meanOf({0.25})), "25.0 % [too few trials: 1]");
+  EXPECT_EQ(percentWithInterval(boundedMeanOf({0.75, 0.75}, 0, 1)), "75.0 % [too few trials: 2]");
 }
 
 TEST(ReportNumbers, MeanWithItsIntervalOrNoneForOneTrial) {
   EXPECT_EQ(numberWithInterval({0.99, {0.951, 1.034}}), "0.99 [0.95, 1.03]");
-  EXPECT_EQ(numberWithInterval(meanOf({2.0})), "2.00 [no interval: 1 trial]");
+  EXPECT_EQ(numberWithInterval(meanOf({2.0})), "2.00 [too few trials: 1]");
   EXPECT_EQ(numberWithInterval({3.26, {3.0, 3.5}}, "%.1f s"), "3.3 s [3.0 s, 3.5 s]");
 }
 
@@ -41,7 +42,22 @@ TEST(ReportNumbers, CrossingTimesWithTheirIntervalAndTheVerdictInSeconds) {
   EXPECT_EQ(timeWithInterval({3.0, {2.6, inf}}), "3.0 s [2.6, never]");
   EXPECT_EQ(timeWithInterval({std::nullopt, {inf, inf}}), "never");
   EXPECT_EQ(timeVerdict(1.6, {std::nullopt, {inf, inf}}), "no (never crosses)");
-  EXPECT_EQ(timeWithInterval({0.4, {-inf, inf}}), "0.4 s [no interval: 1 trial]");
+  EXPECT_EQ(timeWithInterval({0.4, {-inf, inf}}), "0.4 s [too few trials]");
+}
+
+// A case with the verdict it should be given, to count.
+struct Case {
+  Verdict v;
+  Verdict verdict() const { return v; }
+};
+
+TEST(ReportNumbers, AFindingHoldsOnlyWhenEveryCaseHoldsElseEachVerdictIsCounted) {
+  EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::holds}, {Verdict::holds}}), "holds");
+  EXPECT_EQ(verdictOf(std::vector<Case>{
+                {Verdict::holds}, {Verdict::consistent}, {Verdict::consistent}, {Verdict::fails}}),
+            "holds in 1, consistent in 2, fails in 1 of 4 cases");
+  EXPECT_EQ(verdictOf(std::vector<Case>{{Verdict::consistent}, {Verdict::too_few_trials}}),
+            "consistent in 1, too few trials in 1 of 2 cases");
 }
 
 }  // namespace

@@ -91,22 +91,27 @@ TEST(ConfigStatistics, PerTrialCoverageOverAnIntervalAndItsTInterval) {
   // Steps 1..3 on I: A 1, 1, 1 → 1; B 2, 2, 2 → 2; C 0, 1, 2 → 1.
   const std::vector<double> expected{1.0, 2.0, 1.0};
   EXPECT_EQ(s.trialCoverageOver(0, {1, 3}), expected);
-  // Mean 4/3, s² = 1/3, s/√3 = 1/3: 4/3 ± t_{0.975,2}/3 with t_{0.975,2} = 4.3026527, that is
-  // [−0.1008842, 2.7675509], clipped to the two UAVs' [0, 2].
+  // Mean 4/3, s² = 1/3: the plain t interval 4/3 ± t_{0.975,2}/3 (t_{0.975,2} = 4.3026527) is
+  // [−0.1008842, 2.7675509], past the two UAVs' [0, 2]. On the logit scale of x/2 (python3, the
+  // closed form of intervals.h): u = 2/3, η = ln 2, se_η = (√(1/3)/2) / (√3 · 2/9) = 0.75,
+  // 2 · σ(ln 2 ∓ 4.3026527 · 0.75) = [0.1470390, 1.9610950].
   const Estimate e = s.coverageOver(0, {1, 3});
   EXPECT_DOUBLE_EQ(e.value, 4.0 / 3.0);
-  EXPECT_EQ(e.ci.low, 0.0);
-  EXPECT_EQ(e.ci.high, 2.0);
+  EXPECT_NEAR(e.ci.low, 0.1470390, 1e-6);
+  EXPECT_NEAR(e.ci.high, 1.9610950, 1e-6);
+  EXPECT_EQ(e.trials, 3);
 }
 
 TEST(ConfigStatistics, PerStepMeansCarryTIntervals) {
   const ConfigStatistics s = summarise(threeTrials(), twoByTwo(), "c", {});
-  // Step 4 on I: 1, 2, 0 → mean 1, s² = 1: 1 ± 4.3026527/√3 = 1 ± 2.4841377, clipped to [0, 2].
+  // Step 4 on I: 1, 2, 0 → mean 1, s² = 1; on the logit scale of x/2: u = 1/2, η = 0,
+  // se_η = (1/2) / (√3 · 1/4) = 1.1547005, 2 · σ(∓ 4.3026527 · 1.1547005) = [0.0138142, 1.9861858]
+  // (python3), where the plain t interval 1 ± 2.4841377 leaves [0, 2].
   EXPECT_DOUBLE_EQ(s.coverage[0][4], 1.0);
-  EXPECT_EQ(s.coverage_ci[0][4].low, 0.0);
-  EXPECT_EQ(s.coverage_ci[0][4].high, 2.0);
-  // Step 2 on I: 1, 2, 1 → 4/3 ± 4.3026527/3 = [−0.1008842, 2.7675509] → [0, 2].
-  EXPECT_EQ(s.coverage_ci[0][2].high, 2.0);
+  EXPECT_NEAR(s.coverage_ci[0][4].low, 0.0138142, 1e-6);
+  EXPECT_NEAR(s.coverage_ci[0][4].high, 1.9861858, 1e-6);
+  // Step 2 on I: 1, 2, 1 → as coverageOver above, [0.1470390, 1.9610950].
+  EXPECT_NEAR(s.coverage_ci[0][2].high, 1.9610950, 1e-6);
   // OSPA 1, 2, 3 at every step → 2 ± 2.4841377 = [−0.4841377, 4.4841377], cut at 0; tr(P) twice.
   EXPECT_DOUBLE_EQ(s.ospa[4], 2.0);
   EXPECT_EQ(s.ospa_ci[4].low, 0.0);

@@ -298,5 +298,94 @@ TEST(BuildScene, NamesDoNotOverlap) {
   }
 }
 
+// A crowded frame: three targets walking side by side with their trails, a UAV over each, and
+// discs of crown all around, one right where a name goes by default and one under the title's
+// usual corner. Every name and the title box must cover no marker, trail or crown, checked here by
+// a second method: points sampled along each trail and each crown's rim, and the markers' boxes.
+TEST(BuildScene, NamesAndTitleStayClearOfMarkersTrailsAndTrees) {
+  Fixture f;
+  f.model.trees.clear();
+  for (double x = -45; x <= 45; x += 9) {
+    for (double y = -25; y <= 25; y += 10)
+      f.model.trees.push_back(world::TreeDef::disc({x, y}, 1.2));
+  }
+  f.model.trees.push_back(world::TreeDef::disc({-3.5, 4.5}, 1.5));  // above right of T1's dot
+  f.model.trees.push_back(world::TreeDef::disc({-47, 28}, 2.0));    // the title's usual corner
+  f.model.target_names = {"T1", "T2", "T3"};
+  f.model.uav_names = {"alpha", "beta", "gamma"};
+  f.model.sensors.push_back(f.model.sensors.front());
+  TargetTrails trails;
+  for (int k = 0; k <= 10; ++k) {  // 2 m/s east for 10 s
+    f.truth.time = k;
+    f.truth.targets = {{Vec2(-25 + 2 * k, 2), Vec2::Zero()},
+                       {Vec2(-25 + 2 * k, -2), Vec2::Zero()},
+                       {Vec2(-25 + 2 * k, -6), Vec2::Zero()}};
+    trails.add(f.truth);
+  }
+  f.truth.uavs = {{Vec2(-5, 2.5), Vec2::Zero(), 0.0},
+                  {Vec2(-5, -2.5), Vec2::Zero(), 0.0},
+                  {Vec2(-5, -6.5), Vec2::Zero(), 0.0}};
+  const Scene scene = buildScene(f.model, f.truth, {}, trails, {800, 534});
+  const Viewport& v = scene.viewport;
+  const double unit = 1.0;  // z.u at 800 px: text scale 2, u = 1
+
+  std::vector<Aabb> labels;
+  for (const Text& t : all<Text>(scene.world)) {
+    const Vec2 lo = v.toPixel(t.at) + t.offset_px;
+    labels.push_back({lo, lo + Vec2(textWidthPx(t.text, t.scale), 9.0 * t.scale)});
+  }
+  ASSERT_EQ(labels.size(), 6u);
+  for (const Text& t : all<Text>(scene.overlay)) {  // the title panel: the panel round "unit …"
+    if (t.text.rfind("unit", 0) != 0) continue;
+    for (const Polygon& p : all<Polygon>(scene.overlay)) {
+      const Aabb panel{p.vertices[0], p.vertices[2]};
+      if (p.fill == palette::kPanel && panel.contains(t.at)) labels.push_back(panel);
+    }
+  }
+  ASSERT_EQ(labels.size(), 7u);
+  EXPECT_GT(labels.back().lo.x(), 50.0);  // the tree pushed the title off the top-left corner
+
+  const auto inside = [](const Aabb& b, const Vec2& p) {
+    return p.x() > b.lo.x() && p.x() < b.hi.x() && p.y() > b.lo.y() && p.y() < b.hi.y();
+  };
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const Aabb& box = labels[i];
+    for (const world::TreeDef& tree : f.model.trees) {  // the crown's disc: rim and centre
+      const Vec2 c = v.toPixel(tree.centre);
+      const double r = tree.radius / v.pixel_size;
+      EXPECT_FALSE(inside(box, c)) << "label " << i << " on a crown's centre";
+      for (int a = 0; a < 64; ++a) {
+        const double angle = 2.0 * std::numbers::pi * a / 64;
+        EXPECT_FALSE(inside(box, c + r * Vec2(std::cos(angle), std::sin(angle))))
+            << "label " << i << " over the crown at " << tree.centre.transpose();
+      }
+    }
+    for (int t = 0; t < 3; ++t) {  // the trails, sampled every 1/50 of a segment
+      const std::vector<Vec2>& trail = trails.trail(t);
+      for (std::size_t k = 0; k + 1 < trail.size(); ++k) {
+        for (int s = 0; s <= 50; ++s) {
+          const Vec2 p = v.toPixel(trail[k] + (trail[k + 1] - trail[k]) * (s / 50.0));
+          EXPECT_FALSE(inside(box, p)) << "label " << i << " over trail " << t;
+        }
+      }
+    }
+    const auto clearOf = [&](const Vec2& at, double half) {
+      const Vec2 c = v.toPixel(at);
+      return box.hi.x() <= c.x() - half || box.lo.x() >= c.x() + half ||
+             box.hi.y() <= c.y() - half || box.lo.y() >= c.y() + half;
+    };
+    for (const world::TargetState& target : f.truth.targets)
+      EXPECT_TRUE(clearOf(target.position, 5.0 * unit)) << "label " << i << " over a target";
+    for (const world::UavState& uav : f.truth.uavs)
+      EXPECT_TRUE(clearOf(uav.position, 9.0 * unit)) << "label " << i << " over a UAV";
+    for (std::size_t j = i + 1; j < labels.size(); ++j) {
+      const Aabb& o = labels[j];
+      EXPECT_FALSE(box.lo.x() < o.hi.x() && o.lo.x() < box.hi.x() && box.lo.y() < o.hi.y() &&
+                   o.lo.y() < box.hi.y())
+          << "labels " << i << " and " << j;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace canopy::render

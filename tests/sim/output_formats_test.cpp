@@ -94,6 +94,20 @@ TEST(ScenarioReference, SchemaCarriesTypesRangesDefaultsAndUnits) {
   EXPECT_EQ(schema["required"], Json({"aoi", "uavs"}));
   EXPECT_EQ(schema["properties"]["occluders"]["items"]["properties"]["radius"]["type"],
             Json({"number", "array"}));
+  // Variants: one per occluder type and include, each with its own required members, told apart
+  // by "type"; a footprint is a radius, a size or a ground robot's sector, never two of them.
+  const Json& occluder = schema["properties"]["occluders"]["items"];
+  ASSERT_EQ(occluder["oneOf"].size(), 6u);
+  EXPECT_EQ(occluder["oneOf"][0]["properties"]["type"]["enum"], Json({"disc"}));
+  EXPECT_EQ(occluder["oneOf"][0]["required"], Json({"centre", "radius", "type"}));
+  const Json& fov = schema["properties"]["uavs"]["items"]["properties"]["fov"];
+  EXPECT_FALSE(fov.contains("required"));
+  ASSERT_EQ(fov["oneOf"].size(), 3u);
+  EXPECT_EQ(fov["oneOf"][1]["required"], Json({"radius"}));
+  EXPECT_EQ(fov["oneOf"][1]["additionalProperties"], false);
+  // A numeric yaw or the one spelling "velocity".
+  EXPECT_EQ(schema["properties"]["uavs"]["items"]["properties"]["yaw"]["anyOf"],
+            Json::parse(R"([{"type": "string", "enum": ["velocity"]}, {"type": "number"}])"));
 }
 
 }  // namespace
