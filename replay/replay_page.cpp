@@ -34,29 +34,6 @@ std::string_view checkedScript(std::string_view script) {
   return script;
 }
 
-std::string htmlEscaped(std::string_view text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 // Replaces the one slot `<!--canopy:NAME-->` of the template.
 void fill(std::string& page, std::string_view name, const std::string& content) {
   const std::string slot = "<!--canopy:" + std::string(name) + "-->";
@@ -86,6 +63,29 @@ std::size_t writeReplay(const std::filesystem::path& run_dir, const std::filesys
   const std::string page = replayPage(readRunFolder(run_dir));
   writeFileAtomically(out, page);
   return page.size();
+}
+
+std::string htmlEscaped(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace canopy::replay

@@ -3,6 +3,7 @@
 // the scripts and the run's data are all inside the file).
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "replay/run_folder.h"
 
@@ -16,5 +17,8 @@ std::string replayPage(const RunFolder& run);
 /// `out` (a new temporary renamed over it; WriteError when it cannot). Returns the page's size in
 /// bytes.
 std::size_t writeReplay(const std::filesystem::path& run_dir, const std::filesystem::path& out);
+
+/// `text` with & < > " as HTML entities: safe inside an element or a double-quoted attribute.
+std::string htmlEscaped(std::string_view text);
 
 }  // namespace canopy::replay

@@ -4,9 +4,9 @@
 
 #include "analysis/trial_behaviour.h"
 #include "core/text_file.h"
+#include "experiments/trial.h"
 #include "replay/replay_page.h"
 #include "sim/run.h"
-#include "experiments/trial.h"
 
 namespace canopy::replay {
 namespace {
@@ -20,29 +20,6 @@ std::string safeName(const std::string& text) {
     const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
                       c == '.' || c == '-';
     out += keep ? c : '_';
-  }
-  return out;
-}
-
-std::string htmlEscaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
   }
   return out;
 }
