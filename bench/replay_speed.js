@@ -1,6 +1,8 @@
 // The replay page's speed in Debian's headless chromium: first paint, and playing a whole run
 // at 60 steps/s with every layer on and a timeline open (mean and worst time to draw a step,
-// frame intervals, frames that took longer than 1.5 frame periods).
+// frame intervals, frames that took longer than 1.5 frame periods, steps per second between the
+// first and the last animation frame), and, as a control, as many animation frames on a blank
+// page in the same tab (its late frames are the browser's and the machine's).
 // Usage: node bench/replay_speed.js CANOPY_BINARY SCENARIO WORK_DIR [REPEATS]
 "use strict";
 
@@ -44,16 +46,31 @@ async function main() {
           : done(Object.assign({ wallMs: performance.now() - start }, app.stats));
         wait();
       })`);
+      // The control: the same number of animation frames on a blank page in the same tab, which
+      // draws nothing. Frames it gets late are the browser's and the machine's, not the replay's.
+      await tab.navigate("about:blank");
+      const blank = await tab.evaluate(`new Promise((done) => {
+        const gaps = []; let last = null;
+        function frame(now) {
+          if (last !== null) gaps.push(now - last);
+          last = now;
+          if (gaps.length < ${play.frameGaps.length}) requestAnimationFrame(frame); else done(gaps);
+        }
+        requestAnimationFrame(frame);
+      })`);
       const gaps = play.frameGaps, period = median(gaps);
+      const playedMs = gaps.reduce((a, b) => a + b, 0);  // first to last animation frame
       rows.push({
         load_ms: +loadMs.toFixed(1), first_paint_ms: +first.paint.toFixed(1),
         script_to_paint_ms: +first.script.toFixed(1), steps: first.steps,
         steps_played: play.stepsPlayed, wall_s: +(play.wallMs / 1000).toFixed(3),
-        steps_per_s: +(play.stepsPlayed / (play.wallMs / 1000)).toFixed(1),
+        steps_per_s: +(play.stepsPlayed / (playedMs / 1000)).toFixed(1),
         draws: play.draws, mean_draw_ms: +(play.drawMs / play.draws).toFixed(3),
         max_draw_ms: +play.drawMsMax.toFixed(2), frames: play.frames,
         median_frame_ms: +period.toFixed(2), max_frame_ms: +Math.max.apply(null, gaps).toFixed(2),
         late_frames: gaps.filter((g) => g > 1.5 * period).length,
+        blank_page_late_frames: blank.filter((g) => g > 1.5 * median(blank)).length,
+        blank_page_max_frame_ms: +Math.max.apply(null, blank).toFixed(2),
         steps_not_drawn: play.stepsPlayed - play.draws
       });
       await tab.send("Page.close").catch(() => {});
