@@ -18,6 +18,7 @@ import hashlib
 import io
 import os
 import re
+import stat
 import subprocess
 import sys
 import sysconfig
@@ -145,7 +146,7 @@ class _Wheel:
 
     def add(self, name, data, executable=False):
         info = zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0))
-        info.external_attr = (0o755 if executable else 0o644) << 16
+        info.external_attr = (stat.S_IFREG | (0o755 if executable else 0o644)) << 16
         info.compress_type = zipfile.ZIP_DEFLATED
         self.zip.writestr(info, data)
         digest = base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
@@ -156,7 +157,7 @@ class _Wheel:
         writer = csv.writer(text, lineterminator="\n")
         writer.writerows(self.records + [(record_name, "", "")])
         info = zipfile.ZipInfo(record_name, date_time=(2020, 1, 1, 0, 0, 0))
-        info.external_attr = 0o644 << 16
+        info.external_attr = (stat.S_IFREG | 0o644) << 16
         self.zip.writestr(info, text.getvalue())
         self.zip.close()
 
