@@ -1,8 +1,9 @@
 """The install route as a user takes it (ctest python.install, issue 30): a fresh venv with
---system-site-packages, `pip wheel .` (its contents checked), `pip install .` (no build isolation,
-no index: offline), then the whole pytest suite from another folder against the installed package
-(CANOPY_EXPECT_INSTALLED=1: test_install.py checks it is that copy), with the venv's `canopy`
-command as the CLI.
+--system-site-packages and `pip wheel --no-build-isolation .` (its contents checked); then the
+README's command as printed (a venv in $HOME, `pip install .` with build isolation), with no
+package index (offline); then the whole pytest suite from another folder against the installed
+package (CANOPY_EXPECT_INSTALLED=1: test_install.py checks it is that copy), with the installed
+`canopy` command as the CLI.
 
     python3 python/tests/install_check.py SOURCE_DIR BUILD_DIR WORK_DIR
 
@@ -11,6 +12,7 @@ backend only brings _canopy and canopy up to date there); "-" builds afresh in
 SOURCE_DIR/build/pip-cpXY, as a plain `pip install .` does.
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -54,7 +56,16 @@ def main():
     assert "canopy = canopy._cli:main" in entry, entry
     print(f"{wheel}: {len(names)} files", flush=True)
 
-    run([pip, "install", "--no-build-isolation", source], env=env, cwd=work)
+    # The README's command, as printed (its venv in $HOME, pip with build isolation), offline.
+    readme = open(os.path.join(source, "README.md"), encoding="utf-8").read()
+    command = re.search(r"^## Python\n\n```sh\n(.*?)\n```", readme, re.M | re.S)[1]
+    assert command.startswith("python3 -m venv --system-site-packages ~/canopy-env"), command
+    home = os.path.join(work, "home")
+    os.makedirs(home)
+    path = os.pathsep.join([os.path.dirname(sys.executable), env.get("PATH", "")])
+    run(["bash", "-c", command], env=dict(env, HOME=home, PATH=path), cwd=source)
+    venv = os.path.join(home, "canopy-env")
+    python = os.path.join(venv, "bin", "python")
     elsewhere = os.path.join(work, "elsewhere")
     os.makedirs(elsewhere)
     env["CANOPY_EXPECT_INSTALLED"] = "1"

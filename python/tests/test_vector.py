@@ -95,7 +95,9 @@ def test_step_releases_the_gil():
     # While one thread steps a Simulation, another runs Python: it finds the simulation busy
     # (a RuntimeError, never a half-written record). With the GIL held through step() no other
     # thread could run then, and it would never see it busy.
-    sim = canopy.Simulation(canopy.load("demo"), seed=1)
+    # trajectory_handover with its planner: a planning step takes milliseconds, time enough for
+    # the other thread to be scheduled even on a loaded machine.
+    sim = canopy.Simulation(canopy.load("trajectory_handover"), seed=1)
     finished = threading.Event()
 
     def stepping():
