@@ -3,7 +3,14 @@
     PYTHONPATH=build/release/python /usr/bin/python3 bench/step_loop.py SCENARIO RUNS [SEED]
 
 One untimed warm-up run comes first; callgrind slopes (runs N2 − N1) cancel it and the imports.
+
+    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector N SCENARIO STEPS PAIRS
+
+canopy.VectorEnv(N, SCENARIO) stepped STEPS times with zero actions (autoresets included) on
+one thread and on one thread per core, PAIRS alternating pairs of timings: prints the env-steps
+per second of each (median and best of the pairs) and the median of the pair ratios.
 """
+import statistics
 import sys
 import time
 
@@ -35,5 +42,32 @@ def main():
           f"steps 1..K {stepping / n * 1e6:.1f} us (checksum {checksum:.6f})")
 
 
+def vector(n, name, steps, pairs):
+    import numpy as np
+
+    envs = {label: canopy.VectorEnv(n, name, threads=threads)
+            for label, threads in (("1 thread", 1), ("threads", None))}
+    zero = np.zeros(envs["threads"].action_space.shape)
+    rates = {label: [] for label in envs}
+    for _ in range(pairs):
+        for label, env in envs.items():
+            env.reset(seed=0)
+            env.step(zero)  # warm-up step: first-touch of the buffers
+            t0 = time.perf_counter()
+            for _ in range(steps):
+                env.step(zero)
+            rates[label].append(n * steps / (time.perf_counter() - t0))
+    ratios = [b / a for a, b in zip(rates["1 thread"], rates["threads"])]
+    print(f"VectorEnv({n}, {name!r}): {steps} steps x {pairs} pairs; "
+          f"threads = {envs['threads'].threads}")
+    for label, r in rates.items():
+        print(f"  {label:9}: env-steps/s median {statistics.median(r):9.0f}, best {max(r):9.0f}")
+    print(f"  speed-up: median of pair ratios {statistics.median(ratios):.3f}, "
+          f"best/best {max(rates['threads']) / max(rates['1 thread']):.3f}")
+
+
 if __name__ == "__main__":
-    main()
+    if sys.argv[1] == "--vector":
+        vector(int(sys.argv[2]), sys.argv[3], int(sys.argv[4]), int(sys.argv[5]))
+    else:
+        main()

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <utility>
 
 #include "core/printable.h"
 #include "spec/budget.h"
@@ -206,8 +207,25 @@ ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& option
   return loadDocument(parseJson(text, path.string()), path.string(), options, text);
 }
 
+namespace {
+fs::path& builtinOverride() {
+  static fs::path dir;
+  return dir;
+}
+}  // namespace
+
+fs::path builtinScenarioDir() {
+  if (!builtinOverride().empty()) return builtinOverride();
+  if (const char* dir = std::getenv("CANOPY_BUILTIN_SCENARIOS"); dir && *dir) return dir;
+  return fs::path(CANOPY_SOURCE_DIR) / "scenarios";
+}
+
+void setBuiltinScenarioDir(fs::path dir) {
+  builtinOverride() = std::move(dir);
+}
+
 fs::path libraryDir() {
-  return fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library";
+  return builtinScenarioDir() / "library";
 }
 
 std::vector<fs::path> scenarioSearchPath() {

@@ -36,7 +36,15 @@ ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& option
 ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
                               const LoadOptions& options = {});
 
-/// The directory of built-in scenarios: scenarios/library in the source tree canopy was built from.
+/// The folder of the built-in scenarios (library/) and the schema's probe files: the one
+/// setBuiltinScenarioDir named, else $CANOPY_BUILTIN_SCENARIOS when set (an installed copy: the
+/// Python package carries one and its `canopy` command sets it), else scenarios/ in the source
+/// tree canopy was built from.
+std::filesystem::path builtinScenarioDir();
+/// Points builtinScenarioDir() at `dir` for the rest of the process (the Python module, at import,
+/// to the copy inside the installed package). Not thread-safe: call before loading anything.
+void setBuiltinScenarioDir(std::filesystem::path dir);
+/// The directory of built-in scenarios: builtinScenarioDir() / "library".
 std::filesystem::path libraryDir();
 /// Where scenario names are looked up, in order: each folder of $CANOPY_PATH (':'-separated),
 /// then $CANOPY_LIBRARY_DIR if set, then the built-in library.

@@ -56,7 +56,7 @@ FieldLog loggedFields() {
   LoadOptions options;
   options.field_log = &log;
   // The built-in library only (not CANOPY_PATH's folders): the page must not depend on the user.
-  const std::filesystem::path dir = std::filesystem::path(CANOPY_SOURCE_DIR) / "scenarios";
+  const std::filesystem::path dir = builtinScenarioDir();
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir / "library")) {
     if (entry.is_regular_file() && entry.path().extension() == ".json")

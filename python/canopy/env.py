@@ -1,22 +1,28 @@
-"""TrackingEnv: canopy as a multi-agent environment with the PettingZoo ParallelEnv contract.
+"""TrackingEnv: canopy as a multi-agent environment, a PettingZoo ``ParallelEnv``.
 
-Pure Python over canopy.Simulation; neither pettingzoo nor gymnasium is imported (spaces are
-gymnasium Boxes when gymnasium is importable). Agent i flies UAV i.
+When pettingzoo is importable, TrackingEnv subclasses ``pettingzoo.ParallelEnv`` and its spaces
+are ``gymnasium.spaces.Box``; without them it has stand-ins with the same attributes
+(``canopy.env.PETTINGZOO`` and ``canopy.spaces.GYMNASIUM`` tell which). Agent i flies UAV i.
 
-Observation of an agent (float32, length 3 + 7·max_tracks + 4·max_trees):
+Observation of an agent (float32, length 3 + 7·max_tracks + 4·max_trees), computed in C++:
     [x, y, yaw]                                         its own pose (m, m, rad)
     max_tracks × [px, py, vx, vy, P_xx, P_yy, valid]    its fused target tracks, in the order
                                                         it holds them, zero-padded (valid 0)
     max_trees × [dx, dy, r, valid]                      the discs of its occlusion map nearest to
                                                         it within map_radius, relative to it
+Every entry is clipped into the observation space's finite bounds: positions within the AOI and
+the UAV starts grown by the distance the fastest UAV flies in the episode, yaw in [−π, π], track
+velocities within max(50, 5·v_max) m/s, variances in [0, 10⁴] m², tree offsets and radii within
+map_radius.
 Action: a velocity (vx, vy) in m/s, within ±v_max per axis; the simulation clamps its norm.
 Reward: minus the NBO stage cost of the agent's fused belief, −Σ_j tr(P_j) over its target
 tracks, with the position block of P_j (reward_trace="position", the planner's default
 cost_trace) or all of it ("full"); or reward_fn(sim, agent_index) when given.
-Episodes end by truncation when the scenario's clock runs out (no termination); the agents
-then leave ``agents``. Seeding follows Gymnasium: reset(seed=s) gives the same episode for the
-same s (the simulation runs with seed s, as ``canopy run --seed s``); reset() without a seed
-draws the next episode's seed from the generator the last seed started.
+Episodes end by truncation after max_cycles steps or when the scenario's clock runs out,
+whichever is first (there is no termination: no agent is lost); the agents then leave
+``agents``. Seeding follows Gymnasium: reset(seed=s) gives the same episode for the same s (the
+simulation runs with seed s, as ``canopy run --seed s``); reset() without a seed draws the next
+episode's seed from the generator the last seed started.
 """
 import numpy as np
 
@@ -24,48 +30,96 @@ from . import _canopy
 from .scenario import Scenario, load
 from .spaces import box
 
-_TRACK = 7
-_TREE = 4
+try:
+    from pettingzoo import ParallelEnv as _ParallelEnv
+
+    PETTINGZOO = True
+except ImportError:  # not installed: a stand-in with ParallelEnv's own attributes
+    PETTINGZOO = False
+
+    class _ParallelEnv:
+        """The attributes pettingzoo.ParallelEnv gives its subclasses."""
+
+        metadata = {}
+
+        @property
+        def num_agents(self):
+            return len(self.agents)
+
+        @property
+        def max_num_agents(self):
+            return len(self.possible_agents)
+
+        @property
+        def unwrapped(self):
+            return self
+
+        def __str__(self):
+            return self.metadata.get("name", type(self).__name__)
 
 
-class TrackingEnv:
-    metadata = {"name": "canopy_tracking_v0", "render_modes": ["rgb_array"], "is_parallelizable": True}
+def _check_count(name, value, minimum):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
+        raise ValueError(f"TrackingEnv: {name}: expected an integer ≥ {minimum}, got {value!r}")
+    return int(value)
+
+
+class TrackingEnv(_ParallelEnv):
+    metadata = {"name": "canopy_tracking_v0", "render_modes": ["human", "rgb_array"],
+                "is_parallelizable": True, "render_fps": 5}
 
     def __init__(self, scenario, max_tracks=8, max_trees=8, map_radius=30.0, render_mode=None,
                  render_size=(400, 300), reward_trace="position", reward_fn=None,
-                 keep_planner=False):
+                 keep_planner=False, max_cycles=None):
         """scenario: a Scenario, a built-in name or a file. The planner is switched off
-        (planner.algorithm = "none") unless keep_planner: the agents' actions fly the UAVs."""
+        (planner.algorithm = "none") unless keep_planner: the agents' actions fly the UAVs.
+        max_cycles: the episode's length in steps (default and at most the scenario's K)."""
         if not isinstance(scenario, Scenario):
             scenario = load(scenario)
         self.scenario = scenario.copy()
         if not keep_planner:
             self.scenario["planner.algorithm"] = "none"
         self.scenario.validate()
-        if render_mode not in (None, "rgb_array"):
-            raise ValueError(f"TrackingEnv: render_mode: expected None or 'rgb_array', got {render_mode!r}")
+        if render_mode not in (None, "human", "rgb_array"):
+            raise ValueError("TrackingEnv: render_mode: expected None, 'human' or 'rgb_array', "
+                             f"got {render_mode!r}")
         if reward_trace not in ("position", "full"):
             raise ValueError(f"TrackingEnv: reward_trace: expected 'position' or 'full', got {reward_trace!r}")
         self.render_mode = render_mode
         self.render_size = tuple(render_size)
-        self.max_tracks, self.max_trees, self.map_radius = int(max_tracks), int(max_trees), float(map_radius)
+        self.max_tracks = _check_count("max_tracks", max_tracks, 0)
+        self.max_trees = _check_count("max_trees", max_trees, 0)
+        self.map_radius = float(map_radius)
         self.reward_trace, self.reward_fn = reward_trace, reward_fn
+        self._observer = _canopy._Observer(self.scenario, self.max_tracks, self.max_trees,
+                                           self.map_radius, reward_trace)
+        self.steps, self.dt, n_targets = self._observer.steps, self._observer.dt, self._observer.n_targets
+        self.max_cycles = self.steps if max_cycles is None else min(
+            _check_count("max_cycles", max_cycles, 1), self.steps)
+        # An instance's own metadata: the frame rate is the scenario's (one frame per step).
+        self.metadata = dict(type(self).metadata, render_fps=max(1, round(1.0 / self.dt)))
+
         self.possible_agents = [u.get("name") or f"uav{i + 1}" for i, u in enumerate(self.scenario.uavs)]
         self._index = {a: i for i, a in enumerate(self.possible_agents)}
         self.agents = []
         self.sim = None
         self._rng = None
+        self._window = None
         v_max = [float(u["v_max"]) for u in self.scenario.uavs]
-        size = 3 + _TRACK * self.max_tracks + _TREE * self.max_trees
-        self._observation_spaces = {a: box(-np.inf, np.inf, (size,)) for a in self.possible_agents}
-        self._action_spaces = {a: box(-v, v, (2,)) for a, v in zip(self.possible_agents, v_max)}
+        low, high = self._observer.low, self._observer.high
+        self.observation_spaces = {a: box(low, high, low.shape) for a in self.possible_agents}
+        self.action_spaces = {a: box(-v, v, (2,)) for a, v in zip(self.possible_agents, v_max)}
+        p, s, pi = self._observer.position_bound, self._observer.speed_bound, np.float32(np.pi)
+        state_high = np.array([p, p, pi] * len(self.possible_agents) + [p, p, s, s] * n_targets,
+                              np.float32)
+        self.state_space = box(-state_high, state_high, state_high.shape)
 
     # --- the ParallelEnv interface --------------------------------------------------------
     def observation_space(self, agent):
-        return self._observation_spaces[agent]
+        return self.observation_spaces[agent]
 
     def action_space(self, agent):
-        return self._action_spaces[agent]
+        return self.action_spaces[agent]
 
     @property
     def num_agents(self):
@@ -76,6 +130,13 @@ class TrackingEnv:
         return len(self.possible_agents)
 
     def reset(self, seed=None, options=None):
+        """Starts an episode: seed s repeats it exactly. options: None or a dict (no key is
+        read; an unknown key is a ValueError, so that a typo is not ignored)."""
+        if options is not None:
+            if not isinstance(options, dict):
+                raise ValueError(f"TrackingEnv.reset: options: expected None or a dict, got {type(options).__name__}")
+            if options:
+                raise ValueError(f"TrackingEnv.reset: options: unknown keys {sorted(options)} (none are read)")
         if seed is not None:
             self._rng = np.random.default_rng(seed)
             episode_seed = int(seed)
@@ -85,8 +146,11 @@ class TrackingEnv:
             episode_seed = int(self._rng.integers(0, 2**31 - 1))
         self.sim = _canopy.Simulation(self.scenario, seed=episode_seed)
         self.agents = list(self.possible_agents)
-        observations = {a: self._observe(i) for a, i in self._index.items()}
+        obs, _ = self._observe()
+        observations = {a: obs[i] for a, i in self._index.items()}
         infos = {a: {"step": 0, "seed": episode_seed} for a in self.agents}
+        if self.render_mode == "human":
+            self.render()
         return observations, infos
 
     def step(self, actions):
@@ -104,58 +168,79 @@ class TrackingEnv:
                 raise ValueError(f"TrackingEnv.step: actions[{agent!r}]: expected shape (2,) "
                                  f"(vx, vy in m/s), got {action.shape}")
             commands[self._index[agent]] = action
-        self.sim.step(commands)
+        self.sim.step(commands)  # without the GIL: other threads run meanwhile
         acting = self.agents
-        observations = {a: self._observe(self._index[a]) for a in acting}
-        rewards = {a: self._reward(self._index[a]) for a in acting}
-        truncated = self.sim.done
+        obs, rew = self._observe()
+        observations = {a: obs[self._index[a]] for a in acting}
+        if self.reward_fn is not None:
+            rewards = {a: float(self.reward_fn(self.sim, self._index[a])) for a in acting}
+        else:
+            rewards = {a: float(rew[self._index[a]]) for a in acting}
+        truncated = self.sim.done or self.sim.step_index >= self.max_cycles
         terminations = {a: False for a in acting}
         truncations = {a: truncated for a in acting}
         infos = {a: {"step": self.sim.step_index} for a in acting}
         if truncated:
             self.agents = []
+        if self.render_mode == "human":
+            self.render()
         return observations, rewards, terminations, truncations, infos
 
     def render(self):
-        if self.render_mode != "rgb_array" or self.sim is None:
+        """rgb_array: the last step drawn, (height, width, 3) uint8. human: shows it in a
+        matplotlib window (returns None). None before reset() or without a render_mode."""
+        if self.render_mode is None or self.sim is None:
             return None
-        return self.sim.render(*self.render_size)
+        frame = self.sim.render(*self.render_size)
+        if self.render_mode == "rgb_array":
+            return frame
+        self._show(frame)
+        return None
 
     def close(self):
+        if self._window is not None:
+            plt, figure, _ = self._window
+            plt.close(figure)
+            self._window = None
         self.sim = None
         self.agents = []
 
     def state(self):
-        """The global state: every UAV's pose and every target's true state, flattened."""
-        return np.concatenate([self.sim.uav_states.ravel(), self.sim.target_states.ravel()]).astype(np.float32)
+        """The global state: every UAV's pose (x, y, yaw) and every target's true state
+        (x, y, vx, vy), flattened, float32, clipped into state_space."""
+        if self.sim is None:
+            raise RuntimeError("TrackingEnv.state: call reset() first")
+        s = np.concatenate([self.sim.uav_states.ravel(), self.sim.target_states.ravel()])
+        return np.clip(s.astype(np.float32), self.state_space.low, self.state_space.high)
 
-    # --- observation and reward -----------------------------------------------------------
-    def _observe(self, i):
-        out = np.zeros(self._observation_spaces[self.possible_agents[i]].shape, np.float32)
-        pose = self.sim.uav_states[i]
-        out[:3] = pose
-        tracks = self.sim.tracks(i)
-        m = min(len(tracks["means"]), self.max_tracks)
-        rows = out[3:3 + _TRACK * self.max_tracks].reshape(self.max_tracks, _TRACK)
-        rows[:m, :4] = tracks["means"][:m]
-        rows[:m, 4] = tracks["covariances"][:m, 0, 0]
-        rows[:m, 5] = tracks["covariances"][:m, 1, 1]
-        rows[:m, 6] = 1.0
-        trees = self.sim.occlusion_map(i)["means"]
-        if len(trees):
-            offsets = trees[:, :2] - pose[:2]
-            distance = np.hypot(offsets[:, 0], offsets[:, 1])
-            near = np.argsort(distance, kind="stable")
-            near = near[distance[near] <= self.map_radius][:self.max_trees]
-            rows = out[3 + _TRACK * self.max_tracks:].reshape(self.max_trees, _TREE)
-            rows[:len(near), :2] = offsets[near]
-            rows[:len(near), 2] = trees[near, 2]
-            rows[:len(near), 3] = 1.0
-        return out
+    # --- internals --------------------------------------------------------------------------
+    def _observe(self):
+        """Every agent's observation (a new (n, size) float32 array) and reward, from C++."""
+        obs = np.empty((len(self.possible_agents), self._observer.size), np.float32)
+        rew = np.empty(len(self.possible_agents))
+        self._observer.observe_all(self.sim, obs, rew)
+        return obs, rew
 
-    def _reward(self, i):
-        if self.reward_fn is not None:
-            return float(self.reward_fn(self.sim, i))
-        P = self.sim.tracks(i)["covariances"]
-        block = P[:, :2, :2] if self.reward_trace == "position" else P
-        return -float(np.trace(block, axis1=1, axis2=2).sum())
+    def _show(self, frame):
+        if self._window is None:
+            try:
+                import matplotlib
+                import matplotlib.pyplot as plt
+            except ImportError:
+                raise RuntimeError("TrackingEnv: render_mode 'human' shows frames with matplotlib, "
+                                   "which is not installed (Debian: apt-get install python3-matplotlib)") from None
+            figure, axes = plt.subplots(figsize=(frame.shape[1] / 100, frame.shape[0] / 100), dpi=100)
+            axes.set_axis_off()
+            figure.subplots_adjust(0, 0, 1, 1)
+            image = axes.imshow(frame)
+            self._window = (plt, figure, image)
+            interactive = matplotlib.get_backend().lower() in {
+                b.lower() for b in matplotlib.rcsetup.interactive_bk}
+            self._window_interactive = interactive
+            if interactive:
+                plt.show(block=False)
+        plt, figure, image = self._window
+        image.set_data(frame)
+        figure.canvas.draw()
+        if self._window_interactive:
+            plt.pause(1.0 / self.metadata["render_fps"])

@@ -74,6 +74,10 @@ void bindScenario(py::module_& m) {
       py::arg("text"), py::arg("file"), py::arg("allowed_roots"));
   m.def("library_scenarios", &spec::libraryScenarios, "The built-in scenarios' names.");
   m.def("_library_dir", [] { return spec::libraryDir().string(); });
+  m.def(
+      "_set_builtin_scenarios", [](const std::string& dir) { spec::setBuiltinScenarioDir(dir); },
+      "Where the built-in scenarios (library/) and the schema's probe files are: the installed "
+      "package's copy (python/canopy/__init__.py).");
 }
 
 }  // namespace canopy::python

@@ -80,6 +80,15 @@ void PySimulation::step(const py::handle& commands) {
                              std::to_string(sim_->spec().steps()) + ")");
   }
   if (!commands.is_none()) applyCommands(commands);
+  // The tick touches no Python object: other threads run Python (or step other simulations)
+  // meanwhile. A second thread that reaches this simulation meanwhile gets a RuntimeError
+  // (simulationOf checks busy()), never a half-written record.
+  struct Busy {
+    std::atomic<bool>& flag;
+    explicit Busy(std::atomic<bool>& f) : flag(f) { flag.store(true, std::memory_order_release); }
+    ~Busy() { flag.store(false, std::memory_order_release); }
+  } busy(busy_);
+  py::gil_scoped_release release;
   sim_->tick();
   keepPlan();
 }

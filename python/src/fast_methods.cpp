@@ -28,7 +28,14 @@ PySimulation* simulationOrNull(PyObject* self) {
     PyErr_SetString(PyExc_RuntimeError, "canopy.Simulation: not initialised (__init__ not run)");
     return nullptr;
   }
-  return v.value_ptr<PySimulation>();
+  auto* sim = v.value_ptr<PySimulation>();
+  if (sim->busy()) {
+    PyErr_SetString(PyExc_RuntimeError,
+                    "canopy.Simulation: another thread is stepping it (step() released the GIL); "
+                    "use one Simulation per thread");
+    return nullptr;
+  }
+  return sim;
 }
 
 template <typename Body>

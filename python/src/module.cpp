@@ -7,4 +7,5 @@ PYBIND11_MODULE(_canopy, m) {
   canopy::python::bindForest(m);
   canopy::python::bindSimulation(m);
   canopy::python::bindJobs(m);
+  canopy::python::bindEnv(m);
 }

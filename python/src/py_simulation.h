@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -23,8 +24,11 @@ class PySimulation {
   explicit PySimulation(spec::ScenarioSpec spec);
 
   /// One step. commands: None, or an (n_uav, 2) array-like of velocities (m/s). Raises
-  /// ValueError for a wrong shape or a non-finite command, RuntimeError when done.
+  /// ValueError for a wrong shape or a non-finite command, RuntimeError when done. The tick runs
+  /// without the GIL (other Python threads run meanwhile); the simulation is marked busy then.
   void step(const pybind11::handle& commands);
+  /// True while step() runs its tick without the GIL: no reader may look at the record then.
+  bool busy() const { return busy_.load(std::memory_order_acquire); }
 
   const sim::Simulation& sim() const { return *sim_; }
   const sim::StepRecord& record() const { return sim_->lastStep(); }
@@ -47,6 +51,7 @@ class PySimulation {
   void keepPlan();
 
   std::shared_ptr<sim::Simulation> sim_;
+  std::atomic<bool> busy_{false};
   pybind11::object owner_;  // capsule holding a share of sim_
   Views views_;
   std::optional<agents::planning::TeamPlan> last_plan_;

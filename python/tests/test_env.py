@@ -125,3 +125,191 @@ def test_custom_reward():
     env.reset(seed=1)
     _, rewards, _, _, _ = env.step({"UAV1": np.zeros(2), "UAV2": np.zeros(2)})
     assert rewards == {"UAV1": 0.0, "UAV2": 1.0}
+
+
+# --- the ParallelEnv contract, item by item (issue 30) --------------------------------------
+# Run here against the stand-ins (pettingzoo and gymnasium are not Debian packages);
+# test_real_bases.py checks that the real classes are used when importable.
+
+def test_base_class_and_unwrapped():
+    env = _env()
+    assert env.unwrapped is env
+    assert str(env) == "canopy_tracking_v0"
+    if canopy.env.PETTINGZOO:  # pragma: no cover - not on Debian 12
+        import pettingzoo
+        assert isinstance(env, pettingzoo.ParallelEnv)
+
+
+def test_possible_agents_fixed_and_agents_shrink_to_empty():
+    env = _env()
+    before = list(env.possible_agents)
+    assert env.agents == []  # before reset: no live agent
+    env.reset(seed=2)
+    seen = [list(env.agents)]
+    while env.agents:
+        env.step({a: np.zeros(2) for a in env.agents})
+        seen.append(list(env.agents))
+        assert env.possible_agents == before
+    # All agents live for the whole episode (no agent is lost), then all leave at once.
+    assert seen[:-1] == [before] * 10 and seen[-1] == []
+    assert all(set(s) <= set(before) for s in seen)
+
+
+def test_spaces_same_object_every_call_before_and_after_reset():
+    env = _env()
+    spaces = {a: (env.observation_space(a), env.action_space(a)) for a in env.possible_agents}
+    env.reset(seed=1)
+    env.step({a: np.zeros(2) for a in env.agents})
+    for a in env.possible_agents:
+        assert env.observation_space(a) is spaces[a][0] and env.action_space(a) is spaces[a][1]
+        assert env.observation_spaces[a] is spaces[a][0] and env.action_spaces[a] is spaces[a][1]
+
+
+def test_bounds_are_finite_and_as_documented():
+    # trajectory_handover: AOI ±40 m, starts (±9, 0), v_max 5 m/s (the default); duration 2 s
+    # here → positions within ceil(40 + 5 · 2) = 50 m; track speeds max(50, 5 · 5) = 50 m/s.
+    env = _env(max_tracks=2, max_trees=1, map_radius=12.5)
+    space = env.observation_space("UAV1")
+    assert space.dtype == np.float32 and space.shape == (3 + 14 + 4,)
+    assert np.all(np.isfinite(space.low)) and np.all(np.isfinite(space.high))
+    pi = np.float32(np.pi)
+    track = [50, 50, 50, 50, 1e4, 1e4, 1]
+    np.testing.assert_array_equal(space.high, [50, 50, pi] + track * 2 + [12.5, 12.5, 12.5, 1])
+    np.testing.assert_array_equal(space.low, [-50, -50, -pi] + [-50, -50, -50, -50, 0, 0, 0] * 2
+                                  + [-12.5, -12.5, 0, 0])
+    a = env.action_space("UAV2")
+    assert a.dtype == np.float32 and a.shape == (2,)
+    np.testing.assert_array_equal(a.low, [-5, -5]) and np.testing.assert_array_equal(a.high, [5, 5])
+    # state: 2 UAV poses and 4 target states
+    assert env.state_space.shape == (2 * 3 + 4 * 4,) and env.state_space.dtype == np.float32
+    np.testing.assert_array_equal(env.state_space.high, [50, 50, pi] * 2 + [50, 50, 50, 50] * 4)
+
+
+def test_observations_are_clipped_into_their_space():
+    # A crown of radius 4 m whose centre is 1 m from UAV1, with map_radius 2 m: the disc is
+    # mapped, its offset kept, and its radius clipped to the bound, 2 m.
+    s = canopy.load("trajectory_handover", overrides={"clock.duration": 2.0})
+    s.occluders.append(canopy.forest.disc((-8, 0), 4.0))
+    env = canopy.TrackingEnv(s, max_trees=2, map_radius=2.0)
+    obs, _ = env.reset(seed=1)
+    for _ in range(3):
+        obs, *_ = env.step({a: np.zeros(2) for a in env.agents})
+    tree = env.sim.occlusion_map(0)["means"]
+    assert len(tree) == 1 and tree[0, 2] > 3.5
+    dx, dy, r, valid = obs["UAV1"][-8:-4]
+    pose = env.sim.uav_states[0]
+    assert (dx, dy) == (np.float32(tree[0, 0] - pose[0]), np.float32(tree[0, 1] - pose[1]))
+    assert r == 2.0 and valid == 1 and np.all(obs["UAV1"][-4:] == 0)
+    assert env.observation_space("UAV1").contains(obs["UAV1"])
+
+
+def test_every_observation_inside_its_space_with_random_actions():
+    env = _env(render_mode=None)
+    for seed in (0, 1):
+        obs, _ = env.reset(seed=seed)
+        rng = np.random.default_rng(seed)
+        while True:
+            for a, o in obs.items():
+                space = env.observation_space(a)
+                assert o.dtype == space.dtype and o.shape == space.shape
+                assert np.all(o >= space.low) and np.all(o <= space.high) and space.contains(o)
+            state = env.state()
+            assert env.state_space.contains(state) and state.dtype == np.float32
+            if not env.agents:
+                break
+            # actions up to twice the action space's bounds: the simulation clamps them
+            obs, *_ = env.step({a: rng.uniform(-10, 10, 2) for a in env.agents})
+
+
+def test_state_is_the_truth():
+    env = _env()
+    env.reset(seed=4)
+    env.step({a: np.array([1.0, -1.0]) for a in env.agents})
+    expected = np.concatenate([env.sim.uav_states.ravel(), env.sim.target_states.ravel()])
+    np.testing.assert_array_equal(env.state(), expected.astype(np.float32))
+    env.close()
+    with pytest.raises(RuntimeError, match="reset"):
+        env.state()
+
+
+def test_reset_with_options_and_seed_is_deterministic():
+    env = _env()
+    a, ia = env.reset(seed=11, options={})
+    b, ib = env.reset(seed=11, options=None)
+    for agent in a:
+        np.testing.assert_array_equal(a[agent], b[agent])
+    assert ia == ib and set(ia) == set(env.agents)
+    with pytest.raises(ValueError, match="unknown keys"):
+        env.reset(seed=1, options={"difficulty": 3})
+    with pytest.raises(ValueError, match="a dict"):
+        env.reset(seed=1, options=3)
+
+
+def test_infos_one_dict_per_live_agent():
+    env = _env()
+    _, infos = env.reset(seed=1)
+    assert set(infos) == set(env.agents) and all(isinstance(v, dict) for v in infos.values())
+    k = 0
+    while env.agents:
+        live = list(env.agents)
+        *_, infos = env.step({a: np.zeros(2) for a in live})
+        k += 1
+        assert set(infos) == set(live) and all(i["step"] == k for i in infos.values())
+
+
+def test_truncation_at_max_cycles_and_never_termination():
+    env = _env(max_cycles=4)
+    assert env.max_cycles == 4
+    env.reset(seed=1)
+    flags = []
+    while env.agents:
+        _, _, term, trunc, _ = env.step({a: np.zeros(2) for a in env.agents})
+        assert not any(term.values())
+        flags.append(all(trunc.values()))
+        assert len(set(trunc.values())) == 1  # the whole team together
+    assert flags == [False, False, False, True] and env.sim.step_index == 4
+    assert _env(max_cycles=1000).max_cycles == 10  # at most the scenario's K
+    for bad in (0, -1, 2.5, True):
+        with pytest.raises(ValueError, match="max_cycles"):
+            _env(max_cycles=bad)
+
+
+def test_render_fps_is_the_scenario_step_rate():
+    assert _env().metadata["render_fps"] == 5  # dt = 0.2 s
+    s = canopy.load("trajectory_handover", overrides={"clock.dt": 0.5})
+    assert canopy.TrackingEnv(s).metadata["render_fps"] == 2
+    assert canopy.TrackingEnv.metadata["render_modes"] == ["human", "rgb_array"]
+
+
+def test_render_rgb_array_and_none():
+    env = _env(render_mode="rgb_array", render_size=(160, 120))
+    assert env.render() is None  # before reset
+    env.reset(seed=1)
+    frame = env.render()
+    assert frame.shape == (120, 160, 3) and frame.dtype == np.uint8 and frame.std() > 0
+    assert _env().render() is None  # no render mode
+    with pytest.raises(ValueError, match="render_mode"):
+        _env(render_mode="ansi")
+
+
+def test_render_human_shows_each_step_in_a_figure():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")  # no display here: the figure is drawn off screen
+    env = _env(render_mode="human", render_size=(160, 120))
+    assert env.reset(seed=1) and env.render() is None
+    _, figure, image = env._window
+    env.step({a: np.array([3.0, 0.0]) for a in env.agents})
+    np.testing.assert_array_equal(image.get_array(), env.sim.render(160, 120))
+    env.close()
+    assert env._window is None and env.sim is None and env.agents == []
+
+
+def test_close_ends_the_episode():
+    env = _env()
+    env.reset(seed=1)
+    env.close()
+    assert env.agents == [] and env.sim is None
+    with pytest.raises(RuntimeError, match="reset"):
+        env.step({})
+    env.reset(seed=1)  # usable again after close
+    assert env.agents == env.possible_agents

@@ -1,0 +1,124 @@
+"""VectorEnv: n TrackingEnv episodes stepped together on C++ threads, batched numpy arrays out.
+
+    envs = canopy.VectorEnv(16, "trajectory_handover")
+    obs, infos = envs.reset(seed=0)                  # (16, n_agents, obs_size) float32
+    obs, rew, term, trunc, infos = envs.step(actions)   # actions (16, n_agents, 2) m/s
+
+Gymnasium's vector conventions (``num_envs``, ``single_observation_space`` /
+``single_action_space`` per environment, ``observation_space`` / ``action_space`` batched), with
+the agents as the second axis: rewards, terminations and truncations are (n, n_agents) arrays.
+An environment whose episode ends is reset in the same call (autoreset, as Gymnasium ≤ 0.29
+and SuperSuit): its row of the returned observations is then the new episode's first one, and
+``infos["final_observation"]`` (masked by ``infos["_final_observation"]``) holds its last one.
+
+Environment i behaves exactly as ``TrackingEnv`` with the same arguments reset with seed
+``seed + i`` (or ``seed[i]``), and after an episode ends with ``reset()``: the same observations
+and rewards, bit for bit (python/tests/test_vector.py). The stepping, observations and rewards
+run in C++ without the GIL, on ``threads`` threads (default: one per core).
+"""
+import numpy as np
+
+from . import _canopy
+from .env import TrackingEnv
+from .spaces import box
+
+
+class VectorEnv:
+    def __init__(self, n, scenario, max_tracks=8, max_trees=8, map_radius=30.0,
+                 reward_trace="position", keep_planner=False, max_cycles=None, threads=None):
+        """n environments of ``scenario`` (a Scenario, a built-in name or a file); the other
+        arguments are TrackingEnv's. threads: worker threads, the caller's included (default:
+        one per core, at most n)."""
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+            raise ValueError(f"VectorEnv: n: expected an integer ≥ 1, got {n!r}")
+        if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer))
+                                    or threads < 1):
+            raise ValueError(f"VectorEnv: threads: expected an integer ≥ 1 or None, got {threads!r}")
+        # One TrackingEnv, never stepped: the same checks, scenario, spaces and agents.
+        self.single_env = TrackingEnv(scenario, max_tracks=max_tracks, max_trees=max_trees,
+                                      map_radius=map_radius, reward_trace=reward_trace,
+                                      keep_planner=keep_planner, max_cycles=max_cycles)
+        env = self.single_env
+        self.num_envs = int(n)
+        self.possible_agents = list(env.possible_agents)
+        self.agents = list(env.possible_agents)
+        self.max_cycles = env.max_cycles
+        self.metadata = dict(env.metadata, autoreset_mode="same-step")
+        self._core = _canopy._VectorCore(env.scenario, self.num_envs, env._observer,
+                                         env.max_cycles, 0 if threads is None else int(threads))
+        self.threads = self._core.threads
+
+        agents = self.possible_agents
+        obs_low = np.stack([env.observation_space(a).low for a in agents])
+        obs_high = np.stack([env.observation_space(a).high for a in agents])
+        act_low = np.stack([env.action_space(a).low for a in agents])
+        act_high = np.stack([env.action_space(a).high for a in agents])
+        self.single_observation_space = box(obs_low, obs_high, obs_low.shape)
+        self.single_action_space = box(act_low, act_high, act_low.shape)
+        batch = (self.num_envs,)
+        self.observation_space = box(np.broadcast_to(obs_low, batch + obs_low.shape),
+                                     np.broadcast_to(obs_high, batch + obs_high.shape),
+                                     batch + obs_low.shape)
+        self.action_space = box(np.broadcast_to(act_low, batch + act_low.shape),
+                                np.broadcast_to(act_high, batch + act_high.shape),
+                                batch + act_low.shape)
+        self._rngs = [None] * self.num_envs
+        self._seeds = np.zeros(self.num_envs, np.int64)
+        self._started = False
+
+    def _next_seed(self, i):
+        """As TrackingEnv.reset() without a seed: drawn from the generator the last seed started."""
+        if self._rngs[i] is None:
+            self._rngs[i] = np.random.default_rng()
+        return int(self._rngs[i].integers(0, 2**31 - 1))
+
+    def reset(self, seed=None, options=None):
+        """Starts every environment's episode. seed: None, an int s (environment i gets s + i)
+        or a sequence of n ints. Returns (observations (n, n_agents, size), infos) with
+        infos["seed"] the episodes' seeds (n,)."""
+        if options:
+            raise ValueError(f"VectorEnv.reset: options: unknown keys {sorted(options)} (none are read)")
+        if seed is None:
+            seeds = [self._next_seed(i) for i in range(self.num_envs)]
+        else:
+            seeds = [int(seed) + i for i in range(self.num_envs)] if np.ndim(seed) == 0 else [int(s) for s in seed]
+            if len(seeds) != self.num_envs:
+                raise ValueError(f"VectorEnv.reset: seed: expected an int or {self.num_envs} ints, got {len(seeds)}")
+            self._rngs = [np.random.default_rng(s) for s in seeds]
+        self._core.reset(list(range(self.num_envs)), seeds)
+        self._seeds[:] = seeds
+        self._started = True
+        return self._core.observations.copy(), {"seed": self._seeds.copy()}
+
+    def step(self, actions):
+        """actions: (n, n_agents, 2) velocities (m/s). Returns observations (n, n_agents, size)
+        float32, rewards (n, n_agents) float64, terminations and truncations (n, n_agents) bool
+        and infos: "step" (n,) the step each environment reached, and for environments whose
+        episode ended (and was reset) "_final_observation" (n,) bool, "final_observation" and
+        "seed" (the new episodes' seeds)."""
+        if not self._started:
+            raise RuntimeError("VectorEnv.step: call reset() first")
+        self._core.step(actions)
+        core = self._core
+        ended = core.ended.copy()
+        rewards = core.rewards.copy()
+        steps = core.steps.copy()
+        terminations = np.zeros((self.num_envs, len(self.possible_agents)), bool)
+        truncations = np.repeat(ended[:, None], len(self.possible_agents), axis=1)
+        infos = {"step": steps}
+        if ended.any():
+            infos["final_observation"] = core.observations.copy()
+            infos["_final_observation"] = ended
+            which = np.flatnonzero(ended)
+            new_seeds = [self._next_seed(int(i)) for i in which]
+            core.reset([int(i) for i in which], new_seeds)
+            self._seeds[which] = new_seeds
+            infos["seed"] = self._seeds.copy()
+        return core.observations.copy(), rewards, terminations, truncations, infos
+
+    def close(self):
+        self.single_env.close()
+        self._started = False
+
+    def __len__(self):
+        return self.num_envs

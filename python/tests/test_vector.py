@@ -1,0 +1,144 @@
+"""VectorEnv against TrackingEnv (the same episodes, bit for bit) and the GIL released by
+Simulation.step (issue 30)."""
+import sys
+import threading
+
+import numpy as np
+import pytest
+
+import canopy
+
+
+def _scenario():
+    return canopy.load("trajectory_handover", overrides={"clock.duration": 2.0})  # K = 10
+
+
+def _actions(rng, n, agents):
+    return rng.uniform(-4, 4, (n, agents, 2))
+
+
+@pytest.mark.parametrize("threads", [None, 1, 3])
+def test_eight_envs_equal_eight_single_envs_bit_for_bit(threads):
+    n, seed, cycles = 8, 100, 4
+    vec = canopy.VectorEnv(n, _scenario(), max_tracks=4, max_trees=4, max_cycles=cycles,
+                           threads=threads)
+    singles = [canopy.TrackingEnv(_scenario(), max_tracks=4, max_trees=4, max_cycles=cycles)
+               for _ in range(n)]
+    agents = vec.possible_agents
+    obs, infos = vec.reset(seed=seed)
+    expected = [env.reset(seed=seed + i)[0] for i, env in enumerate(singles)]
+    np.testing.assert_array_equal(infos["seed"], np.arange(seed, seed + n))
+    rng = np.random.default_rng(0)
+    ended = 0
+    for k in range(2 * cycles + 1):  # two autoresets
+        for i in range(n):
+            for j, a in enumerate(agents):
+                assert obs[i, j].tobytes() == expected[i][a].tobytes(), (k, i, a)
+        actions = _actions(rng, n, len(agents))
+        obs, rew, term, trunc, infos = vec.step(actions)
+        expected = []
+        for i, env in enumerate(singles):  # one after another, on this thread
+            o, r, t, tr, _ = env.step({a: actions[i, j] for j, a in enumerate(agents)})
+            assert list(rew[i]) == [r[a] for a in agents]
+            assert list(term[i]) == [t[a] for a in agents] and list(trunc[i]) == [tr[a] for a in agents]
+            if not env.agents:  # the vector env reset it in the same call: so do we
+                for j, a in enumerate(agents):
+                    assert infos["final_observation"][i, j].tobytes() == o[a].tobytes()
+                assert infos["_final_observation"][i]
+                o, info = env.reset()  # the seed drawn as VectorEnv draws it
+                assert info[agents[0]]["seed"] == infos["seed"][i]
+                ended += 1
+            expected.append(o)
+    assert ended == 2 * n
+
+
+def test_shapes_spaces_and_dtypes():
+    vec = canopy.VectorEnv(3, _scenario(), max_tracks=2, max_trees=1)
+    size = 3 + 7 * 2 + 4
+    assert vec.num_envs == len(vec) == 3 and vec.possible_agents == ["UAV1", "UAV2"]
+    assert vec.single_observation_space.shape == (2, size)
+    assert vec.observation_space.shape == (3, 2, size) and vec.action_space.shape == (3, 2, 2)
+    obs, _ = vec.reset(seed=0)
+    assert obs.dtype == np.float32 and vec.observation_space.contains(obs)
+    obs, rew, term, trunc, infos = vec.step(vec.action_space.sample())
+    assert rew.shape == term.shape == trunc.shape == (3, 2) and rew.dtype == np.float64
+    assert term.dtype == trunc.dtype == bool and not term.any() and not trunc.any()
+    np.testing.assert_array_equal(infos["step"], [1, 1, 1])
+    assert vec.observation_space.contains(obs)
+    # returned arrays are the caller's: the next step does not overwrite them
+    kept = obs.copy()
+    vec.step(np.zeros((3, 2, 2)))
+    np.testing.assert_array_equal(obs, kept)
+
+
+def test_bad_input_raises():
+    vec = canopy.VectorEnv(2, _scenario())
+    with pytest.raises(RuntimeError, match="reset"):
+        vec.step(np.zeros((2, 2, 2)))
+    vec.reset(seed=1)
+    with pytest.raises(ValueError, match=r"shape \(2, 2, 2\)"):
+        vec.step(np.zeros((2, 2)))
+    bad = np.zeros((2, 2, 2))
+    bad[1, 0, 1] = np.inf
+    with pytest.raises(ValueError, match=r"actions\[1, 0\]: expected a finite velocity"):
+        vec.step(bad)
+    with pytest.raises(ValueError, match="2 ints"):
+        vec.reset(seed=[1, 2, 3])
+    for n in (0, -1, 1.5):
+        with pytest.raises(ValueError, match="n: expected"):
+            canopy.VectorEnv(n, _scenario())
+    with pytest.raises(ValueError, match="threads"):
+        canopy.VectorEnv(2, _scenario(), threads=0)
+
+
+def test_step_releases_the_gil():
+    # While one thread steps a Simulation, another runs Python: it finds the simulation busy
+    # (a RuntimeError, never a half-written record). With the GIL held through step() no other
+    # thread could run then, and it would never see it busy.
+    # trajectory_handover with its planner: a planning step takes milliseconds, time enough for
+    # the other thread to be scheduled even on a loaded machine.
+    sim = canopy.Simulation(canopy.load("trajectory_handover"), seed=1)
+    finished = threading.Event()
+
+    def stepping():
+        while not sim.done:
+            sim.step()
+        finished.set()
+
+    seen_busy = 0
+    old = sys.getswitchinterval()
+    sys.setswitchinterval(1e-4)
+    try:
+        thread = threading.Thread(target=stepping)
+        thread.start()
+        while not finished.is_set():
+            try:
+                sim.step_index
+            except RuntimeError as e:
+                assert "another thread is stepping it" in str(e)
+                seen_busy += 1
+        thread.join()
+    finally:
+        sys.setswitchinterval(old)
+    assert seen_busy > 0 and sim.step_index == sim.steps
+
+
+def test_simulations_step_in_parallel_threads_give_the_same_runs():
+    # Four simulations stepped on four Python threads at once end where a lone run ends.
+    def run(out, seed):
+        sim = canopy.Simulation(canopy.load("demo"), seed=seed)
+        while not sim.done:
+            sim.step()
+        out[seed] = (sim.uav_states.copy(), sim.target_states.copy(), sim.record_line())
+
+    alone, together = {}, {}
+    for seed in range(4):
+        run(alone, seed)
+    threads = [threading.Thread(target=run, args=(together, seed)) for seed in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for seed in range(4):
+        assert together[seed][2] == alone[seed][2]
+        np.testing.assert_array_equal(together[seed][0], alone[seed][0])
