@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/number_text.h"
 #include "spec/error.h"
 
 namespace canopy::app {
@@ -44,10 +45,9 @@ Reader<std::string> anyText() {
 
 Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range) {
   return {[in_range = std::move(in_range)](const std::string& text) -> std::optional<double> {
-            char* end = nullptr;
-            const double x = std::strtod(text.c_str(), &end);
-            if (text.empty() || *end != '\0' || !std::isfinite(x) || !in_range(x))
-              return std::nullopt;
+            // JSON's grammar: no blanks, '+', hexadecimal, inf or nan.
+            const std::optional<double> x = strictNumber(text);
+            if (!x || !in_range(*x)) return std::nullopt;
             return x;
           },
           std::move(expected)};

@@ -6,11 +6,13 @@
 #include <string>
 
 #include "app/commands.h"
+#include "core/number_text.h"
 #include "core/printable.h"
 #include "spec/budget.h"
 #include "spec/error.h"
 #include "spec/forest.h"
 #include "spec/loader.h"
+#include "world/tree.h"
 
 namespace canopy::app {
 
@@ -55,12 +57,18 @@ class List : public Command {
 };
 
 int List::run() {
-  for (const std::string& name : spec::libraryScenarios()) {
+  std::vector<std::string> skipped;
+  const std::vector<std::string> names = spec::libraryScenarios(&skipped);
+  for (const std::string& entry : skipped)
+    std::fprintf(stderr, "canopy: warning: %s\n", printable(entry, 300).c_str());
+  for (const std::string& name : names) {
     std::string description;
     try {
       description = spec::loadScenario(name).description;
     } catch (const spec::ScenarioError& e) {
       description = std::string("(invalid: ") + e.what() + ")";
+    } catch (const std::filesystem::filesystem_error& e) {
+      description = std::string("(cannot be read: ") + e.code().message() + ")";
     }
     std::printf("%-24s %s\n", printable(name, 100).c_str(), printable(description, 300).c_str());
   }
@@ -72,24 +80,26 @@ std::optional<Aabb> readRegion(const std::string& text) {
   std::vector<double> v;
   std::stringstream stream(text);
   for (std::string item; std::getline(stream, item, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(x)) return std::nullopt;
-    v.push_back(x);
+    const std::optional<double> x = strictNumber(item);
+    if (!x || std::abs(*x) > world::kMaxTreeCoordinate) return std::nullopt;
+    v.push_back(*x);
   }
+  if (text.empty() || text.back() == ',') return std::nullopt;
   if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) return std::nullopt;
   return Aabb{Vec2(v[0], v[1]), Vec2(v[2], v[3])};
 }
 
-// "R" or "R_MIN,R_MAX" (m), 0 < R_MIN <= R_MAX.
+// "R" or "R_MIN,R_MAX" (m), 0 < R_MIN <= R_MAX <= 1e7 (a crown Box2D can hold).
 std::optional<spec::RadiusRange> readRadius(const std::string& text) {
   const auto comma = text.find(',');
-  char* end = nullptr;
-  spec::RadiusRange r;
-  r.lo = std::strtod(text.c_str(), &end);
-  r.hi = comma == std::string::npos ? r.lo : std::strtod(text.c_str() + comma + 1, &end);
-  if (!(r.lo > 0.0) || !(r.hi >= r.lo) || !std::isfinite(r.hi) || *end != '\0') return std::nullopt;
-  return r;
+  const std::optional<double> lo = strictNumber(std::string_view(text).substr(0, comma));
+  const std::optional<double> hi =
+      comma == std::string::npos ? lo : strictNumber(std::string_view(text).substr(comma + 1));
+  if (!lo || !hi || !(*lo > 0.0) || !(*hi >= *lo)) return std::nullopt;
+  for (double r : {*lo, *hi}) {
+    if (!world::box2dProblem(world::TreeDef::disc(Vec2::Zero(), r)).empty()) return std::nullopt;
+  }
+  return spec::RadiusRange{*lo, *hi};
 }
 
 class Forest : public Command {
@@ -98,10 +108,10 @@ class Forest : public Command {
       : Command(canopy, "forest", "canopy forest --aoi x0,y0,x1,y1 --lambda L --radius R [options]",
                 "Prints a Poisson tree layout as a layout file.") {
     CLI::App& o = options();
-    addValue(
-        o, "--aoi", "x0,y0,x1,y1", def_.region,
-        Reader<Aabb>{readRegion, "x0,y0,x1,y1 (four finite numbers, m) with x1 > x0 and y1 > y0"},
-        "the region (m)")
+    addValue(o, "--aoi", "x0,y0,x1,y1", def_.region,
+             Reader<Aabb>{readRegion,
+                          "x0,y0,x1,y1 (four numbers within ±1e7 m) with x1 > x0 and y1 > y0"},
+             "the region (m)")
         ->default_str("required")
         ->required();
     addValue(o, "--lambda", "L", def_.lambda,
@@ -110,7 +120,8 @@ class Forest : public Command {
         ->default_str("required")
         ->required();
     addValue(o, "--radius", "R[,R_MAX]", def_.radius,
-             Reader<spec::RadiusRange>{readRadius, "a positive radius R or a range R_MIN,R_MAX"},
+             Reader<spec::RadiusRange>{readRadius,
+                                       "a radius R in (0, 1e7] or a range R_MIN,R_MAX within it"},
              "crown radius or range (m)")
         ->default_str("required")
         ->required();

@@ -10,6 +10,7 @@
 #include "analysis/intervals.h"
 #include "analysis/sweep_analysis.h"
 #include "app/commands.h"
+#include "core/number_text.h"
 #include "core/output_file.h"
 #include "core/printable.h"
 #include "experiments/sweep.h"
@@ -84,16 +85,13 @@ namespace {
 
 // "I/N" with 0 <= I < N <= 1000000.
 std::optional<experiments::Shard> readShard(const std::string& text) {
+  // Plain decimal digits on both sides: no blanks, signs or leading zeros (' 1/2', '+1/2').
   const std::size_t slash = text.find('/');
-  char* end = nullptr;
-  const long index = slash == std::string::npos ? -1 : std::strtol(text.c_str(), &end, 10);
-  const bool index_ok = slash != std::string::npos && end == text.c_str() + slash && slash > 0;
-  const long count = index_ok ? std::strtol(text.c_str() + slash + 1, &end, 10) : 0;
-  if (!index_ok || *end != '\0' || slash + 1 == text.size() || count < 1 || count > 1000000 ||
-      index < 0 || index >= count) {
-    return std::nullopt;
-  }
-  return experiments::Shard{static_cast<int>(index), static_cast<int>(count)};
+  if (slash == std::string::npos || text[0] == '-') return std::nullopt;
+  const std::optional<long long> index = strictInteger(text.substr(0, slash), 0, 999999);
+  const std::optional<long long> count = strictInteger(text.substr(slash + 1), 1, 1000000);
+  if (!index || !count || *index >= *count) return std::nullopt;
+  return experiments::Shard{static_cast<int>(*index), static_cast<int>(*count)};
 }
 
 int statusCommand(const std::string& dir) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "core/printable.h"
 #include "core/random.h"
 #include "core/text_file.h"
 #include "spec/budget.h"
@@ -47,7 +48,47 @@ std::string boundedSlug(const std::string& path, const std::string& value) {
   return text;
 }
 
-// Each axis once, each of its values once (as JSON values: 1 and 1.0 are the same value).
+// A dotted override path in one spelling: an index as its number ("uavs.00" → "uavs.0").
+std::string canonicalPath(const std::string& path) {
+  std::string out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = path.find('.', start);
+    std::string part = path.substr(start, dot == std::string::npos ? dot : dot - start);
+    const std::size_t nonzero = part.find_first_not_of('0');
+    if (!part.empty() && part.find_first_not_of("0123456789") == std::string::npos)
+      part = nonzero == std::string::npos ? "0" : part.substr(nonzero);
+    out += (out.empty() ? "" : ".") + part;
+    if (dot == std::string::npos) return out;
+    start = dot + 1;
+  }
+}
+
+// The scenario fields an axis writes, canonical: its path, or every key of a named axis's groups.
+std::vector<std::string> fieldsWritten(const SweepAxis& axis) {
+  std::vector<std::string> fields;
+  if (axis.set.empty()) return {canonicalPath(axis.path)};
+  for (const std::vector<std::string>& group : axis.set) {
+    for (const std::string& assignment : group) {
+      const std::string field = canonicalPath(assignment.substr(0, assignment.find('=')));
+      if (std::find(fields.begin(), fields.end(), field) == fields.end()) fields.push_back(field);
+    }
+  }
+  return fields;
+}
+
+// True when one field is the other or lies inside it ("planner" and "planner.horizon").
+bool overlaps(const std::string& a, const std::string& b) {
+  const std::string& shorter = a.size() < b.size() ? a : b;
+  const std::string& longer = a.size() < b.size() ? b : a;
+  return longer.compare(0, shorter.size(), shorter) == 0 &&
+         (longer.size() == shorter.size() || longer[shorter.size()] == '.');
+}
+
+// Each axis once, each of its values once (as JSON values: 1 and 1.0 are the same value). Two
+// axes that write one field — the same path spelt twice ("uavs.0.v_max", "uavs.00.v_max"), a
+// path and a named axis whose groups set it, or a field and the object holding it — are one
+// axis given twice: the later would silently override the earlier.
 void requireDistinct(const Field& axes, const std::vector<SweepAxis>& read) {
   // A read-only view (no effective-config slot): the fields were recorded when first read.
   const std::vector<Field> axis_fields =
@@ -57,6 +98,14 @@ void requireDistinct(const Field& axes, const std::vector<SweepAxis>& read) {
       if (read[a].path == read[b].path) {
         axis_fields[a].fail("expected each axis once, \"" + read[a].path + "\" is also axes[" +
                             std::to_string(b) + "]");
+      }
+      for (const std::string& mine : fieldsWritten(read[a])) {
+        for (const std::string& theirs : fieldsWritten(read[b])) {
+          if (!overlaps(mine, theirs)) continue;
+          axis_fields[a].fail("expected each scenario field on one axis only: this axis writes \"" +
+                              printable(mine, 100) + "\", which axes[" + std::to_string(b) +
+                              "] writes as \"" + printable(theirs, 100) + "\"");
+        }
       }
     }
     const Field values = axis_fields[a].object().required("values");
@@ -111,6 +160,18 @@ void requireFeasibleSweep(const Field& root, const SweepSpec& sweep) {
         spec::budgetMessage(configurations * sweep.trials, limits.sweep_trials,
                             "trials (configurations × trials)"));
   }
+}
+
+// A trial file in a configuration's folder that another sweep wrote (another configuration id):
+// its numbers would be averaged with this sweep's.
+void requireOwnTrial(const TrialResult& trial, const SweepConfig& config, const SweepSpec& sweep,
+                     const fs::path& path) {
+  if (trial.config_id == config.id) return;
+  throw spec::ScenarioError(
+      path.string(), "config_id",
+      "this trial belongs to another sweep (configuration \"" + printable(trial.config_id, 100) +
+          "\", expected \"" + printable(config.id, 100) + "\" of sweep \"" +
+          printable(sweep.name, 100) + "\"); its folder mixes two sweeps' results");
 }
 
 }  // namespace
@@ -258,17 +319,22 @@ fs::path trialPath(const fs::path& out_dir, const std::string& config_id, int in
 SweepResults loadSweepResults(const fs::path& out_dir, const spec::LoadOptions& load) {
   SweepResults results;
   const fs::path manifest = out_dir / "sweep.json";
-  if (!fs::is_regular_file(manifest)) {
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(manifest, error))) {
     throw spec::ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
   }
-  results.sweep = loadSweepText(readTextFile(manifest).value_or(""), manifest.string(), load);
+  results.sweep =
+      loadSweepText(spec::readResultText(manifest, "the sweep.json that `canopy sweep` writes"),
+                    manifest.string(), load);
   results.configs = configurations(results.sweep);
   for (const SweepConfig& config : results.configs) {
     std::vector<TrialResult> trials;
     for (int t = 0; t < results.sweep.trials; ++t) {
       const fs::path path = trialPath(out_dir, config.id, t);
-      if (const auto text = readTextFile(path))
-        trials.push_back(trialFromJson(*text, path.string()));
+      if (!fs::exists(fs::symlink_status(path, error))) continue;  // not run yet
+      const TrialResult& trial = trials.emplace_back(trialFromJson(
+          spec::readResultText(path, "a trial file that `canopy sweep` writes"), path.string()));
+      requireOwnTrial(trial, config, results.sweep, path);
     }
     results.trials.push_back(std::move(trials));
   }

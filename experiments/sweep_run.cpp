@@ -46,8 +46,10 @@ std::string axisOf(const SweepSpec& sweep, const SweepConfig& config,
   // "uavs[0].v_max" → "uavs.0.v_max", the --set spelling of the paths in the sweep.
   std::string dotted;
   for (const char c : error.field()) {
-    if (c == '[') dotted += '.';
-    else if (c != ']') dotted += c;
+    if (c == '[')
+      dotted += '.';
+    else if (c != ']')
+      dotted += c;
   }
   const auto names = [&dotted](const std::string& assignment) {
     const std::string path = assignment.substr(0, assignment.find('='));
@@ -84,10 +86,9 @@ PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool
     try {
       prepared.specs.push_back(spec::loadScenario(sweep.scenario, load));
     } catch (const spec::ScenarioError& e) {
-      throw spec::ScenarioError(sweep.file.empty() ? sweep.name : sweep.file,
-                                axisOf(sweep, config, e),
-                                "configuration " + config.id + " is not a valid scenario: " +
-                                    e.what());
+      throw spec::ScenarioError(
+          sweep.file.empty() ? sweep.name : sweep.file, axisOf(sweep, config, e),
+          "configuration " + config.id + " is not a valid scenario: " + e.what());
     }
     trees += static_cast<double>(prepared.specs.back().trees.size());
   }
@@ -104,9 +105,24 @@ PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool
       fs::exists(out_dir / "trials", error) && !fs::is_empty(out_dir / "trials", error);
   const bool guarded = has_trials || strict;
   const fs::path manifest = out_dir / "sweep.json";
-  if (guarded && fs::exists(manifest) && readTextFile(manifest) != sweep.effective_json + "\n") {
-    throw spec::ScenarioError(manifest.string(), "",
-                              "this directory holds a different sweep; choose another --out");
+  // Read back bounded like every result file: a FIFO, link or directory in their place is named.
+  const auto present = [](const fs::path& path) {
+    std::error_code ignored;
+    return fs::exists(fs::symlink_status(path, ignored));
+  };
+  if (has_trials && !present(manifest)) {
+    throw spec::ScenarioError(
+        out_dir.string(), "",
+        "this directory holds trials but no sweep.json: they belong to another sweep (or to "
+        "none); choose another --out");
+  }
+  if (guarded && present(manifest) &&
+      spec::readResultText(manifest, "the sweep.json that `canopy sweep` writes") !=
+          sweep.effective_json + "\n") {
+    throw spec::ScenarioError(
+        manifest.string(), "",
+        "this directory belongs to another sweep (its sweep.json differs from this "
+        "sweep's); choose another --out");
   }
   // The same sweep text over a changed scenario file (or changed defaults) would resume on
   // trials of another scenario: each configuration's effective scenario is fingerprinted.
@@ -115,7 +131,9 @@ PreparedSweep prepareSweep(const SweepSpec& sweep, const fs::path& out_dir, bool
     fingerprints[prepared.configs[c].id] = scenarioFingerprint(prepared.specs[c]);
   const fs::path scenarios_file = out_dir / "scenarios.json";
   const std::string fingerprint_text = fingerprints.dump(2) + "\n";
-  if (guarded && fs::exists(scenarios_file) && readTextFile(scenarios_file) != fingerprint_text) {
+  if (guarded && present(scenarios_file) &&
+      spec::readResultText(scenarios_file, "the scenarios.json that `canopy sweep` writes") !=
+          fingerprint_text) {
     throw spec::ScenarioError(
         scenarios_file.string(), "",
         "the scenario behind this sweep has changed since its trials ran (a "
@@ -216,11 +234,13 @@ int runSweep(const SweepSpec& sweep, const SweepOptions& options) {
 
 SweepStatus sweepStatus(const fs::path& out_dir) {
   const fs::path manifest = out_dir / "sweep.json";
-  if (!fs::is_regular_file(manifest)) {
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(manifest, error))) {
     throw spec::ScenarioError(out_dir.string(), "", "not a sweep directory (no sweep.json)");
   }
   const SweepSpec sweep =
-      loadSweepText(readTextFile(manifest).value_or(""), manifest.string(), spec::LoadOptions{});
+      loadSweepText(spec::readResultText(manifest, "the sweep.json that `canopy sweep` writes"),
+                    manifest.string(), spec::LoadOptions{});
   SweepStatus status;
   status.name = sweep.name;
   status.trials_per_config = sweep.trials;

@@ -1,6 +1,7 @@
 #pragma once
 // Comparing a coverage CSV (coverageCsvHeader/Row) with a golden one, within a tolerance: what
 // `canopy coverage --check` and the golden tests both use.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,14 @@ namespace canopy::render {
 /// columns by `tolerance` (plus their printing, 1e-6); every other column (step, t, aoi_px, the
 /// per-target flags) must be the same text.
 inline constexpr double kDefaultCoverageTolerance = 0.001;
+
+/// A coverage CSV's limits, checked before anything is compared (a golden file is user input):
+/// its size, a line, a cell, its rows; and the length of one listed difference.
+inline constexpr std::size_t kMaxCoverageCsvBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxCoverageLineBytes = 64 * 1024;
+inline constexpr std::size_t kMaxCoverageCellBytes = 256;  // a number, or a column's name
+inline constexpr int kMaxCoverageRows = 10'000'001;  // steps: at most 10⁷ of dt, plus step 0
+inline constexpr std::size_t kMaxListedLine = 400;
 
 struct CoverageComparison {
   std::string bad_input;  // non-empty when either text is not a coverage CSV: what is wrong

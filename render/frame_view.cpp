@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "core/number_text.h"
 #include "core/printable.h"
 #include "sensing/footprint.h"
 #include "spec/error.h"
@@ -46,11 +47,14 @@ Aabb viewFor(const std::string& text, const spec::ScenarioSpec& spec) {
   std::vector<double> v;
   std::stringstream stream(text);
   for (std::string item; std::getline(stream, item, ',');) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(x)) break;
-    v.push_back(x);
+    const std::optional<double> x = strictNumber(item);
+    if (!x) {
+      v.clear();
+      break;
+    }
+    v.push_back(*x);
   }
+  if (text.empty() || text.back() == ',') v.clear();
   if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) {
     throw spec::ScenarioError(
         "command line", "--view",

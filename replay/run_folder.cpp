@@ -15,15 +15,11 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using spec::ScenarioError;
 
+// Bounded like a scenario file (spec::readResultText): a regular file, a record at most
+// kMaxResultBytes, the other files at most kMaxJsonBytes.
 std::string readText(const fs::path& path, const std::string& what) {
-  std::error_code error;
-  if (!fs::is_regular_file(path, error)) {
-    throw ScenarioError(path.string(), "",
-                        "missing: expected the " + what + " that `canopy run` writes");
-  }
-  std::optional<std::string> text = readTextFile(path);
-  if (!text) throw ScenarioError(path.string(), "", "cannot be read");
-  return std::move(*text);
+  return spec::readResultText(path, "the " + what + " that `canopy run` writes",
+                              what == "record" ? spec::kMaxResultBytes : spec::kMaxJsonBytes);
 }
 
 // Result files go through the bounded parse (depth, duplicate keys) like every JSON canopy reads.
@@ -36,8 +32,8 @@ Json parseBounded(const std::string& text) {
 }
 
 Json parseWhole(const fs::path& path, const std::string& what) {
-  Json json = parseBounded(readText(path, what));
-  if (json.is_discarded() || !json.is_object())
+  Json json = spec::parseJson(readText(path, what), path.string());  // names depth, syntax
+  if (!json.is_object())
     throw ScenarioError(path.string(), "", "is not a JSON object (not the " + what + " of a run)");
   return json;
 }

@@ -15,15 +15,11 @@ namespace fs = std::filesystem;
 using spec::Json;
 using spec::ScenarioError;
 
+// Bounded like a scenario file: a regular file (not a FIFO, device, directory or link), a
+// manifest at most kMaxJsonBytes, a record at most kMaxResultBytes.
 std::string readResultFile(const fs::path& path, const std::string& what) {
-  std::error_code error;
-  if (!fs::exists(fs::symlink_status(path, error))) {
-    throw ScenarioError(path.string(), "",
-                        "missing: expected the " + what + " that `canopy run` writes");
-  }
-  std::optional<std::string> text = readTextFile(path);
-  if (!text) throw ScenarioError(path.string(), "", "cannot be read");
-  return std::move(*text);
+  return spec::readResultText(path, "the " + what + " that `canopy run` writes",
+                              what == "record" ? spec::kMaxResultBytes : spec::kMaxJsonBytes);
 }
 
 // One record line's field, or a ScenarioError naming the line and the field.

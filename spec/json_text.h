@@ -3,6 +3,7 @@
 // results) is parsed here, bounded in size and depth, with duplicate keys refused, and its syntax
 // errors named by file, line and column.
 #include <cstddef>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -42,6 +43,20 @@ Json parseJson(const std::string& text, const std::string& file);
 std::string readJsonText(const std::string& path, const std::string& referenced_from = "");
 /// Reads and parses a regular file of at most kMaxJsonBytes; anything else is a ScenarioError.
 Json readJsonFile(const std::string& path, const std::string& referenced_from = "");
+
+/// Largest result file read back whole (record.jsonl, read line by line, may be this long): 1 GiB.
+constexpr std::size_t kMaxResultBytes = std::size_t{1} << 30;
+
+/// The text of a file canopy reads back (a run's manifest, record or summary, a sweep's files,
+/// trial results, a golden CSV): a regular file of at most `max_bytes`, read without waiting (a
+/// FIFO or device is refused, not opened for reading). A directory, FIFO, device, symbolic link
+/// (or link loop), missing or oversized file is a ScenarioError naming the file and saying it
+/// should be `what` ("the manifest that `canopy run` writes"). With `follow_links` (a path the
+/// user typed) one chain of links is followed first; a loop is still refused.
+std::string readResultText(const std::filesystem::path& path, const std::string& what,
+                           std::size_t max_bytes = kMaxJsonBytes, bool follow_links = false);
+/// readResultText, then the bounded parse (depth, duplicate keys), errors naming the file.
+Json readResultJson(const std::filesystem::path& path, const std::string& what);
 
 /// "a string \"x\"", "the number -3", "an array", ... for messages.
 std::string describe(const Json& value);

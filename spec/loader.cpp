@@ -243,14 +243,48 @@ std::vector<fs::path> scenarioSearchPath() {
   return dirs;
 }
 
-std::vector<std::string> libraryScenarios() {
-  std::vector<std::string> names;
+namespace {
+
+// Why `path` (an entry of a search-path folder) is no file at all, or "" when it is one or is
+// absent: a link loop or a link to nowhere.
+std::string brokenEntry(const fs::path& path) {
   std::error_code error;
+  const fs::file_status link = fs::symlink_status(path, error);
+  if (error || !fs::is_symlink(link)) return "";
+  (void)fs::status(path, error);
+  if (error == std::errc::too_many_symbolic_link_levels) return "a symbolic link loop";
+  if (error) return "a symbolic link that leads nowhere (" + error.message() + ")";
+  return "";
+}
+
+}  // namespace
+
+std::vector<std::string> libraryScenarios(std::vector<std::string>* skipped) {
+  std::vector<std::string> names;
+  auto skip = [skipped](const fs::path& path, const std::string& why) {
+    if (skipped) skipped->push_back(printable(path.string(), 200) + ": " + why);
+  };
   for (const fs::path& dir : scenarioSearchPath()) {
-    for (const auto& entry : fs::directory_iterator(dir, error)) {
-      if (entry.is_regular_file() && entry.path().extension() == ".json") {
-        names.push_back(entry.path().stem().string());
+    std::error_code error;
+    fs::directory_iterator it(dir, error);
+    if (error) {
+      if (error != std::errc::no_such_file_or_directory)
+        skip(dir, "cannot be listed (" + error.message() + ")");
+      continue;
+    }
+    for (; it != fs::directory_iterator(); it.increment(error)) {
+      if (error) {
+        skip(dir, "cannot be listed (" + error.message() + ")");
+        break;
       }
+      const fs::path& path = it->path();
+      if (path.extension() != ".json") continue;
+      if (const std::string why = brokenEntry(path); !why.empty()) {
+        skip(path, why + "; skipped");
+        continue;
+      }
+      std::error_code kind;
+      if (it->is_regular_file(kind)) names.push_back(path.stem().string());
     }
   }
   std::sort(names.begin(), names.end());
@@ -261,9 +295,13 @@ std::vector<std::string> libraryScenarios() {
 fs::path resolveScenario(const std::string& scenario) {
   std::error_code error;
   if (fs::is_regular_file(scenario, error)) return scenario;
+  if (const std::string why = brokenEntry(scenario); !why.empty())
+    throw ScenarioError(printable(scenario, 200), "", "cannot be read: " + why);
   for (const fs::path& dir : scenarioSearchPath()) {
     for (const fs::path& candidate : {dir / scenario, dir / (scenario + ".json")}) {
       if (fs::is_regular_file(candidate, error)) return candidate;
+      if (const std::string why = brokenEntry(candidate); !why.empty())
+        throw ScenarioError(printable(candidate.string(), 200), "", "cannot be read: " + why);
     }
   }
   if (fs::exists(scenario, error)) {

@@ -49,8 +49,11 @@ std::filesystem::path libraryDir();
 /// Where scenario names are looked up, in order: each folder of $CANOPY_PATH (':'-separated),
 /// then $CANOPY_LIBRARY_DIR if set, then the built-in library.
 std::vector<std::filesystem::path> scenarioSearchPath();
-/// Names of the scenarios in every folder of the search path, sorted, each once.
-std::vector<std::string> libraryScenarios();
+/// Names of the scenarios in every folder of the search path, sorted, each once. An entry that
+/// cannot be judged (a symbolic link loop, a link to nowhere) or a folder that cannot be listed
+/// is skipped, and said in `skipped` when given ("DIR/x.json: a symbolic link loop"), so that
+/// one bad entry does not hide the others.
+std::vector<std::string> libraryScenarios(std::vector<std::string>* skipped = nullptr);
 /// A path for `scenario`: an existing file, or NAME / NAME.json in the first folder of the search
 /// path that has it; a ScenarioError when none does.
 std::filesystem::path resolveScenario(const std::string& scenario);

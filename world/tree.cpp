@@ -1,8 +1,14 @@
 #include "world/tree.h"
 
+#include <box2d/b2_common.h>
+#include <box2d/b2_math.h>
+#include <box2d/b2_settings.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <sstream>
 
 namespace canopy::world {
 namespace {
@@ -129,6 +135,165 @@ Aabb bounds(const TreeDef& tree) {
     box.hi = box.hi.cwiseMax(v);
   }
   return box;
+}
+
+namespace {
+
+std::string metres(double x) {
+  std::ostringstream text;
+  text.precision(3);
+  text << x;
+  return text.str();
+}
+
+// Box2D's b2PolygonShape::Set (2.4.1) on float vertices: the number of vertices its
+// gift-wrapping hull keeps (it keeps the rightmost and every vertex with a strict left turn).
+int box2dHullSize(const std::vector<b2Vec2>& ps) {
+  const int n = static_cast<int>(ps.size());
+  int i0 = 0;
+  float x0 = ps[0].x;
+  for (int i = 1; i < n; ++i) {
+    const float x = ps[i].x;
+    if (x > x0 || (x == x0 && ps[i].y < ps[i0].y)) {
+      i0 = i;
+      x0 = x;
+    }
+  }
+  int m = 0;
+  int ih = i0;
+  for (;;) {
+    if (m > n) return -1;  // cannot happen for finite input; never loop
+    int ie = 0;
+    for (int j = 1; j < n; ++j) {
+      if (ie == ih) {
+        ie = j;
+        continue;
+      }
+      const b2Vec2 r = ps[ie] - ps[ih];
+      const b2Vec2 v = ps[j] - ps[ih];
+      const float c = b2Cross(r, v);
+      if (c < 0.0f) ie = j;
+      if (c == 0.0f && v.LengthSquared() > r.LengthSquared()) ie = j;
+    }
+    ++m;
+    ih = ie;
+    if (ie == i0) break;
+  }
+  return m;
+}
+
+// Box2D's ComputeCentroid area (float, from the first vertex), which it asserts > b2_epsilon.
+float box2dArea(const std::vector<b2Vec2>& vs) {
+  float area = 0.0f;
+  const b2Vec2 s = vs[0];
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    const b2Vec2 p2 = vs[i] - s;
+    const b2Vec2 p3 = (i + 1 < vs.size() ? vs[i + 1] : vs[0]) - s;
+    area += 0.5f * b2Cross(p2, p3);
+  }
+  return area;
+}
+
+// The convex polygon's width: over its edges, the least of the farthest vertex's distance from
+// the edge's line (counter-clockwise vertices).
+std::pair<double, std::size_t> widthOf(const std::vector<Vec2>& ccw) {
+  double width = std::numeric_limits<double>::infinity();
+  std::size_t at = 0;
+  for (std::size_t i = 0; i < ccw.size(); ++i) {
+    const Vec2 e = ccw[(i + 1) % ccw.size()] - ccw[i];
+    double farthest = 0.0;
+    for (const Vec2& v : ccw) farthest = std::max(farthest, cross(e, v - ccw[i]) / e.norm());
+    if (farthest < width) {
+      width = farthest;
+      at = i;
+    }
+  }
+  return {width, at};
+}
+
+}  // namespace
+
+std::string box2dPolygonProblem(const std::vector<Vec2>& vertices) {
+  const std::size_t n = vertices.size();
+  if (n < 3 || n > static_cast<std::size_t>(b2_maxPolygonVertices)) {
+    return "expected 3 to " + std::to_string(b2_maxPolygonVertices) +
+           " vertices (Box2D's b2_maxPolygonVertices), got " + std::to_string(n);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!vertices[i].allFinite() || vertices[i].cwiseAbs().maxCoeff() > kMaxTreeCoordinate) {
+      return "vertex " + std::to_string(i) +
+             ": expected coordinates within ±1e7 m (Box2D keeps them as floats)";
+    }
+  }
+  // What Box2D receives: the vertices rounded to floats.
+  std::vector<b2Vec2> floats;
+  std::vector<Vec2> rounded;
+  for (const Vec2& v : vertices) {
+    floats.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()));
+    rounded.emplace_back(floats.back().x, floats.back().y);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double d = (rounded[j] - rounded[i]).norm();
+      if (d < kMinPolygonEdge) {
+        return "vertices " + std::to_string(i) + " and " + std::to_string(j) +
+               ": expected at least 0.05 m apart (Box2D welds vertices closer than its linear "
+               "slop), got " +
+               metres(d) + " m";
+      }
+    }
+  }
+  if (!isStrictlyConvex(vertices)) {
+    return "expected the vertices of a convex polygon in order, with no three in a line";
+  }
+  if (!isStrictlyConvex(rounded) || box2dHullSize(floats) != static_cast<int>(n)) {
+    return "expected the vertices of a convex polygon in order, with no three in a line as "
+           "Box2D's floats (rounded to float these vertices are not strictly convex)";
+  }
+  // Robust to rounding: "in a line" means within the slop of the chord of its neighbours, in
+  // double and as floats; and the polygon is at least the slop wide in both.
+  for (const std::vector<Vec2>* shape :
+       {&vertices, static_cast<const std::vector<Vec2>*>(&rounded)}) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2& a = (*shape)[(i + n - 1) % n];
+      const Vec2& b = (*shape)[(i + 1) % n];
+      const double off = std::abs(cross(b - a, (*shape)[i] - a)) / (b - a).norm();
+      if (!(off >= b2_linearSlop)) {
+        return "vertex " + std::to_string(i) +
+               ": expected the vertices of a convex polygon with no three in a line, this one "
+               "lies " +
+               metres(off) + " m from the line through its neighbours (Box2D's linear slop is " +
+               metres(b2_linearSlop) + " m)";
+      }
+    }
+  }
+  std::vector<Vec2> ccw = vertices, ccw_rounded = rounded;
+  if (signedArea(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
+  if (signedArea(ccw_rounded) < 0.0) std::reverse(ccw_rounded.begin(), ccw_rounded.end());
+  auto [width, edge] = widthOf(ccw);
+  if (const auto [w, e] = widthOf(ccw_rounded); w < width) {
+    width = w;
+    edge = e;
+  }
+  const float area = std::abs(box2dArea(floats));
+  if (!(width >= b2_linearSlop) || !(area > 100.0f * b2_epsilon)) {
+    return "expected a polygon at least " + metres(b2_linearSlop) +
+           " m wide (Box2D's linear slop), got " + metres(width) + " m across from edge " +
+           std::to_string(edge) + " (" + metres(area) + " m² in all)";
+  }
+  return "";
+}
+
+std::string box2dProblem(const TreeDef& tree) {
+  if (tree.shape == TreeShape::polygon) return box2dPolygonProblem(tree.vertices);
+  if (!tree.centre.allFinite() || tree.centre.cwiseAbs().maxCoeff() > kMaxTreeCoordinate)
+    return "expected a centre within ±1e7 m (Box2D keeps coordinates as floats)";
+  if (!(tree.radius > 0.0 && tree.radius <= kMaxTreeCoordinate) ||
+      !(static_cast<float>(tree.radius) > 0.0f)) {
+    return "expected a radius in (0, 1e7] m that stays positive as a float, got " +
+           metres(tree.radius);
+  }
+  return "";
 }
 
 }  // namespace canopy::world

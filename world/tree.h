@@ -1,6 +1,7 @@
 #pragma once
 // Tree occluders (SOO): a crown that hides what is under it. Exact geometry in double; Box2D
 // only supplies candidates.
+#include <string>
 #include <vector>
 
 #include "core/types.h"
@@ -37,5 +38,22 @@ double signedArea(const std::vector<Vec2>& vertices);
 
 /// True when the polygon is strictly convex (no three collinear vertices) in either orientation.
 bool isStrictlyConvex(const std::vector<Vec2>& vertices);
+
+/// Coordinates a crown may reach, m: Box2D keeps positions as floats, one metre apart at 1e7.
+constexpr double kMaxTreeCoordinate = 1e7;
+/// Shortest polygon edge, m: ten times Box2D's linear slop (it welds vertices within half of it).
+constexpr double kMinPolygonEdge = 0.05;
+
+/// Why Box2D could not take this crown as it is — "" when it can. Box2D (world.cpp) receives the
+/// vertices as floats and asserts (aborting the process) on a polygon it cannot build; this runs
+/// its checks first, on the same floats: 3 to b2_maxPolygonVertices vertices, every coordinate
+/// finite and within ±kMaxTreeCoordinate, strictly convex in double and as floats (Box2D's own
+/// gift-wrapping hull keeps every vertex), every edge at least kMinPolygonEdge, and the polygon
+/// at least b2_linearSlop wide (a sliver's float area falls under Box2D's epsilon). A disc needs
+/// a centre within the limit and a radius in (0, kMaxTreeCoordinate] that is positive as a float.
+/// The answer names the vertex or edge at fault ("vertices 2 and 3 …").
+std::string box2dProblem(const TreeDef& tree);
+/// The same for a polygon given by its vertices in either orientation.
+std::string box2dPolygonProblem(const std::vector<Vec2>& vertices);
 
 }  // namespace canopy::world

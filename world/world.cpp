@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/angles.h"
 #include "world/unicycle.h"
@@ -147,6 +149,10 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
   b2_->forest = w.CreateBody(&forest_def);
   for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
     const TreeDef& tree = def_.trees[k];
+    // The loader refuses these with their field; a world built from elsewhere (Python, tests)
+    // gets an exception here instead of Box2D's assertion aborting the process.
+    if (const std::string problem = box2dProblem(tree); !problem.empty())
+      throw std::invalid_argument("tree " + std::to_string(k) + ": " + problem);
     if (tree.shape == TreeShape::disc) {
       b2CircleShape circle;
       circle.m_p = toB2(tree.centre);

@@ -15,16 +15,23 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kMaxIncludeDepth = 16;
-constexpr double kMinPolygonEdge = 0.05;  // m; Box2D welds vertices closer than its linear slop
 
 RadiusRange readRadius(const Field& field) {
   if (field.json().is_array()) {
     const std::vector<Field> lohi = field.elements(2, 2);
     const RadiusRange range{lohi[0].number(Bound::positive), lohi[1].number(Bound::positive)};
     if (range.hi < range.lo) field.fail("expected [min, max] with max >= min");
+    for (std::size_t i = 0; i < 2; ++i) {
+      const std::string problem =
+          world::box2dProblem(world::TreeDef::disc(Vec2::Zero(), i ? range.hi : range.lo));
+      if (!problem.empty()) lohi[i].fail(problem);
+    }
     return range;
   }
   const double r = field.number(Bound::positive);
+  if (const std::string problem = world::box2dProblem(world::TreeDef::disc(Vec2::Zero(), r));
+      !problem.empty())
+    field.fail(problem);
   return {r, r};
 }
 
@@ -90,14 +97,9 @@ world::TreeDef readPolygon(ObjectReader& reader) {
   const Field list = reader.required("vertices");
   std::vector<Vec2> vertices;
   for (const Field& v : list.elements(3, 8)) vertices.push_back(v.vec2());
-  if (!world::isStrictlyConvex(vertices)) {
-    list.fail("expected the vertices of a convex polygon in order, with no three in a line");
-  }
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    if ((vertices[(i + 1) % vertices.size()] - vertices[i]).norm() < kMinPolygonEdge) {
-      list.fail("expected polygon edges of at least 0.05 m");
-    }
-  }
+  // Box2D's own limits, checked here: a polygon it cannot build would abort the run.
+  if (const std::string problem = world::box2dPolygonProblem(vertices); !problem.empty())
+    list.fail(problem);
   return world::TreeDef::polygon(std::move(vertices));
 }
 
@@ -107,8 +109,11 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
   if (type == "disc") {
     const Field centre_field = reader.required("centre");
     const Vec2 centre = centre_field.vec2();
-    const double radius = reader.required("radius").number(Bound::positive);
+    const Field radius_field = reader.required("radius");
+    const double radius = radius_field.number(Bound::positive);
     out.push_back(world::TreeDef::disc(centre, radius));
+    if (const std::string problem = world::box2dProblem(out.back()); !problem.empty())
+      radius_field.fail(problem);
     requireCentresInside(centre_field, {out.back()}, aoi);
   } else if (type == "polygon") {
     out.push_back(readPolygon(reader));

@@ -72,7 +72,7 @@ other_sweep_refused)
   code=$?
   set -e
   [ "$code" -eq 2 ] || fail "a shard of another sweep exited $code"
-  grep -q "different sweep" err.txt || fail "message: $(cat err.txt)"
+  grep -q "another sweep" err.txt || fail "message: $(cat err.txt)"
   ;;
 mpi)
   set +e; "$canopy" sweep small.json --out single --mpi >/dev/null 2>err.txt; code=$?; set -e
