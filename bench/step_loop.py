@@ -9,6 +9,12 @@ One untimed warm-up run comes first; callgrind slopes (runs N2 − N1) cancel it
 canopy.VectorEnv(N, SCENARIO) stepped STEPS times with zero actions (autoresets included) on
 one thread and on one thread per core, PAIRS alternating pairs of timings: prints the env-steps
 per second of each (median and best of the pairs) and the median of the pair ratios.
+
+    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --env SCENARIO RUNS [SEED]
+
+canopy.TrackingEnv(SCENARIO) reset and stepped to its end RUNS times with zero actions (after one
+untimed episode): for callgrind, whose slope over RUNS against Simulation::tick()'s inclusive
+count is the environment's overhead per step.
 """
 import statistics
 import sys
@@ -42,6 +48,22 @@ def main():
           f"steps 1..K {stepping / n * 1e6:.1f} us (checksum {checksum:.6f})")
 
 
+def env_loop(name, runs, seed):
+    import numpy as np
+
+    env = canopy.TrackingEnv(name)
+    zero = {a: np.zeros(2) for a in env.possible_agents}
+    steps, t = 0, 0.0
+    for run in range(-1, runs):
+        env.reset(seed=seed)
+        t0 = time.perf_counter()
+        while env.agents:
+            env.step(zero)
+            steps += run >= 0
+        t += (time.perf_counter() - t0) if run >= 0 else 0.0
+    print(f"TrackingEnv({name!r}): {runs} episodes, {steps} steps, {t / max(steps, 1) * 1e6:.1f} us a step")
+
+
 def vector(n, name, steps, pairs):
     import numpy as np
 
@@ -67,7 +89,9 @@ def vector(n, name, steps, pairs):
 
 
 if __name__ == "__main__":
-    if sys.argv[1] == "--vector":
+    if sys.argv[1] == "--env":
+        env_loop(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]) if len(sys.argv) > 4 else 1)
+    elif sys.argv[1] == "--vector":
         vector(int(sys.argv[2]), sys.argv[3], int(sys.argv[4]), int(sys.argv[5]))
     else:
         main()
