@@ -6,10 +6,10 @@
 
 The compiled part is canopy._canopy; everything here is thin Python over it.
 """
-from ._canopy import ScenarioError, Simulation, library_scenarios, read_run
+from ._canopy import ScenarioError, Simulation, library_scenarios
 from .scenario import Scenario, load
 from . import forest
-from .jobs import analyze, run, sweep
+from .jobs import analyze, read_run, run, sweep
 from .env import TrackingEnv
 
 __all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios",

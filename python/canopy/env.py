@@ -20,7 +20,7 @@ draws the next episode's seed from the generator the last seed started.
 """
 import numpy as np
 
-from . import _canopy
+from . import _args, _canopy
 from .scenario import Scenario, load
 from .spaces import box
 
@@ -36,16 +36,25 @@ class TrackingEnv:
                  keep_planner=False):
         """scenario: a Scenario, a built-in name or a file. The planner is switched off
         (planner.algorithm = "none") unless keep_planner: the agents' actions fly the UAVs."""
+        fn = "TrackingEnv"
         if not isinstance(scenario, Scenario):
-            scenario = load(scenario)
+            scenario = load(_args.path(scenario, fn, "scenario"))
+        max_tracks = _args.integer(max_tracks, fn, "max_tracks", 0, 4096)
+        max_trees = _args.integer(max_trees, fn, "max_trees", 0, 4096)
+        map_radius = _args.number(map_radius, fn, "map_radius", 0.0, _args.MAX_COORDINATE,
+                                  low_open=True, expected="a radius in (0, 1e7] m")
+        render_size = _args.image_size(render_size, fn, "render_size")
+        keep_planner = _args.boolean(keep_planner, fn, "keep_planner")
+        if reward_fn is not None and not callable(reward_fn):
+            raise _args.error(fn, "reward_fn", f"expected None or a callable, got {reward_fn!r:.60}")
         self.scenario = scenario.copy()
         if not keep_planner:
             self.scenario["planner.algorithm"] = "none"
         self.scenario.validate()
         if render_mode not in (None, "rgb_array"):
-            raise ValueError(f"TrackingEnv: render_mode: expected None or 'rgb_array', got {render_mode!r}")
+            raise _args.error(fn, "render_mode", f"expected None or 'rgb_array', got {render_mode!r:.60}")
         if reward_trace not in ("position", "full"):
-            raise ValueError(f"TrackingEnv: reward_trace: expected 'position' or 'full', got {reward_trace!r}")
+            raise _args.error(fn, "reward_trace", f"expected 'position' or 'full', got {reward_trace!r:.60}")
         self.render_mode = render_mode
         self.render_size = tuple(render_size)
         self.max_tracks, self.max_trees, self.map_radius = int(max_tracks), int(max_trees), float(map_radius)
@@ -77,8 +86,9 @@ class TrackingEnv:
 
     def reset(self, seed=None, options=None):
         if seed is not None:
-            self._rng = np.random.default_rng(seed)
-            episode_seed = int(seed)
+            # Gymnasium's seeds are non-negative integers; the simulation's --seed range.
+            episode_seed = _args.seed(seed, "TrackingEnv.reset")
+            self._rng = np.random.default_rng(episode_seed)
         else:
             if self._rng is None:
                 self._rng = np.random.default_rng()
@@ -95,14 +105,20 @@ class TrackingEnv:
         missing = [a for a in self.agents if a not in actions]
         unknown = [a for a in actions if a not in self._index]
         if missing or unknown:
-            raise ValueError(f"TrackingEnv.step: actions: expected one per agent {self.agents}; "
-                             f"missing {missing}, unknown {unknown}")
+            raise _args.error("TrackingEnv.step", "actions",
+                              f"expected one per agent {self.agents}; "
+                              f"missing {missing}, unknown {unknown}")
         commands = np.zeros((len(self.possible_agents), 2))
         for agent in self.agents:
-            action = np.asarray(actions[agent], dtype=np.float64)
-            if action.shape != (2,):
-                raise ValueError(f"TrackingEnv.step: actions[{agent!r}]: expected shape (2,) "
-                                 f"(vx, vy in m/s), got {action.shape}")
+            try:
+                action = np.asarray(actions[agent], dtype=np.float64)
+            except (TypeError, ValueError):
+                raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
+                                  f"expected (vx, vy) in m/s, got {actions[agent]!r:.60}") from None
+            if action.shape != (2,) or not np.all(np.isfinite(action)):
+                raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
+                                  f"expected shape (2,) of finite numbers (vx, vy in m/s), got shape "
+                                  f"{action.shape} {action!r:.60}")
             commands[self._index[agent]] = action
         self.sim.step(commands)
         acting = self.agents
