@@ -7,7 +7,11 @@
 #include <string>
 
 #include "experiments/sweep.h"
+#include "experiments/trial.h"
+#include "render/coverage_check.h"
+#include "sim/record_reader.h"
 #include "spec/error.h"
+#include "spec/json_text.h"
 #include "spec/loader.h"
 #include "spec/track_csv.h"
 
@@ -93,10 +97,119 @@ bool parseTrackInput(std::string_view data) {
   return true;
 }
 
+namespace {
+
+void writeFile(const fs::path& path, std::string_view bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// The demo's effective configuration, loaded once.
+const spec::ScenarioSpec& demo() {
+  static const spec::ScenarioSpec spec = spec::loadScenario("demo");
+  return spec;
+}
+
+}  // namespace
+
+bool readResultInput(std::string_view data) {
+  if (data.empty()) return false;
+  const int kind = static_cast<unsigned char>(data[0]) % 5;
+  const std::string_view bytes = data.substr(1);
+  const fs::path dir = sandboxDir() / "result";
+  fs::create_directories(dir);
+  try {
+    switch (kind) {
+      case 0:
+        writeFile(dir / "manifest.json", bytes);
+        sim::readManifest(dir / "manifest.json");
+        break;
+      case 1:
+        writeFile(dir / "record.jsonl", bytes);
+        sim::readRecordTruth(dir / "record.jsonl", demo());
+        break;
+      case 2:
+        experiments::trialFromJson(std::string(bytes), (dir / "trial_0000.json").string());
+        break;
+      case 3: {
+        const std::string actual =
+            "step,t,covered_px,visible_px,aoi_px,covered_fraction\n0,0,1,1,100,0.01\n"
+            "1,0.2,2,1,100,0.02\n";
+        const render::CoverageComparison result = render::compareCoverageCsv(
+            std::string(bytes), actual, render::kDefaultCoverageTolerance, 5, "golden.csv");
+        if (!result.bad_input.empty()) return false;
+        if (result.first.size() > 5) throw std::logic_error("more differences listed than asked");
+        for (const std::string& line : result.first)
+          if (line.size() > 2 * render::kMaxListedLine)
+            throw std::logic_error("a listed difference longer than its bound");
+        break;
+      }
+      default:
+        writeFile(dir / "sweep.json", bytes);
+        experiments::loadSweepText(
+            spec::readResultText(dir / "sweep.json", "the sweep.json of a sweep"),
+            (dir / "sweep.json").string());
+        break;
+    }
+  } catch (const spec::ScenarioError&) {
+    return false;
+  }
+  return true;
+}
+
+bool pythonEditInput(std::string_view data) {
+  const std::size_t newline = data.find('\n');
+  const std::string path(data.substr(0, newline));
+  const std::string value_text(newline == std::string_view::npos ? std::string_view()
+                                                                 : data.substr(newline + 1));
+  spec::Json config = spec::parseBoundedJson(demo().effective_config);
+  spec::Json value;
+  try {
+    value = spec::parseBoundedJson(value_text);
+  } catch (const std::exception&) {
+    return false;  // Python would not get here: its value is a Python object, always JSON
+  }
+  // Python's Scenario._parent: walk the dotted path; the last part is set.
+  spec::Json* node = &config;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = path.find('.', start);
+    const std::string part = path.substr(start, dot == std::string::npos ? dot : dot - start);
+    spec::Json* next = nullptr;
+    if (node->is_array()) {
+      if (part.empty() || part.size() > 9 ||
+          part.find_first_not_of("0123456789") != std::string::npos)
+        return false;  // KeyError in Python
+      const std::size_t index = std::stoul(part);
+      if (index >= node->size()) return false;
+      next = &(*node)[index];
+    } else if (node->is_object()) {
+      if (dot != std::string::npos && !node->contains(part)) return false;
+      next = &(*node)[part];
+    } else {
+      return false;
+    }
+    if (dot == std::string::npos) {
+      *next = std::move(value);
+      break;
+    }
+    node = next;
+    start = dot + 1;
+  }
+  try {
+    spec::loadScenarioText(config.dump(), "<python>");
+  } catch (const spec::ScenarioError&) {
+    return false;
+  }
+  return true;
+}
+
 const std::vector<Target>& targets() {
   static const std::vector<Target> all = {{"scenario_loader", &loadScenarioInput},
                                           {"sweep_loader", &loadSweepInput},
-                                          {"track_csv", &parseTrackInput}};
+                                          {"track_csv", &parseTrackInput},
+                                          {"result_files", &readResultInput},
+                                          {"python_edits", &pythonEditInput}};
   return all;
 }
 

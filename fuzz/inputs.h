@@ -16,6 +16,16 @@ bool loadScenarioInput(std::string_view data);
 bool loadSweepInput(std::string_view data);
 /// Track CSV text: parseTrackCsv.
 bool parseTrackInput(std::string_view data);
+/// A result file read back: the first byte picks the reader (mod 5: a run's manifest.json, a
+/// record.jsonl against the demo's scenario, a trial file, a golden coverage CSV against a
+/// fixed one, a sweep folder's sweep.json), the rest is the file's bytes (written to the
+/// sandbox for the readers that take a path).
+bool readResultInput(std::string_view data);
+/// Python's edit of a scenario (Scenario.__setitem__): the first line is a dotted path, the
+/// rest a JSON value; it is set into the demo's effective configuration as Python sets it (a
+/// missing key of an object is added, a list index must exist), and the edited configuration,
+/// dumped as json.dumps does, is loaded with loadScenarioText — the C++ path of every edit.
+bool pythonEditInput(std::string_view data);
 
 struct Target {
   const char* name;  // the fuzz target (fuzz/<name>.cpp) and its folders of inputs

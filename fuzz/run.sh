@@ -6,7 +6,8 @@
 # tests/data/fuzz_regressions/TARGET/). Inputs that find new coverage accumulate in
 # build/fuzz/corpus/TARGET/, so that longer runs go on where earlier ones stopped.
 #
-#   fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]     # targets: scenario_loader sweep_loader track_csv
+#   fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]
+#     targets: scenario_loader sweep_loader track_csv result_files python_edits
 #
 # Environment: CANOPY_WERROR=1 builds with warnings as errors; CANOPY_JOBS=N build jobs (2);
 # CANOPY_FUZZ_FLAGS adds libFuzzer flags (e.g. "-runs=1000000" or "-jobs=2").
@@ -17,7 +18,7 @@ build="$root/build/fuzz"
 seconds="${1:-60}"
 [ $# -gt 0 ] && shift
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scenario_loader sweep_loader track_csv)
+[ ${#targets[@]} -eq 0 ] && targets=(scenario_loader sweep_loader track_csv result_files python_edits)
 
 werror=OFF
 [ "${CANOPY_WERROR:-0}" = 1 ] && werror=ON

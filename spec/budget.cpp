@@ -1,7 +1,10 @@
 #include "spec/budget.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <unordered_map>
 
 #include "spec/error.h"
 
@@ -37,14 +40,53 @@ std::string budgetMessage(double amount, double limit, const std::string& what) 
          roughly(amount) + " (--budget K raises every work limit K-fold)";
 }
 
+double visibleTreesBound(const ScenarioSpec& spec) {
+  if (spec.trees.empty() || spec.uavs.empty()) return 0.0;
+  double reach = 0.0;  // the largest footprint's circumradius, and a crown's
+  for (const UavSpec& uav : spec.uavs)
+    reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
+  double crown = 0.0;
+  for (const world::TreeDef& tree : spec.trees) crown = std::max(crown, tree.radius);
+  // A footprint of circumradius R placed anywhere lies in a square of side 2 (R + crown), which
+  // meets at most 2 × 2 cells of that side (+1 each way, cells are half-open): count the trees
+  // per cell, and bound any window by the busiest 3 × 3 block.
+  const double cell = std::max(2.0 * (reach + crown), 1e-3);
+  std::unordered_map<std::uint64_t, double> counts;
+  counts.reserve(spec.trees.size());
+  auto key = [](long long i, long long j) {
+    return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint32_t>(j);
+  };
+  for (const world::TreeDef& tree : spec.trees) {
+    const auto i = static_cast<long long>(std::floor(tree.centre.x() / cell));
+    const auto j = static_cast<long long>(std::floor(tree.centre.y() / cell));
+    counts[key(i, j)] += 1.0;
+  }
+  double busiest = 0.0;
+  for (const world::TreeDef& tree : spec.trees) {
+    const auto i = static_cast<long long>(std::floor(tree.centre.x() / cell));
+    const auto j = static_cast<long long>(std::floor(tree.centre.y() / cell));
+    double block = 0.0;
+    for (long long di = -1; di <= 1; ++di)
+      for (long long dj = -1; dj <= 1; ++dj)
+        if (const auto it = counts.find(key(i + di, j + dj)); it != counts.end())
+          block += it->second;
+    busiest = std::max(busiest, block);
+    if (busiest >= static_cast<double>(spec.trees.size())) break;
+  }
+  return std::min(busiest, static_cast<double>(spec.trees.size()));
+}
+
 WorkEstimate estimateWork(const ScenarioSpec& spec) {
   const double steps = spec.steps() + 1.0;
   const double uavs = static_cast<double>(spec.uavs.size());
   const double targets = static_cast<double>(spec.targets.size());
   const double clutter = spec.sensing.clutter_rate;
   WorkEstimate work;
-  // Sensing: every UAV looks at every target and its clutter; the world moves every body.
-  work.world_units = steps * (uavs + targets + uavs * (targets + clutter));
+  work.visible_trees = visibleTreesBound(spec);
+  const double seen = targets + clutter + work.visible_trees;  // detections per scan, at most
+  // Sensing: every UAV looks at every target, its clutter and the trees in its footprint; the
+  // world moves every body.
+  work.world_units = steps * (uavs + targets + uavs * seen);
   // record.jsonl: per step and UAV a fixed part (pose, plan, intentions) and a part per track
   // held (targets, clutter-born tentatives); set above the sizes measured on the library
   // scenarios (tests/spec/budget_test.cpp); a polygonal crown or wall in an agent's map
@@ -54,11 +96,18 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     polygon_vertices += static_cast<double>(tree.vertices.size());
   work.record_bytes =
       steps * uavs * (1000.0 + 600.0 * (targets + clutter) + 45.0 * polygon_vertices);
-  // JPDA: gating is tracks × measurements; a cluster enumerates at most max_hypotheses events.
-  const double measurements = targets + clutter;
+  // JPDA: gating is tracks × measurements (trees seen are measurements and tracks too); a
+  // cluster enumerates at most max_hypotheses events, each as deep as the cluster's smaller side
+  // (counted up to 64: larger clusters exceed any max_hypotheses at once), and a cluster with
+  // more events is solved by belief propagation, at most kPropagationSweeps sweeps over its
+  // gated pairs (at most tracks × measurements).
+  const double measurements = seen;
+  const double depth = std::min(measurements, 64.0);
+  constexpr double kPropagationSweeps = 1000.0;  // agents/tracking/jpda_solver.cpp
   work.tracking_units =
       steps * uavs *
-      (measurements * measurements + (measurements > 1.0 ? spec.tracking.max_hypotheses : 0.0));
+      (measurements * measurements * (1.0 + (measurements > 1.0 ? kPropagationSweeps : 0.0)) +
+       (measurements > 1.0 ? spec.tracking.max_hypotheses * std::max(1.0, depth) : 0.0));
   work.fusion_units = steps * spec.fusion.rounds * uavs * uavs * std::max(1.0, targets);
   const agents::PlannerConfig& p = spec.planner;
   if (p.algorithm != agents::PlannerAlgorithm::none) {
@@ -79,14 +128,25 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
   const WorkEstimate work = estimateWork(spec);
   require(spec, "occluders", static_cast<double>(spec.trees.size()), limits.trees,
           "trees in all (every layout and include together)");
-  require(spec, "clock.duration", work.world_units, limits.world_units,
-          "world units per trial (steps × (UAVs + targets + UAVs × (targets + clutter_rate)))");
+  require(spec,
+          work.visible_trees > static_cast<double>(spec.targets.size()) ? "occluders"
+                                                                        : "clock.duration",
+          work.world_units, limits.world_units,
+          "world units per trial (steps × (UAVs + targets + UAVs × (targets + clutter_rate + "
+          "trees one footprint can hold)))");
   require(spec, "clock.duration", work.record_bytes, limits.record_bytes,
           "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate) + 45 × "
           "polygon vertices))");
-  require(spec, "tracking.max_hypotheses", work.tracking_units, limits.tracking_units,
-          "tracking units per trial (steps × UAVs × ((targets + sensing.clutter_rate)² + "
-          "max_hypotheses))");
+  // The field named is the one that drives the estimate most.
+  const double m =
+      static_cast<double>(spec.targets.size()) + spec.sensing.clutter_rate + work.visible_trees;
+  const double enumeration = spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
+  const std::string tracking_field = enumeration > 1001.0 * m * m ? "tracking.max_hypotheses"
+                                     : work.visible_trees > m - work.visible_trees ? "occluders"
+                                                                                   : "targets";
+  require(spec, tracking_field, work.tracking_units, limits.tracking_units,
+          "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
+          "targets + sensing.clutter_rate + trees one footprint can hold)");
   require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
           "fusion units per trial (steps × rounds × UAVs² × targets)");
   require(spec, "planner.pso", work.planning_units, limits.planning_units,

@@ -26,8 +26,14 @@ struct WorkLimits {
 /// The limits multiplied by `scale` (> 0).
 WorkLimits workLimits(double scale = 1.0);
 
+/// At most how many trees one scan can see: the largest number of tree centres in any square of
+/// side 2 × the largest footprint's circumradius (every tree in a footprint is a detection, a
+/// track and a line of the record). Counted on a grid of half that side, O(trees).
+double visibleTreesBound(const ScenarioSpec& spec);
+
 /// What one trial of `spec` asks for, in the units of WorkLimits.
 struct WorkEstimate {
+  double visible_trees = 0.0;  // visibleTreesBound
   double world_units = 0.0;
   double record_bytes = 0.0;
   double tracking_units = 0.0;

@@ -11,7 +11,18 @@ namespace {
 // built. Depth is bounded like the parse (deeper text is refused there before this runs).
 class LineScanner {
  public:
-  explicit LineScanner(const std::string& text) : text_(text) {}
+  explicit LineScanner(const std::string& text, const std::set<std::string>* wanted = nullptr)
+      : text_(text), wanted_(wanted) {
+    // Every path that holds a wanted one ("uavs", "uavs[3]" for "uavs[3].v_max"): the scan
+    // descends into these only.
+    if (wanted_) {
+      for (const std::string& w : *wanted_) {
+        for (std::size_t i = 1; i < w.size(); ++i)
+          if (w[i] == '.' || w[i] == '[') holders_.insert(w.substr(0, i));
+        holders_.insert(w);
+      }
+    }
+  }
 
   std::map<std::string, int> scan() {
     skipBlank();
@@ -67,9 +78,54 @@ class LineScanner {
     return out;
   }
 
+  // Whether `path` or a path inside it is wanted (always, without a wanted set).
+  bool wantedUnder(const std::string& path) const {
+    return !wanted_ || path.empty() || holders_.count(path) > 0;
+  }
+  void record(const std::string& path, int line) {
+    if (!wanted_ || wanted_->count(path)) lines_.emplace(path, line);
+  }
+
+  // Steps over one value, building nothing (strings, brackets and comments respected).
+  void skipValue() {
+    int open = 0;
+    while (!atEnd()) {
+      const char c = peek();
+      if (c == '"') {
+        advance();
+        while (!atEnd() && peek() != '"') {
+          if (peek() == '\\') advance();
+          if (!atEnd()) advance();
+        }
+        if (!atEnd()) advance();
+        if (open == 0) return;
+      } else if (c == '{' || c == '[') {
+        ++open;
+        advance();
+      } else if (c == '}' || c == ']') {
+        if (open == 0) return;  // the enclosing container's end
+        advance();
+        if (--open == 0) return;
+      } else if (c == '/') {
+        const std::size_t before = at_;
+        skipBlank();
+        if (at_ == before) advance();  // a lone '/': not JSON, the parse says where
+      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == ',') {
+        if (open == 0) return;
+        advance();
+      } else {
+        advance();  // a number's or a literal's characters
+      }
+    }
+  }
+
   void value(const std::string& path, int depth) {
     if (atEnd() || depth > kMaxDepth) return;
-    if (!path.empty()) lines_.emplace(path, line_);
+    if (!wantedUnder(path)) {
+      skipValue();
+      return;
+    }
+    if (!path.empty()) record(path, line_);
     const char c = peek();
     if (c == '{') {
       advance();
@@ -79,7 +135,7 @@ class LineScanner {
         const int key_line = line_;
         const std::string key = string();
         const std::string child = path.empty() ? key : path + "." + key;
-        lines_.emplace(child, key_line);
+        record(child, key_line);
         skipBlank();
         if (peek() != ':') return;
         advance();
@@ -117,6 +173,8 @@ class LineScanner {
   }
 
   const std::string& text_;
+  const std::set<std::string>* wanted_;
+  std::set<std::string> holders_;
   std::size_t at_ = 0;
   int line_ = 1;
   std::map<std::string, int> lines_;
@@ -126,6 +184,11 @@ class LineScanner {
 
 std::map<std::string, int> jsonValueLines(const std::string& text) {
   return LineScanner(text).scan();
+}
+
+std::map<std::string, int> jsonValueLines(const std::string& text,
+                                          const std::set<std::string>& wanted) {
+  return LineScanner(text, &wanted).scan();
 }
 
 }  // namespace canopy::spec

@@ -19,10 +19,10 @@ _BUILTIN = _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "scenario
 if _os.path.isdir(_os.path.join(_BUILTIN, "library")):
     _canopy._set_builtin_scenarios(_BUILTIN)
 
-from ._canopy import ScenarioError, Simulation, library_scenarios, read_run  # noqa: E402
+from ._canopy import ScenarioError, Simulation, library_scenarios  # noqa: E402
 from .scenario import Scenario, load  # noqa: E402
 from . import forest  # noqa: E402
-from .jobs import analyze, run, sweep  # noqa: E402
+from .jobs import analyze, read_run, run, sweep  # noqa: E402
 from .env import TrackingEnv  # noqa: E402
 from .vector import VectorEnv  # noqa: E402
 

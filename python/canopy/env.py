@@ -26,7 +26,7 @@ episode's seed from the generator the last seed started.
 """
 import numpy as np
 
-from . import _canopy
+from . import _args, _canopy
 from .scenario import Scenario, load
 from .spaces import box
 
@@ -58,12 +58,6 @@ except ImportError:  # not installed: a stand-in with ParallelEnv's own attribut
             return self.metadata.get("name", type(self).__name__)
 
 
-def _check_count(name, value, minimum):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
-        raise ValueError(f"TrackingEnv: {name}: expected an integer ≥ {minimum}, got {value!r}")
-    return int(value)
-
-
 class TrackingEnv(_ParallelEnv):
     metadata = {"name": "canopy_tracking_v0", "render_modes": ["human", "rgb_array"],
                 "is_parallelizable": True, "render_fps": 5}
@@ -74,28 +68,35 @@ class TrackingEnv(_ParallelEnv):
         """scenario: a Scenario, a built-in name or a file. The planner is switched off
         (planner.algorithm = "none") unless keep_planner: the agents' actions fly the UAVs.
         max_cycles: the episode's length in steps (default and at most the scenario's K)."""
+        fn = "TrackingEnv"
         if not isinstance(scenario, Scenario):
-            scenario = load(scenario)
+            scenario = load(_args.path(scenario, fn, "scenario"))
+        max_tracks = _args.integer(max_tracks, fn, "max_tracks", 0, 4096)
+        max_trees = _args.integer(max_trees, fn, "max_trees", 0, 4096)
+        map_radius = _args.number(map_radius, fn, "map_radius", 0.0, _args.MAX_COORDINATE,
+                                  low_open=True, expected="a radius in (0, 1e7] m")
+        render_size = _args.image_size(render_size, fn, "render_size")
+        keep_planner = _args.boolean(keep_planner, fn, "keep_planner")
+        if reward_fn is not None and not callable(reward_fn):
+            raise _args.error(fn, "reward_fn", f"expected None or a callable, got {reward_fn!r:.60}")
         self.scenario = scenario.copy()
         if not keep_planner:
             self.scenario["planner.algorithm"] = "none"
         self.scenario.validate()
         if render_mode not in (None, "human", "rgb_array"):
-            raise ValueError("TrackingEnv: render_mode: expected None, 'human' or 'rgb_array', "
-                             f"got {render_mode!r}")
+            raise _args.error(fn, "render_mode", f"expected None, 'human' or 'rgb_array', got {render_mode!r:.60}")
         if reward_trace not in ("position", "full"):
-            raise ValueError(f"TrackingEnv: reward_trace: expected 'position' or 'full', got {reward_trace!r}")
+            raise _args.error(fn, "reward_trace", f"expected 'position' or 'full', got {reward_trace!r:.60}")
         self.render_mode = render_mode
         self.render_size = tuple(render_size)
-        self.max_tracks = _check_count("max_tracks", max_tracks, 0)
-        self.max_trees = _check_count("max_trees", max_trees, 0)
+        self.max_tracks, self.max_trees = max_tracks, max_trees
         self.map_radius = float(map_radius)
         self.reward_trace, self.reward_fn = reward_trace, reward_fn
         self._observer = _canopy._Observer(self.scenario, self.max_tracks, self.max_trees,
                                            self.map_radius, reward_trace)
         self.steps, self.dt, n_targets = self._observer.steps, self._observer.dt, self._observer.n_targets
         self.max_cycles = self.steps if max_cycles is None else min(
-            _check_count("max_cycles", max_cycles, 1), self.steps)
+            _args.integer(max_cycles, fn, "max_cycles", 1, 2**31 - 1), self.steps)
         # An instance's own metadata: the frame rate is the scenario's (one frame per step).
         self.metadata = dict(type(self).metadata, render_fps=max(1, round(1.0 / self.dt)))
 
@@ -138,8 +139,9 @@ class TrackingEnv(_ParallelEnv):
             if options:
                 raise ValueError(f"TrackingEnv.reset: options: unknown keys {sorted(options)} (none are read)")
         if seed is not None:
-            self._rng = np.random.default_rng(seed)
-            episode_seed = int(seed)
+            # Gymnasium's seeds are non-negative integers; the simulation's --seed range.
+            episode_seed = _args.seed(seed, "TrackingEnv.reset")
+            self._rng = np.random.default_rng(episode_seed)
         else:
             if self._rng is None:
                 self._rng = np.random.default_rng()
@@ -159,14 +161,20 @@ class TrackingEnv(_ParallelEnv):
         missing = [a for a in self.agents if a not in actions]
         unknown = [a for a in actions if a not in self._index]
         if missing or unknown:
-            raise ValueError(f"TrackingEnv.step: actions: expected one per agent {self.agents}; "
-                             f"missing {missing}, unknown {unknown}")
+            raise _args.error("TrackingEnv.step", "actions",
+                              f"expected one per agent {self.agents}; "
+                              f"missing {missing}, unknown {unknown}")
         commands = np.zeros((len(self.possible_agents), 2))
         for agent in self.agents:
-            action = np.asarray(actions[agent], dtype=np.float64)
-            if action.shape != (2,):
-                raise ValueError(f"TrackingEnv.step: actions[{agent!r}]: expected shape (2,) "
-                                 f"(vx, vy in m/s), got {action.shape}")
+            try:
+                action = np.asarray(actions[agent], dtype=np.float64)
+            except (TypeError, ValueError):
+                raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
+                                  f"expected (vx, vy) in m/s, got {actions[agent]!r:.60}") from None
+            if action.shape != (2,) or not np.all(np.isfinite(action)):
+                raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
+                                  f"expected shape (2,) of finite numbers (vx, vy in m/s), got shape "
+                                  f"{action.shape} {action!r:.60}")
             commands[self._index[agent]] = action
         self.sim.step(commands)  # without the GIL: other threads run meanwhile
         acting = self.agents

@@ -5,7 +5,7 @@ import os
 
 import numpy as np
 
-from . import _canopy
+from . import _args, _canopy
 from .scenario import Scenario, load
 
 
@@ -14,12 +14,16 @@ def run(scenario, out, seed=None, frames=False, frame_every=1, size=None):
     ``canopy run`` writes into ``out``: manifest.json, record.jsonl, timings.jsonl, summary.json
     and, with ``frames``, frames/frame_NNNNNN.png every ``frame_every`` steps (``size`` = (width,
     height) px, default the CLI's). Returns summary.json as a dict."""
+    fn = "canopy.run"
     if not isinstance(scenario, Scenario):
-        scenario = load(scenario)
-    width, height = size if size is not None else (0, 0)
+        scenario = load(_args.path(scenario, fn, "scenario"))
+    out = _args.path(out, fn, "out")
+    seed = _args.seed(seed, fn)
+    frames = _args.boolean(frames, fn, "frames")
+    frame_every = _args.integer(frame_every, fn, "frame_every", 1, _args.MAX_FRAME_EVERY)
+    width, height = _args.image_size(size, fn) if size is not None else (0, 0)
     text, file, roots = scenario._source()
-    summary = _canopy._run(text, file, roots, os.fspath(out), seed, bool(frames), int(frame_every),
-                           int(width), int(height))
+    summary = _canopy._run(text, file, roots, out, seed, frames, frame_every, width, height)
     return json.loads(summary)
 
 
@@ -27,8 +31,19 @@ def sweep(file, out, jobs=1, allowed_roots=()):
     """Runs the sweep file's trials into ``out`` on ``jobs`` threads, as ``canopy sweep FILE
     --out OUT --jobs JOBS`` (resumable; the same bytes however it is run). Returns the number
     of trials run now (trials already in ``out`` are not run again)."""
-    roots = [os.fspath(r) for r in allowed_roots]
-    return _canopy._sweep(os.fspath(file), os.fspath(out), int(jobs), roots)
+    fn = "canopy.sweep"
+    file, out = _args.path(file, fn, "file"), _args.path(out, fn, "out")
+    jobs = _args.integer(jobs, fn, "jobs", 1, _args.MAX_JOBS)
+    roots = _args.paths(allowed_roots, fn, "allowed_roots")
+    return _canopy._sweep(file, out, jobs, roots)
+
+
+def read_run(dir):
+    """The truth of a finished run (the --out folder of canopy.run or ``canopy run``), read back
+    from manifest.json and record.jsonl: a dict of numpy arrays k (K), t (K), uav_positions
+    (K, U, 2), uav_yaw (K, U) and target_positions (K, T, 2). Raises ScenarioError naming the
+    file, the line and the field when the folder is not a finished run."""
+    return _canopy.read_run(_args.path(dir, "canopy.read_run", "dir"))
 
 
 def _column(values):
@@ -40,6 +55,7 @@ def _column(values):
 
 def read_table(path):
     """A CSV table → {column: numpy array} (float where every value is a number, else str)."""
+    path = _args.path(path, "canopy.jobs.read_table", "path")
     with open(path, newline="", encoding="utf-8") as f:
         rows = list(csv.reader(f))
     header, body = rows[0], rows[1:]
@@ -50,8 +66,10 @@ def analyze(dir, out=None, figures=False, allowed_roots=()):
     """Analyses the sweep in ``dir`` as ``canopy analyze`` does: writes the CSV tables (and with
     ``figures`` the SVG/PNG figures) into ``out`` (default DIR/analysis) and returns the tables
     as {table name: {column: numpy array}}, e.g. ``tables["coverage"]["mean_coverage"]``."""
-    dir = os.fspath(dir)
-    out = os.fspath(out) if out is not None else os.path.join(dir, "analysis")
-    _canopy._analyze(dir, out, [os.fspath(r) for r in allowed_roots], bool(figures))
+    fn = "canopy.analyze"
+    dir = _args.path(dir, fn, "dir")
+    out = _args.path(out, fn, "out") if out is not None else os.path.join(dir, "analysis")
+    roots = _args.paths(allowed_roots, fn, "allowed_roots")
+    _canopy._analyze(dir, out, roots, _args.boolean(figures, fn, "figures"))
     return {name[:-4]: read_table(os.path.join(out, name))
             for name in sorted(os.listdir(out)) if name.endswith(".csv")}

@@ -12,16 +12,25 @@ import json
 import math
 import os
 
-from . import _canopy
+from . import _args, _canopy
 
 
 def _overrides(overrides):
     """{"planner.horizon": 1} → ["planner.horizon=1"], each value as JSON (the --set form)."""
     items = []
+    if overrides is not None and not isinstance(overrides, dict):
+        raise _args.error("canopy.load", "overrides",
+                          f"expected a dict of dotted field paths to values, got {overrides!r:.60}")
     for path, value in (overrides or {}).items():
         if not isinstance(path, str) or not path:
-            raise TypeError(f"overrides: expected dotted field paths as keys, got {path!r}")
-        items.append(f"{path}={json.dumps(value)}")
+            raise _args.error("canopy.load", "overrides",
+                              f"expected dotted field paths as keys, got {path!r:.60}")
+        _check_finite(value, "--set", _cli_path(path))
+        try:
+            items.append(f"{path}={json.dumps(value, allow_nan=False)}")
+        except (TypeError, ValueError) as e:
+            raise _args.error("--set", _cli_path(path), f"expected a JSON value, got {value!r:.60} "
+                                                        f"({e})") from None
     return items
 
 
@@ -46,7 +55,7 @@ def _check_finite(value, file, path):
         raise _error(file, path, f"expected a finite number, got {value!r}")
     if isinstance(value, dict):
         for k, v in value.items():
-            _check_finite(v, file, f"{path}.{k}")
+            _check_finite(v, file, f"{path}.{k}" if path else str(k))
     elif isinstance(value, (list, tuple)):
         for i, v in enumerate(value):
             _check_finite(v, file, f"{path}[{i}]")
@@ -56,8 +65,9 @@ def load(name_or_path, overrides=None, allowed_roots=()):
     """A built-in scenario's name or a scenario file → Scenario. ``overrides`` maps dotted field
     paths to values, as ``--set`` does; ``allowed_roots`` are extra folders includes and track
     files may be read from (``--allow-path``). Raises ScenarioError."""
-    roots = [os.fspath(r) for r in allowed_roots]
-    text, file = _canopy._load(os.fspath(name_or_path), _overrides(overrides), roots)
+    roots = _args.paths(allowed_roots, "canopy.load", "allowed_roots")
+    text, file = _canopy._load(_args.path(name_or_path, "canopy.load", "name_or_path"),
+                               _overrides(overrides), roots)
     return Scenario(json.loads(text), file=file, allowed_roots=roots)
 
 
@@ -67,10 +77,12 @@ class Scenario:
 
     def __init__(self, config, file="<python>", allowed_roots=()):
         if not isinstance(config, dict):
-            raise TypeError(f"Scenario: expected the configuration as a dict, got {type(config).__name__}")
+            raise _args.error("Scenario", "config",
+                              f"expected the configuration as a dict, got {type(config).__name__}")
         self.config = config
-        self.file = os.fspath(file)
-        self.allowed_roots = [os.fspath(r) for r in allowed_roots]
+        self.file = _args.path(file, "Scenario", "file")
+        self.allowed_roots = _args.paths(list(allowed_roots) if isinstance(allowed_roots, tuple)
+                                         else allowed_roots, "Scenario", "allowed_roots")
         self._compiled = None  # (source, the loader's spec) for the last configuration checked
 
     # --- fields --------------------------------------------------------------------------
@@ -89,6 +101,11 @@ class Scenario:
         _check_finite(value, self.file, _cli_path(path))
         had, old = (key in parent, parent.get(key)) if isinstance(parent, dict) else (True, parent[key])
         before = self._errors()
+        try:
+            json.dumps(value, allow_nan=False)
+        except (TypeError, ValueError) as e:
+            raise _error(self.file, _cli_path(path),
+                         f"expected a JSON value, got {value!r:.60} ({e})") from None
         parent[key] = copy.deepcopy(value)
         try:
             self._refuse_new_errors(before)
@@ -167,8 +184,9 @@ class Scenario:
     def _source(self):
         try:
             text = json.dumps(self.config, allow_nan=False)
-        except ValueError:  # a NaN put in by hand (config is a plain dict)
-            raise _error(self.file, "", "expected finite numbers (JSON has no NaN or infinity)") from None
+        except (TypeError, ValueError) as e:  # a NaN or a non-JSON value put in by hand
+            _check_finite(self.config, self.file, "")  # names the field of a NaN or infinity
+            raise _error(self.file, "", f"expected JSON values and finite numbers ({e})") from None
         return text, self.file, self.allowed_roots
 
     def _spec(self):
@@ -192,8 +210,8 @@ class Scenario:
     def save(self, path):
         """Validates, then writes the configuration as a scenario file. Relative includes and
         track files are read from beside the new file when the CLI runs it."""
+        path = _args.path(path, "Scenario.save", "path")
         self.validate()
-        path = os.fspath(path)
         tmp = path + ".tmp"
         with open(tmp, "w", encoding="utf-8") as f:
             json.dump(self.config, f, indent=2)

@@ -18,8 +18,10 @@
 #include "render/frame_observer.h"
 #include "render/frame_view.h"
 #include "render/frame_writer.h"
+#include "render/viewport.h"
 #include "sim/record_reader.h"
 #include "sim/run.h"
+#include "spec/error.h"
 #include "spec/loader.h"
 
 namespace py = pybind11;
@@ -127,12 +129,37 @@ void bindJobs(py::module_& m) {
       [](const std::string& text, const std::string& file, const std::vector<std::string>& roots,
          const std::string& out, std::optional<std::uint64_t> seed, bool frames, int every,
          int width, int height) {
-        if (every < 1) throw py::value_error("canopy.run: frame_every: expected an integer >= 1");
+        if (every < 1 || every > 1000000) {
+          throw spec::ScenarioError(
+              "canopy.run", "frame_every",
+              "expected an integer in [1, 1000000], got " + std::to_string(every));
+        }
+        const bool default_size = width == 0 && height == 0;
+        if (!default_size && (width < render::kMinImageSide || width > render::kMaxImageSide ||
+                              height < render::kMinImageSide || height > render::kMaxImageSide)) {
+          throw spec::ScenarioError(
+              "canopy.run", "size",
+              "expected (width, height) in [" + std::to_string(render::kMinImageSide) + ", " +
+                  std::to_string(render::kMaxImageSide) + "] px, got (" + std::to_string(width) +
+                  ", " + std::to_string(height) + ")");
+        }
         return runJob(text, file, roots, out, seed, {frames, every, width, height});
       },
       py::arg("text"), py::arg("file"), py::arg("roots"), py::arg("out"), py::arg("seed"),
       py::arg("frames"), py::arg("every"), py::arg("width"), py::arg("height"));
-  m.def("_sweep", &sweepJob, py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("roots"));
+  m.def(
+      "_sweep",
+      [](const std::string& file, const std::string& out, int jobs,
+         const std::vector<std::string>& roots) {
+        if (jobs < 1 || jobs > 1024)  // the CLI's --jobs range
+          throw spec::ScenarioError(
+              "canopy.sweep", "jobs",
+              "expected an integer in [1, 1024], got " + std::to_string(jobs));
+        return sweepJob(file, out, jobs, roots);
+      },
+      py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("roots"));
+  m.def("_image_sides",
+        [] { return std::make_pair(render::kMinImageSide, render::kMaxImageSide); });
   m.def("read_run", &readRunJob, py::arg("dir"),
         R"(The truth of a finished run (the --out folder of canopy.run or `canopy run`), read back
 from manifest.json and record.jsonl: a dict of numpy arrays k (K), t (K), uav_positions (K, U, 2),

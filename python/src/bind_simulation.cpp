@@ -2,6 +2,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -12,12 +14,30 @@
 #include "python/src/scenario_source.h"
 #include "render/frame_observer.h"
 #include "render/frame_view.h"
+#include "render/viewport.h"
 #include "sim/recorder.h"
+#include "spec/error.h"
 
 namespace py = pybind11;
 
 namespace canopy::python {
 namespace {
+
+// None, or an integer in [0, 2⁶⁴ − 1] (not a bool): the CLI's --seed.
+std::optional<std::uint64_t> seedOf(const py::object& seed, const std::string& function) {
+  if (seed.is_none()) return std::nullopt;
+  if (!py::isinstance<py::int_>(seed) || py::isinstance<py::bool_>(seed)) {
+    throw spec::ScenarioError(function, "seed",
+                              "expected None or an integer in [0, 2^64 - 1], got " +
+                                  py::repr(seed).cast<std::string>().substr(0, 60));
+  }
+  if (seed < py::int_(0) || seed > py::int_(std::numeric_limits<std::uint64_t>::max())) {
+    throw spec::ScenarioError(function, "seed",
+                              "expected an integer in [0, 2^64 - 1], got " +
+                                  py::repr(seed).cast<std::string>().substr(0, 60));
+  }
+  return seed.cast<std::uint64_t>();
+}
 
 std::string shapeText(const py::array& a) {
   std::ostringstream text;
@@ -53,21 +73,23 @@ void PySimulation::applyCommands(const py::handle& commands) {
   const Array a = Array::ensure(commands);
   const auto n = static_cast<py::ssize_t>(sim_->spec().uavs.size());
   if (!a) {
-    throw py::type_error("Simulation.step: commands: expected an array of numbers of shape (" +
-                         std::to_string(n) + ", 2) (m/s), got " +
-                         py::str(py::type::of(commands)).cast<std::string>());
+    throw spec::ScenarioError("Simulation.step", "commands",
+                              "expected an array of numbers of shape (" + std::to_string(n) +
+                                  ", 2) (m/s), got " +
+                                  py::str(py::type::of(commands)).cast<std::string>());
   }
   if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 2) {
-    throw py::value_error("Simulation.step: commands: expected shape (" + std::to_string(n) +
-                          ", 2) (one velocity per UAV, m/s), got " + shapeText(a));
+    throw spec::ScenarioError("Simulation.step", "commands",
+                              "expected shape (" + std::to_string(n) +
+                                  ", 2) (one velocity per UAV, m/s), got " + shapeText(a));
   }
   const auto v = a.unchecked<2>();
   for (py::ssize_t i = 0; i < n; ++i) {
     if (!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1))) {
       std::ostringstream text;
-      text << "Simulation.step: commands[" << i << "]: expected a finite velocity (m/s), got ("
-           << v(i, 0) << ", " << v(i, 1) << ")";
-      throw py::value_error(text.str());
+      text << "expected a finite velocity (m/s), got (" << v(i, 0) << ", " << v(i, 1) << ")";
+      throw spec::ScenarioError("Simulation.step", "commands[" + std::to_string(i) + "]",
+                                text.str());
     }
   }
   for (py::ssize_t i = 0; i < n; ++i)
@@ -96,10 +118,11 @@ void PySimulation::step(const py::handle& commands) {
 py::array_t<std::uint8_t> PySimulation::render(int width, int height) {
   if (width < render::kMinImageSide || width > render::kMaxImageSide ||
       height < render::kMinImageSide || height > render::kMaxImageSide) {
-    throw py::value_error("Simulation.render: expected width and height in [" +
-                          std::to_string(render::kMinImageSide) + ", " +
-                          std::to_string(render::kMaxImageSide) + "] px, got " +
-                          std::to_string(width) + " x " + std::to_string(height));
+    throw spec::ScenarioError("Simulation.render", "width, height",
+                              "expected width and height in [" +
+                                  std::to_string(render::kMinImageSide) + ", " +
+                                  std::to_string(render::kMaxImageSide) + "] px, got " +
+                                  std::to_string(width) + " x " + std::to_string(height));
   }
   const render::ImageSize size{width, height};
   if (!scene_model_)
@@ -122,8 +145,14 @@ Simulation(scenario, seed=None) runs step 0 (the initial sensing); each step() t
 world by dt with the scenario's planner or script, and step(commands) with an (n_uav, 2) array of
 velocities (m/s, clamped to each UAV's v_max) instead, for that step only. The planner still plans
 on its schedule (its plans are recorded as if flown). The readers show the last step.)");
-  cls.def(py::init([](const py::object& scenario, std::optional<std::uint64_t> seed) {
-            return std::make_unique<PySimulation>(specOf(scenario, seed));
+  cls.def(py::init([](const py::object& scenario, const py::object& seed) {
+            if (!py::hasattr(scenario, "_spec")) {
+              throw spec::ScenarioError(
+                  "Simulation", "scenario",
+                  "expected a canopy.Scenario (canopy.load(NAME_OR_FILE) makes one), got " +
+                      py::str(py::type::of(scenario)).cast<std::string>());
+            }
+            return std::make_unique<PySimulation>(specOf(scenario, seedOf(seed, "Simulation")));
           }),
           py::arg("scenario"), py::arg("seed") = py::none())
       .def(
@@ -183,8 +212,21 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
           "The last step as the line record.jsonl holds for it (JSON text).")
       .def(
           "render",
-          [](py::handle self, int width, int height) {
-            return simulationOf(self).render(width, height);
+          [](py::handle self, const py::object& width, const py::object& height) {
+            // Typed like every public entry point: ScenarioError naming the argument.
+            auto side = [](const py::object& value, const char* name) {
+              if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value) ||
+                  value < py::int_(render::kMinImageSide) ||
+                  value > py::int_(render::kMaxImageSide)) {
+                throw spec::ScenarioError("Simulation.render", name,
+                                          "expected width and height integers in [" +
+                                              std::to_string(render::kMinImageSide) + ", " +
+                                              std::to_string(render::kMaxImageSide) + "] px, got " +
+                                              py::repr(value).cast<std::string>().substr(0, 60));
+              }
+              return value.cast<int>();
+            };
+            return simulationOf(self).render(side(width, "width"), side(height, "height"));
           },
           py::arg("width") = 800, py::arg("height") = 600,
           "The last step drawn by the CLI's renderer (OSMesa), an (height, width, 3) uint8 array.");

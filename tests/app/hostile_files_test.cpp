@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -66,7 +67,8 @@ struct Templates {
 const Templates& templates() {
   static const Templates t = [] {
     Templates made;
-    const fs::path dir = scratch("templates");
+    // Per process: ctest runs this file's tests side by side, each making its own.
+    const fs::path dir = scratch("templates_" + std::to_string(::getpid()));
     made.run = dir / "run";
     made.sweep_file = dir / "sweep.json";
     made.sweep = dir / "sweep";

@@ -89,7 +89,9 @@ TEST(RecordReader, NamesTheFileLineAndFieldOfEveryFault) {
       << errorOf(dir);
   fs::remove(dir / "manifest.json");
   fs::create_directory(dir / "manifest.json");
-  EXPECT_NE(errorOf(dir).find("manifest.json: cannot be read"), std::string::npos) << errorOf(dir);
+  EXPECT_NE(errorOf(dir).find("manifest.json: is a directory, expected the manifest"),
+            std::string::npos)
+      << errorOf(dir);
 }
 
 }  // namespace

@@ -66,9 +66,11 @@ TEST(WorkBudget, EstimatesMatchTheirFormulasOnASmallScenario) {
   })",
                                              "small.json");
   const WorkEstimate work = estimateWork(spec);
-  EXPECT_DOUBLE_EQ(work.world_units, 11.0 * (2 + 3 + 2 * (3 + 1)));             // 143
-  EXPECT_DOUBLE_EQ(work.record_bytes, 11.0 * 2 * (1000 + 600 * 4));             // 74 800
-  EXPECT_DOUBLE_EQ(work.tracking_units, 11.0 * 2 * (4 * 4 + 100));              // 2 552
+  EXPECT_DOUBLE_EQ(work.world_units, 11.0 * (2 + 3 + 2 * (3 + 1)));  // 143
+  EXPECT_DOUBLE_EQ(work.record_bytes, 11.0 * 2 * (1000 + 600 * 4));  // 74 800
+  // m = 3 targets + 1 clutter: gating and up to 1000 propagation sweeps over m² pairs, and 100
+  // events of depth min(m, 64) = 4.
+  EXPECT_DOUBLE_EQ(work.tracking_units, 11.0 * 2 * (4 * 4 * 1001 + 100 * 4));   // 361 152
   EXPECT_DOUBLE_EQ(work.fusion_units, 11.0 * 5 * 2 * 2 * 3);                    // 660
   EXPECT_DOUBLE_EQ(work.planning_units, 3.0 * 2 * 1 * 20 * 7 * 2 * 1 * 3 * 2);  // 10 080
 }
@@ -94,6 +96,102 @@ TEST(WorkBudget, ExceedingALimitNamesTheFieldAndTheScaleLiftsIt) {
   LoadOptions generous;
   generous.budget_scale = 1e9;
   EXPECT_NO_THROW(loadScenarioText(text, "days.json", generous));
+}
+
+// --- Every stage × entity counts: the refusal comes from the estimate, before any work
+// ------------- A table of scenarios scaled along one entity each; for every row the load is
+// refused with the budget message naming the field that drives it (no timing: each refusal is
+// decided by the estimate, which costs O(entities)), and --budget K with K at the estimate's ratio
+// admits it.
+namespace stage_table {
+
+std::string scenario(int uavs, int targets, const std::string& rest, int duration = 2) {
+  std::string text = R"({"aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": )" +
+                     std::to_string(duration) + R"(}, "uavs": [)";
+  for (int i = 0; i < uavs; ++i)
+    text += (i ? ", " : "") + std::string(R"({"start": [10, 10], "fov": {"size": [2000, 2000]}})");
+  text += R"(], "targets": [)";
+  for (int t = 0; t < targets; ++t) {
+    text += (t ? ", " : "") + std::string(R"({"path": {"start": [)") +
+            std::to_string(20 + t % 900) + ", " + std::to_string(20 + (t / 900) % 900) +
+            R"(], "velocity": [0, 0]}})";
+  }
+  return text + "]" + rest + "}";
+}
+
+struct Row {
+  const char* stage;
+  std::string text;
+  const char* field;  // the field the refusal names
+  const char* what;   // the limit's words
+};
+
+std::vector<Row> rows() {
+  return {
+      // Association: 2000 targets seen by 20 UAVs (1001 × 2000² × 20 × 11 = 8.8e11).
+      {"association", scenario(20, 2000, ""), "targets", "tracking units"},
+      // Association: max_hypotheses at its maximum with 40 targets over 1000 s.
+      {"association", scenario(1, 40, R"(, "tracking": {"max_hypotheses": 10000000})", 1000),
+       "tracking.max_hypotheses", "tracking units"},
+      // Building the world and sensing: an occluder grid of spacing → 0 (2 × 10⁶ trees in one
+      // footprint: each is a detection and a track).
+      {"world", scenario(1, 0, R"(, "occluders": [{"type": "grid", "origin": [1, 1],
+          "spacing": [0.0005, 0.0005], "rows": 1414, "cols": 1414, "radius": 0.0001}])"),
+       "occluders", "units"},
+      // Generation: a grid of 10¹⁰ trees is refused before one is placed.
+      {"generation", scenario(1, 0, R"(, "occluders": [{"type": "grid", "origin": [1, 1],
+          "spacing": [0.001, 0.001], "rows": 100000, "cols": 100000, "radius": 0.0001}])"),
+       "occluders[0]", "trees (rows × cols)"},
+      // Fusion: 256 UAVs × 1000 rounds over 1000 s (5001 × 1000 × 256² = 3.3e11).
+      {"fusion", scenario(256, 1, R"(, "fusion": {"rounds": 1000})", 1000), "", "units"},
+      // Planning: a swarm of 10⁴ particles per step for 1000 iterations.
+      {"planning", scenario(2, 1, R"(, "planner": {"algorithm": "sma", "horizon": 50,
+          "pso": {"particles_per_step": 10000, "max_iterations": 1000000}})"),
+       "planner", "planning units"},
+      // The record: 10⁵ targets written every step.
+      {"record", scenario(1, 100000, "", 20), "", "record.jsonl"},
+  };
+}
+
+}  // namespace stage_table
+
+TEST(WorkBudget, EveryStageIsRefusedByItsEstimateNamingItsField) {
+  for (const stage_table::Row& row : stage_table::rows()) {
+    try {
+      loadScenarioText(row.text, "stage.json");
+      ADD_FAILURE() << row.stage << ": accepted";
+    } catch (const ScenarioError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("expected at most"), std::string::npos) << row.stage << ": " << what;
+      EXPECT_NE(what.find("--budget K"), std::string::npos) << row.stage << ": " << what;
+      EXPECT_NE(what.find(row.what), std::string::npos) << row.stage << ": " << what;
+      if (*row.field) {
+        EXPECT_EQ(e.field().rfind(row.field, 0), 0u) << row.stage << ": " << what;
+      }
+    }
+  }
+}
+
+TEST(WorkBudget, VisibleTreesAreBoundedByTheBusiestFootprintWindow) {
+  // 100 trees in a 10 m cluster and 100 spread over 1 km: a 20 m footprint can hold the cluster
+  // (and a few of the spread ones), never all 200; a footprint as large as the AOI holds all.
+  std::string trees;
+  for (int i = 0; i < 100; ++i) {
+    trees += (i ? ", " : "") + std::string(R"({"type": "disc", "centre": [)") +
+             std::to_string(500 + (i % 10)) + ", " + std::to_string(500 + i / 10) +
+             R"(], "radius": 0.2})";
+    trees += R"(, {"type": "disc", "centre": [)" + std::to_string(5 + 9 * (i % 10) * 10 + 3) +
+             ", " + std::to_string(5 + 90 * (i / 10) + 7) + R"(], "radius": 0.2})";
+  }
+  const auto with = [&](const std::string& fov) {
+    return loadScenarioText(R"({"aoi": [0, 0, 1000, 1000], "uavs": [{"start": [10, 10], "fov": )" +
+                                fov + R"(}], "occluders": [)" + trees + "]}",
+                            "trees.json");
+  };
+  const double small = visibleTreesBound(with(R"({"size": [20, 20]})"));
+  EXPECT_GE(small, 100.0);  // the cluster fits in one footprint
+  EXPECT_LT(small, 200.0);
+  EXPECT_EQ(visibleTreesBound(with(R"({"size": [3000, 3000]})")), 200.0);
 }
 
 }  // namespace
