@@ -64,7 +64,7 @@ struct FusionConfig {
   FusionMethod method = FusionMethod::ci;
   int rounds = 5;                                               // L consensus rounds per step
   double comm_range = std::numeric_limits<double>::infinity();  // m, neighbours within this range
-  double comm_drop = 0.0;          // probability that a message is lost
+  double comm_drop = 0.0;  // probability that a message is lost
   // Simulation steps a message is in flight: intention messages (SMA-NBO's plans, the centralised
   // leader's orders) and consensus messages alike (docs/design-notes.md).
   int comm_latency = 0;
@@ -110,7 +110,7 @@ struct PsoConfig {
 struct PlannerConfig {
   PlannerAlgorithm algorithm = PlannerAlgorithm::none;  // none: UAVs follow scripted paths
   int horizon = 5;                                      // H planning steps
-  double plan_period = 1.0;  // s, Δ: the length of each planned action
+  double plan_period = 1.0;                             // s, Δ: the length of each planned action
   // s, between planning epochs; the loader defaults it to plan_period (the paper's setting). A
   // shorter period re-plans inside an action: the actions stay Δ long, intentions and warm starts
   // are shifted by the time elapsed (docs/design-notes.md).
@@ -125,6 +125,10 @@ struct PlannerConfig {
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
   JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
   int joint_rounds = 2;                           // block coordinate rounds over all UAVs
+  // m: a ground robot's nominal pose keeps this much more than its radius from the trunks and
+  // walls of its map, and the sum of the radii plus this from another robot's intended pose
+  // (docs/design-notes.md, "Plans that keep clear").
+  double clearance = 0.2;
 };
 
 /// Simulation steps between plan instants: replan_period / dt, rounded, at least 1.

@@ -13,6 +13,7 @@
 #include "spec/forest.h"
 #include "spec/loader.h"
 #include "world/tree.h"
+#include "spec/solid_paths.h"
 
 namespace canopy::app {
 
@@ -31,17 +32,26 @@ class Validate : public Command {
         ->allow_extra_args(false)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     addLoadOptions(o, load_);
+    o.add_flag("--strict", strict_,
+               "treat warnings as errors (exit 2): a target's scripted path into a trunk or wall");
   }
   int run() override;
 
  private:
   std::string scenario_;
   spec::LoadOptions load_;
+  bool strict_ = false;
 };
 
 int Validate::run() {
   if (scenario_.empty()) usageError("validate", "expected a scenario to check");
   const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
+  const std::vector<spec::SolidCrossing> crossings = spec::solidCrossings(spec);
+  for (const spec::SolidCrossing& c : crossings) {
+    std::fprintf(stderr, "%s: %s: %s\n", printable(spec.file.string(), 200).c_str(),
+                 strict_ ? "error" : "warning", printable(c.message, 400).c_str());
+  }
+  if (strict_ && !crossings.empty()) return kExitUsage;
   // A run records steps k = 0 … duration/dt: one more than the number of dt it spans.
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps (k = 0 … %d, dt = %g s)\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),

@@ -21,6 +21,8 @@ inline constexpr Rgba kAoiEdge{120, 120, 112, 255};
 inline constexpr Rgba kTreeFill{92, 150, 72, 255};
 inline constexpr Rgba kTreeEdge{46, 92, 38, 255};
 inline constexpr Rgba kTarget{24, 24, 24, 255};
+inline constexpr Rgba kTrunk{92, 64, 40, 255};     // a trunk, where ground robots drive
+inline constexpr Rgba kContact{214, 40, 40, 255};  // the ring round a body in contact
 inline constexpr Rgba kTrail{70, 70, 70, 200};
 inline constexpr Rgba kShadow{60, 60, 60, 70};  // the part of a ground camera's sector crowns hide
 inline constexpr Rgba kText{20, 20, 20, 255};

@@ -48,6 +48,14 @@ void addTrees(const SceneModel& model, const Sizes& z, std::vector<Primitive>& o
       add(out, Polyline{tree.vertices, z.u, palette::kTreeEdge, true});
     }
   }
+  // Trunks, what stops a ground robot (world/tree.h), where there are ground robots.
+  const bool robots = std::any_of(model.sensors.begin(), model.sensors.end(),
+                                  [](const sensing::SensorDef& s) { return s.ground_level; });
+  if (!robots) return;
+  for (const world::TreeDef& tree : model.trees) {
+    if (!world::isWall(tree) && tree.trunk_radius > 0.0)
+      add(out, Disc{tree.centre, tree.trunk_radius, palette::kTrunk, palette::kTrunk, 0.0});
+  }
 }
 
 void addFootprints(const SceneModel& model, const world::WorldSnapshot& truth, const Sizes& z,
@@ -117,7 +125,7 @@ void addEstimates(std::span<const agents::AgentBelief> beliefs, const Sizes& z,
 }
 
 void addBodies(const world::WorldSnapshot& truth, const TargetTrails& trails, const Sizes& z,
-               std::vector<Primitive>& out) {
+               double pixel_size, std::vector<Primitive>& out) {
   for (int t = 0; t < static_cast<int>(truth.targets.size()); ++t) {
     const std::vector<Vec2>& trail = trails.trail(t);
     if (trail.size() > 1) add(out, Polyline{trail, 2.0 * z.u, palette::kTrail, false});
@@ -130,6 +138,9 @@ void addBodies(const world::WorldSnapshot& truth, const TargetTrails& trails, co
     const world::UavState& uav = truth.uavs[i];
     add(out, Marker{uav.position, MarkerShape::arrow, 18.0 * z.u, uav.yaw,
                     uavColour(static_cast<int>(i)), palette::kTarget, 1.2 * z.u});
+    // A body that touched a trunk, a wall or another agent over the step: a red ring round it.
+    if (!uav.contacts.empty())
+      add(out, Ring{uav.position, 13.0 * z.u * pixel_size, 2.5 * z.u, palette::kContact});
   }
 }
 
@@ -273,7 +284,7 @@ Scene buildScene(const SceneModel& model, const world::WorldSnapshot& truth,
   addFootprints(model, truth, z, w);
   addBeliefs(truth, beliefs, z, w);
   addEstimates(beliefs, z, w);
-  addBodies(truth, trails, z, w);
+  addBodies(truth, trails, z, v.pixel_size, w);
   LabelSpace space = labelSpace(model, truth, beliefs, trails, v, size, band, z);
   if (options.labels) addNames(model, truth, v, z, space, w);
   addScaleBar(v, size, band, z, scene.overlay);

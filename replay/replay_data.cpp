@@ -213,6 +213,25 @@ void writeTruth(const RunFolder& run, Writer& w) {
       w.position(p.y());
     }
   }
+  // Contacts, at the steps that have any: [k, agent, "wall:3", …].
+  w.raw("],\"contacts\":[");
+  first = true;
+  for (std::size_t k = 0; k < run.steps.size(); ++k) {
+    const std::vector<RecordedAgent>& agents = run.steps[k].agents;
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      if (agents[i].contacts.empty()) continue;
+      w.comma(first);
+      w.raw("[");
+      w.integer(static_cast<long long>(k));
+      w.raw(",");
+      w.integer(static_cast<long long>(i));
+      for (const std::string& c : agents[i].contacts) {
+        w.raw(",");
+        w.string(c);
+      }
+      w.raw("]");
+    }
+  }
   w.raw("]");
 }
 

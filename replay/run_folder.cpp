@@ -190,6 +190,15 @@ RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpe
     RecordedAgent& a = s.agents.emplace_back();
     a.position = r.point(r.member(uavs[n], "p", "uavs." + id), "uavs." + id + ".p");
     a.yaw = r.number(uavs[n], "yaw", "uavs." + id);
+    if (uavs[n].is_object() && uavs[n].contains("contacts")) {  // only at steps with one
+      const Json& contacts = uavs[n]["contacts"];
+      if (!contacts.is_array()) r.fail("uavs." + id + ".contacts", "a list of names");
+      for (const Json& c : contacts) {
+        if (!c.is_string() || c.get_ref<const std::string&>().size() > 32)
+          r.fail("uavs." + id + ".contacts", "names such as \"wall:3\"");
+        a.contacts.push_back(c.get<std::string>());
+      }
+    }
     a.in_footprint = r.indices(scans[n], "in_footprint", targets, "scans." + id);
     a.visible = r.indices(scans[n], "visible", targets, "scans." + id);
     const std::string at = "agents." + id;

@@ -31,6 +31,7 @@ struct RecordedMapEntry {
 struct RecordedAgent {
   Vec2 position = Vec2::Zero();            // m
   double yaw = 0.0;                        // rad
+  std::vector<std::string> contacts;       // what its body touched: "wall:3", "uav:1", …
   std::vector<int> in_footprint, visible;  // target indices
   std::vector<RecordedTrack> tracks;
   std::vector<RecordedMapEntry> map;

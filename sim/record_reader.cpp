@@ -1,5 +1,6 @@
 #include "sim/record_reader.h"
 
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -45,6 +46,23 @@ class LineReader {
       fail(path, "[x, y] (two numbers)");
     }
     return {value[0].get<double>(), value[1].get<double>()};
+  }
+  // "wall:K", "trunk:K" or "uav:J" (sim/recorder.cpp).
+  world::BodyRef contact(const Json& value, const std::string& path) const {
+    static const std::pair<const char*, world::BodyKind> kKinds[] = {
+        {"wall:", world::BodyKind::wall},
+        {"trunk:", world::BodyKind::trunk},
+        {"uav:", world::BodyKind::uav}};
+    if (value.is_string()) {
+      const std::string& text = value.get_ref<const std::string&>();
+      for (const auto& [prefix, kind] : kKinds) {
+        const std::size_t n = std::strlen(prefix);
+        if (text.compare(0, n, prefix) != 0 || text.size() == n || text.size() > n + 9) continue;
+        if (text.find_first_not_of("0123456789", n) != std::string::npos) continue;
+        return {kind, std::stoi(text.substr(n))};
+      }
+    }
+    fail(path, "\"wall:K\", \"trunk:K\" or \"uav:J\"");
   }
   const Json& list(const Json& object, const std::string& key, std::size_t size) const {
     const Json& value = member(object, key, key);
@@ -99,6 +117,11 @@ std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
       world::UavState& uav = s.uavs.emplace_back();
       uav.position = r.point(r.member(uavs[i], "p", at + ".p"), at + ".p");
       uav.yaw = r.number(r.member(uavs[i], "yaw", at + ".yaw"), at + ".yaw");
+      if (uavs[i].is_object() && uavs[i].contains("contacts")) {  // only at steps with one
+        const Json& list = uavs[i]["contacts"];
+        if (!list.is_array()) r.fail(at + ".contacts", "a list of \"kind:index\" strings");
+        for (const Json& c : list) uav.contacts.push_back(r.contact(c, at + ".contacts"));
+      }
     }
     const Json& targets = r.list(json, "targets", spec.targets.size());
     for (std::size_t t = 0; t < targets.size(); ++t) {

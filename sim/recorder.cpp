@@ -47,6 +47,16 @@ void integers(JsonLine& j, const std::vector<int>& list) {
   for (int i : list) j.integer(i);
   j.endArray();
 }
+// A body touched, as the record names it: "trunk:K" or "wall:K" (the occluder's index among the
+// scenario's trees), "uav:I" (the agent's index), with the quotes of a JSON string.
+std::string contactName(const world::BodyRef& c) {
+  const char* kind = c.kind == world::BodyKind::trunk  ? "trunk"
+                     : c.kind == world::BodyKind::wall ? "wall"
+                     : c.kind == world::BodyKind::uav  ? "uav"
+                     : c.kind == world::BodyKind::tree ? "tree"
+                                                       : "target";
+  return "\"" + std::string(kind) + ":" + std::to_string(c.index) + "\"";
+}
 void velocities(JsonLine& j, const agents::planning::Plan& plan) {
   j.beginArray();
   for (const Vec2& v : plan.velocities) vec(j, v);
@@ -235,6 +245,12 @@ void RecordLineWriter::write(const StepRecord& record, std::string& out) {
     j.beginObject();
     j.key("cmd");
     vec(j, uav.command);
+    if (!uav.contacts.empty()) {  // what its body touched over the step: "wall:3", "uav:1", …
+      j.key("contacts");
+      j.beginArray();
+      for (const world::BodyRef& c : uav.contacts) j.escapedString(contactName(c));
+      j.endArray();
+    }
     j.key("p");
     vec(j, uav.position);
     j.key("v");

@@ -20,6 +20,7 @@ agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec) {
     state.v_max = uav.body.v_max;
     state.kind = uav.body.kind;
     state.turn_rate = uav.body.turn_rate;
+    state.radius = uav.body.radius;
     state.footprint = uav.sensor.footprint;
     state.quality = uav.sensor.quality;
     state.occlusion = sensing::occlusionModel(uav.sensor, spec.sensing);
@@ -62,6 +63,8 @@ void Simulation::readTruth() {
     uav.position = truth_.uavs[i].position;
     uav.yaw = truth_.uavs[i].yaw;
     uav.velocity = truth_.uavs[i].velocity;
+    uav.contacts = truth_.uavs[i].contacts;
+    uav.contacts_begun = truth_.uavs[i].contacts_begun;
   }
   for (std::size_t t = 0; t < record_.targets.size(); ++t) {
     TargetRecord& target = record_.targets[t];

@@ -7,7 +7,7 @@ void truthSnapshot(const StepRecord& record, world::WorldSnapshot& out) {
   out.time = record.time;
   out.uavs.clear();
   for (const UavRecord& uav : record.uavs)
-    out.uavs.push_back({uav.position, uav.velocity, uav.yaw});
+    out.uavs.push_back({uav.position, uav.velocity, uav.yaw, uav.contacts, uav.contacts_begun});
   out.targets.clear();
   for (const TargetRecord& target : record.targets)
     out.targets.push_back({target.position, target.velocity});

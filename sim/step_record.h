@@ -29,6 +29,10 @@ struct UavRecord {
   /// writes as "cmd"). An external command (Simulation::commandNext) set after the tick replaces
   /// it in flight and is not in it; what was flown is the next step's `velocity`.
   Vec2 command = Vec2::Zero();
+  // What its body touched during the step that led here (trunks and walls by tree index, other
+  // agents by index), sorted, and how many of those it did not touch the step before.
+  std::vector<world::BodyRef> contacts{};
+  int contacts_begun = 0;
   sensing::Footprint footprint;  // φ_i at this pose
   sensing::Scan scan;            // scan.uav is this UAV's index
 };

@@ -42,6 +42,10 @@ void SummaryBuilder::onStep(const StepRecord& record) {
   }
   last_uav_position_.clear();
   for (const UavRecord& uav : record.uavs) last_uav_position_.push_back(uav.position);
+  for (std::size_t i = 0; i < uavs_.size(); ++i) {
+    uavs_[i].contacts += record.uavs[i].contacts_begun;
+    uavs_[i].steps_in_contact += !record.uavs[i].contacts.empty();
+  }
 
   visible_by_.assign(targets_.size(), 0);
   in_footprint_of_.assign(targets_.size(), 0);
@@ -104,7 +108,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   summary["targets"] = targets;
   Json uavs = Json::array();
   double ospa_sum = 0.0, gospa_sum = 0.0;
-  long false_track_steps = 0;
+  long false_track_steps = 0, contacts = 0;
   Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
     Json uav = {{"name", names_.uavs[i]},
@@ -116,7 +120,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                 {"gospa_mean_m", mean(gospa_[i])},
                 {"gospa_m", gospa_[i]},
                 {"false_track_steps", false_tracks_[i]},
-                {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps}};
+                {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps},
+                {"contacts", uavs_[i].contacts},
+                {"steps_in_contact", uavs_[i].steps_in_contact}};
     if (i < counts_at_end_.size()) {
       const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;
@@ -131,6 +137,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
     uavs.push_back(std::move(uav));
     ospa_sum += mean(ospa_[i]);
     false_track_steps += false_tracks_[i];
+    contacts += uavs_[i].contacts;
     gospa_sum += mean(gospa_[i]);
     if (!plan_seconds_[i].empty()) {
       plan_timing.push_back(
@@ -152,7 +159,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
       {"gospa_alpha", 2},
       // False confirmed tracks: GOSPA's false part (a confirmed track with no target closer than
       // the cut-off in the assignment), summed over agents and steps.
-      {"false_track_steps", false_track_steps}};
+      {"false_track_steps", false_track_steps},
+      // Contacts begun, summed over agents (a contact between two agents counts for both).
+      {"contacts", contacts}};
   if (steps_ > 0) {
     const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
     summary["fusion_diagnostics"] = {{"messages", d.messages},

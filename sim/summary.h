@@ -31,6 +31,8 @@ class SummaryBuilder final : public StepObserver {
     double distance = 0.0;  // m flown
     long visible = 0;       // Σ_k |V_{i,k}|
     long observations = 0;  // target, clutter and tree detections
+    long contacts = 0;      // contacts begun: a body touched that it did not touch the step before
+    int steps_in_contact = 0;  // steps during which it touched something
   };
   const std::vector<TargetTally>& targets() const { return targets_; }
   const std::vector<UavTally>& uavs() const { return uavs_; }
@@ -54,8 +56,8 @@ class SummaryBuilder final : public StepObserver {
   std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
   std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
   metrics::CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
-  std::vector<std::vector<double>> ospa_;          // [agent][k], m
-  std::vector<std::vector<double>> gospa_;         // [agent][k], m
+  std::vector<std::vector<double>> ospa_;            // [agent][k], m
+  std::vector<std::vector<double>> gospa_;           // [agent][k], m
   std::vector<long> false_tracks_;  // [agent]: Σ_k confirmed tracks with no target within c
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch

@@ -43,6 +43,11 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"uavs[].path.track", "s, m", "[[t, x, y], …] rows, or the name of a CSV file of t,x,y rows"},
       {"uavs[].yaw", "rad", "heading ψ, or \"velocity\" to face the direction of flight"},
       {"uavs[].v_max", "m/s", "top speed; every command is clamped to it"},
+      {"uavs[].radius", "m",
+       "the agent's body, a disc (default 0.5 for a ground robot, 0 for a UAV): a ground "
+       "robot's is stopped by trunks, walls and other robots; a UAV flies above them and keeps "
+       "the sum of the two radii from every other UAV with a radius; 0: no body, it touches "
+       "nothing (UAVs by default pass over one another, as in the paper's scenarios)"},
       {"uavs[].fov", "",
        "camera footprint: {\"size\": [w, h]} (w along the heading) or {\"radius\": r}; a ground "
        "robot's: {\"range\": r, \"angle\": θ}, a sector opening θ about the heading"},
@@ -71,6 +76,10 @@ const std::vector<FieldDoc>& fieldDocs() {
        "a layout file (a list of occluders, or {\"occluders\": […]}) inside the scenario's folder "
        "tree or the library"},
       {"occluders[].centre", "m", "disc: centre"},
+      {"occluders[].trunk_radius", "m",
+       "the solid trunk at the centre of each tree of the entry, which stops ground robots "
+       "(crowns never do); at most the crown's radius. Absent: a disc's is 0.1 × its radius, "
+       "clamped to [0.05, 0.5] m, and a polygon is a wall, solid throughout"},
       {"occluders[].radius", "m",
        "disc: radius; poisson, grid, cluster: a radius or [min, max] drawn uniformly"},
       {"occluders[].vertices", "m", "polygon: 3 to 8 convex vertices [[x, y], …]"},
@@ -143,6 +152,10 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"planner.cost_trace", "", "position (tr P_pos) or full (tr P)"},
       {"planner.terminal_penalty", "", "add w × the distance to the tracks at the horizon's end"},
       {"planner.terminal_penalty_weight", "", "w of the terminal penalty"},
+      {"planner.clearance", "m",
+       "ground robots: a nominal pose closer than radius + clearance to a trunk or wall of the "
+       "agent's map, or than the sum of the radii + clearance to another robot's intended pose "
+       "at the same sample, is charged a penalty that forbids it (docs/design-notes.md)"},
       {"planner.cost_substeps", "",
        "samples of the nominal trajectory per action (1: the paper's cost)"},
       {"planner.joint_search", "",

@@ -25,7 +25,7 @@ inline constexpr EnumNames<AgentKind, 2> kAgentKindNames{{
     {AgentKind::ground, "ground"},
 }};
 
-/// An agent (a UAV or a ground robot): a kinematic body commanded by horizontal velocity.
+/// An agent (a UAV or a ground robot): a body commanded by horizontal velocity.
 struct UavDef {
   Vec2 start = Vec2::Zero();          // m
   double yaw = 0.0;                   // rad, initial heading ψ
@@ -33,6 +33,10 @@ struct UavDef {
   double v_max = 5.0;                 // m/s, |commanded velocity| is clamped to this
   double turn_rate = 1.0;             // rad/s, ground robots only: |ψ̇| ≤ ω_max
   AgentKind kind = AgentKind::uav;
+  // m: a ground robot's body, a disc that walls, trunks and other robots stop; a UAV's keeps
+  // r_i + r_j from every other UAV with a radius (UAVs fly above walls, trees and robots).
+  // 0: no body, it touches nothing (the loader's default for UAVs; 0.5 m for ground robots).
+  double radius = 0.0;
 };
 
 /// A target (OOI): a kinematic body driven by velocity along a scripted path.

@@ -22,7 +22,64 @@ TreeDef TreeDef::disc(const Vec2& centre, double radius) {
   tree.shape = TreeShape::disc;
   tree.centre = centre;
   tree.radius = radius;
+  tree.trunk_radius = defaultTrunkRadius(radius);
   return tree;
+}
+
+double defaultTrunkRadius(double crown_radius) {
+  return std::min(crown_radius, std::clamp(0.1 * crown_radius, 0.05, 0.5));
+}
+
+double solidDistance(const TreeDef& tree, const Vec2& p) {
+  if (!isWall(tree)) return (p - tree.centre).norm() - tree.trunk_radius;
+  // A convex polygon: 0 inside, else the distance to the nearest edge.
+  const std::vector<Vec2>& v = tree.vertices;
+  bool inside = true;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec2& a = v[i];
+    const Vec2& b = v[(i + 1) % v.size()];
+    const Vec2 e = b - a;
+    if (cross(e, p - a) < 0.0) inside = false;  // right of a counter-clockwise edge: outside
+    const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + s * e - p).norm());
+  }
+  return inside ? 0.0 : best;
+}
+
+namespace {
+// The distance from p to the segment a → b.
+double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 e = b - a;
+  const double length_sq = e.squaredNorm();
+  const double s = length_sq > 0.0 ? std::clamp((p - a).dot(e) / length_sq, 0.0, 1.0) : 0.0;
+  return (a + s * e - p).norm();
+}
+// True when the segments a → b and c → d cross or touch; collinear ones are left to the
+// distances of their ends.
+bool segmentsCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (d1 == 0.0 && d2 == 0.0) return false;
+  return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
+}
+}  // namespace
+
+double solidDistance(const TreeDef& tree, const Vec2& a, const Vec2& b) {
+  if (!isWall(tree)) return pointSegmentDistance(tree.centre, a, b) - tree.trunk_radius;
+  // A convex polygon: 0 when an end is inside or the segment crosses an edge; else the nearest
+  // of the ends to the edges and of the vertices to the segment.
+  if (solidDistance(tree, a) == 0.0 || solidDistance(tree, b) == 0.0) return 0.0;
+  const std::vector<Vec2>& v = tree.vertices;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec2& c = v[i];
+    const Vec2& d = v[(i + 1) % v.size()];
+    if (segmentsCross(a, b, c, d)) return 0.0;
+    best = std::min({best, pointSegmentDistance(a, c, d), pointSegmentDistance(b, c, d),
+                     pointSegmentDistance(c, a, b)});
+  }
+  return best;
 }
 
 double signedArea(const std::vector<Vec2>& vertices) {
@@ -70,6 +127,7 @@ TreeDef TreeDef::polygon(std::vector<Vec2> vertices) {
   tree.centre = centroid / (6.0 * area);
   tree.radius = std::sqrt(area / std::numbers::pi);  // disc of equal area
   tree.vertices = std::move(vertices);
+  tree.trunk_radius = 0.0;  // a wall
   return tree;
 }
 

@@ -11,16 +11,36 @@ namespace canopy::world {
 enum class TreeShape { disc, polygon };
 
 /// One tree crown: a disc (centre, radius) or a convex polygon (counter-clockwise vertices).
+/// What stops a ground robot is its solid part: a disc tree's trunk, a disc of trunk_radius at
+/// its centre; a polygon is a wall, solid throughout, unless it has a trunk_radius > 0 (then a
+/// crown with a trunk at its centroid). Crowns never stop anything.
 struct TreeDef {
   TreeShape shape = TreeShape::disc;
   Vec2 centre = Vec2::Zero();  // m; for a polygon, its area centroid
   double radius = 1.0;         // m; for a polygon, the radius of the disc of equal area
   std::vector<Vec2> vertices;  // polygon only, counter-clockwise, convex, 3..8 vertices (m)
+  double trunk_radius = 0.1;   // m; disc() sets defaultTrunkRadius(radius), polygon() 0 (a wall)
 
   static TreeDef disc(const Vec2& centre, double radius);
   /// vertices: convex, either orientation; stored counter-clockwise with centroid and radius set.
   static TreeDef polygon(std::vector<Vec2> vertices);
 };
+
+/// The trunk of a crown of radius r when a scenario gives none: 0.1 r, clamped to [0.05, 0.5] m
+/// (and never above r).
+double defaultTrunkRadius(double crown_radius);
+
+/// True when the whole polygon is solid (a polygon without a trunk).
+inline bool isWall(const TreeDef& tree) {
+  return tree.shape == TreeShape::polygon && !(tree.trunk_radius > 0.0);
+}
+
+/// The distance from p to the tree's solid part (a wall's polygon or the trunk's disc): ≤ 0
+/// inside it (then minus the depth for a trunk, 0 for a wall's interior). Exact, in double.
+double solidDistance(const TreeDef& tree, const Vec2& p);
+/// The distance from the segment a → b to the tree's solid part: 0 when it enters a wall, the
+/// distance to the trunk's rim (≤ 0 when it enters the trunk) otherwise. Exact, in double.
+double solidDistance(const TreeDef& tree, const Vec2& a, const Vec2& b);
 
 /// True when p is strictly inside the crown (a point on its rim is not hidden).
 bool strictlyInside(const TreeDef& tree, const Vec2& p);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <numbers>
 
 #include "core/angles.h"
 #include "world/unicycle.h"
@@ -13,19 +14,32 @@
 namespace canopy::world {
 namespace {
 
-constexpr float kUavBodyRadius = 0.25f;     // m, only gives the body a broad-phase box
-constexpr float kTargetBodyRadius = 0.05f;  // m, likewise
+constexpr float kTargetBodyRadius = 0.05f;  // m, only gives the body a broad-phase box
+constexpr float kNoBodyRadius = 0.25f;      // m, likewise for an agent of radius 0
 // Keep each Box2D sub-step well inside its per-step motion limits (b2_maxTranslation = 2 m,
 // b2_maxRotation = π/2), beyond which Box2D silently scales velocities down.
 constexpr double kMaxSubstepTranslation = 0.5 * b2_maxTranslation;  // m
 constexpr double kMaxSubstepRotation = 0.5 * b2_maxRotation;        // rad
+// A colliding body moves at most this fraction of its radius per sub-step: it meets whatever it
+// runs into before passing through it, and sinks into it by less than that before the solver
+// pushes it out.
+constexpr double kMaxSubstepRadii = 0.5;
+// Box2D's solver iterations per sub-step (its recommended 8 and 3). They act on contacts only, so
+// a body that touches nothing moves as with any other count.
+constexpr int kVelocityIterations = 8;
+constexpr int kPositionIterations = 3;
 
-// A fixture's user data encodes our id: (index << 2) | (kind + 1), never 0.
+// Collision categories: ground robots collide with robots and solids, UAVs with UAVs only.
+constexpr uint16 kGroundCategory = 0x1;
+constexpr uint16 kUavCategory = 0x2;
+constexpr uint16 kSolidCategory = 0x4;
+
+// A fixture's user data encodes our id: (index << 3) | (kind + 1), never 0.
 uintptr_t encode(BodyKind kind, int index) {
-  return (static_cast<uintptr_t>(index) << 2) | (static_cast<uintptr_t>(kind) + 1);
+  return (static_cast<uintptr_t>(index) << 3) | (static_cast<uintptr_t>(kind) + 1);
 }
 BodyRef decode(uintptr_t data) {
-  return {static_cast<BodyKind>((data & 3u) - 1), static_cast<int>(data >> 2)};
+  return {static_cast<BodyKind>((data & 7u) - 1), static_cast<int>(data >> 3)};
 }
 
 b2Vec2 toB2(const Vec2& v) {
@@ -45,12 +59,28 @@ b2FixtureDef nonCollidingFixture(const b2Shape* shape, BodyKind kind, int index)
   return fixture;
 }
 
+// A fixture the contact solver acts on: frictionless (a body slides along what it touches) and
+// without restitution (it stops rather than bounces).
+b2FixtureDef solidFixture(const b2Shape* shape, BodyKind kind, int index, uint16 category,
+                          uint16 mask) {
+  b2FixtureDef fixture;
+  fixture.shape = shape;
+  fixture.density = 1.0f;
+  fixture.friction = 0.0f;
+  fixture.restitution = 0.0f;
+  fixture.filter.categoryBits = category;
+  fixture.filter.maskBits = mask;
+  fixture.userData.pointer = encode(kind, index);
+  return fixture;
+}
+
 // Collects every fixture whose broad-phase box overlaps the query box.
 class CollectCallback final : public b2QueryCallback {
  public:
   explicit CollectCallback(std::vector<BodyRef>& out) : out_(out) {}
   bool ReportFixture(b2Fixture* fixture) override {
-    out_.push_back(decode(fixture->GetUserData().pointer));
+    const BodyRef ref = decode(fixture->GetUserData().pointer);
+    if (ref.kind != BodyKind::trunk && ref.kind != BodyKind::wall) out_.push_back(ref);
     return true;
   }
 
@@ -112,23 +142,46 @@ struct World::Box2d {
   std::vector<b2Body*> uavs;
   std::vector<b2Body*> targets;
   b2Body* forest = nullptr;  // one static body holding every tree as a fixture
+  b2Body* solids = nullptr;  // one static body holding every trunk and wall, with ground robots
 };
 
 World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()) {
   b2World& w = b2_->world;
   w.SetAllowSleeping(false);
-  w.SetContinuousPhysics(false);
+  // Box2D's continuous collision: a dynamic body moving into a static shape (a robot into a
+  // trunk or wall) stops at the time of impact within a sub-step, rather than sinking in and
+  // being pushed out over the following ones. It acts on those contacts only.
+  w.SetContinuousPhysics(true);
 
-  b2CircleShape uav_shape;
-  uav_shape.m_radius = kUavBodyRadius;
+  // Agents are dynamic bodies driven at their command: the contact solver can stop them (a
+  // kinematic body goes wherever its velocity takes it). Nothing else acts on them (no gravity,
+  // no damping, fixed rotation), so a body that touches nothing moves exactly as commanded.
+  bool any_ground = false;
   for (int i = 0; i < static_cast<int>(def_.uavs.size()); ++i) {
+    const UavDef& agent = def_.uavs[i];
+    const bool ground = agent.kind == AgentKind::ground;
+    any_ground = any_ground || (ground && agent.radius > 0.0);
     b2BodyDef body;
-    body.type = b2_kinematicBody;
-    body.position = toB2(def_.uavs[i].start);
-    body.angle = static_cast<float>(def_.uavs[i].yaw);
+    body.type = b2_dynamicBody;
+    body.fixedRotation = true;  // the heading is the command's, never the contacts'
+    body.position = toB2(agent.start);
+    body.angle = static_cast<float>(agent.yaw);
     b2Body* b = w.CreateBody(&body);
-    const b2FixtureDef fixture = nonCollidingFixture(&uav_shape, BodyKind::uav, i);
-    b->CreateFixture(&fixture);
+    b2CircleShape shape;
+    if (agent.radius > 0.0) {
+      shape.m_radius = static_cast<float>(agent.radius);
+      b2FixtureDef fixture =
+          ground ? solidFixture(&shape, BodyKind::uav, i, kGroundCategory,
+                                kGroundCategory | kSolidCategory)
+                 : solidFixture(&shape, BodyKind::uav, i, kUavCategory, kUavCategory);
+      // Every agent weighs 1 kg: two pressing on each other at equal speeds stop, neither pushes.
+      fixture.density = static_cast<float>(1.0 / (std::numbers::pi * agent.radius * agent.radius));
+      b->CreateFixture(&fixture);
+    } else {  // no body: it touches nothing, its fixture only gives it a broad-phase box
+      shape.m_radius = kNoBodyRadius;
+      const b2FixtureDef fixture = nonCollidingFixture(&shape, BodyKind::uav, i);
+      b->CreateFixture(&fixture);
+    }
     b2_->uavs.push_back(b);
   }
 
@@ -169,7 +222,35 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
     }
   }
 
+  // Trunks and walls, only when a ground robot with a body can touch them (UAVs fly above them).
+  if (any_ground) {
+    b2BodyDef solids_def;
+    solids_def.type = b2_staticBody;
+    b2_->solids = w.CreateBody(&solids_def);
+    for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
+      const TreeDef& tree = def_.trees[k];
+      if (isWall(tree)) {
+        std::vector<b2Vec2> vertices;
+        for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
+        b2PolygonShape polygon;
+        polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+        const b2FixtureDef fixture =
+            solidFixture(&polygon, BodyKind::wall, k, kSolidCategory, kGroundCategory);
+        b2_->solids->CreateFixture(&fixture);
+      } else if (tree.trunk_radius > 0.0) {
+        b2CircleShape trunk;
+        trunk.m_p = toB2(tree.centre);
+        trunk.m_radius = static_cast<float>(tree.trunk_radius);
+        const b2FixtureDef fixture =
+            solidFixture(&trunk, BodyKind::trunk, k, kSolidCategory, kGroundCategory);
+        b2_->solids->CreateFixture(&fixture);
+      }
+    }
+  }
+
   commands_.assign(def_.uavs.size(), Vec2::Zero());
+  contacts_.assign(def_.uavs.size(), {});
+  contacts_begun_.assign(def_.uavs.size(), 0);
   uav_velocity_.assign(def_.uavs.size(), Vec2::Zero());
   target_velocity_.assign(def_.targets.size(), Vec2::Zero());
 }
@@ -187,6 +268,7 @@ void World::commandUav(int uav, const Vec2& velocity) {
 void World::step(double dt) {
   double max_translation = 0.0;  // m over this step, any body
   double max_rotation = 0.0;     // rad over this step, any UAV
+  int substeps = 1;
 
   for (std::size_t t = 0; t < b2_->targets.size(); ++t) {
     b2Body* body = b2_->targets[t];
@@ -199,33 +281,86 @@ void World::step(double dt) {
     max_translation = std::max(max_translation, v.norm() * dt);
   }
 
-  for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
+  const std::size_t n = b2_->uavs.size();
+  std::vector<b2Vec2> velocity(n);  // the command each sub-step drives at
+  std::vector<float> omega(n);      // rad/s
+  std::vector<Vec2> start(n);       // m
+  for (std::size_t i = 0; i < n; ++i) {
     b2Body* body = b2_->uavs[i];
     const UavDef& agent = def_.uavs[i];
     Vec2 v = commands_[i];
-    double omega = 0.0;  // rad/s
+    double w = 0.0;  // rad/s
+    start[i] = fromB2(body->GetPosition());
     if (agent.kind == AgentKind::ground) {
       // The unicycle's pose at t + dt from where the body actually is (world/unicycle.h).
-      const Pose2 now{fromB2(body->GetPosition()), body->GetAngle()};
+      const Pose2 now{start[i], body->GetAngle()};
       const Pose2 next = unicycleMove(now, v, agent.turn_rate, dt);
       v = (next.position - now.position) / dt;
-      omega = wrapAngle(next.heading - now.heading) / dt;
+      w = wrapAngle(next.heading - now.heading) / dt;
+      if (agent.radius > 0.0) {
+        substeps = std::max(
+            substeps,
+            static_cast<int>(std::ceil(v.norm() * dt / (kMaxSubstepRadii * agent.radius))));
+      }
     } else if (agent.yaw_mode == YawMode::velocity && v.squaredNorm() > 1e-12) {
       const double heading = std::atan2(v.y(), v.x());
-      omega = wrapAngle(heading - body->GetAngle()) / dt;
+      w = wrapAngle(heading - body->GetAngle()) / dt;
     }
-    body->SetLinearVelocity(toB2(v));
+    velocity[i] = toB2(v);
+    omega[i] = static_cast<float>(w);
     uav_velocity_[i] = v;
-    body->SetAngularVelocity(static_cast<float>(omega));
     max_translation = std::max(max_translation, v.norm() * dt);
-    max_rotation = std::max(max_rotation, std::abs(omega) * dt);
+    max_rotation = std::max(max_rotation, std::abs(w) * dt);
+  }
+  // Two UAVs that could come within their separation during the step: sub-steps short enough
+  // that neither passes through the other. UAVs far apart keep the sub-steps they had.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (def_.uavs[i].kind == AgentKind::ground) continue;
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (def_.uavs[j].kind == AgentKind::ground) continue;
+      if (!(def_.uavs[i].radius > 0.0 && def_.uavs[j].radius > 0.0)) continue;          // no body
+      const double closing = (uav_velocity_[i].norm() + uav_velocity_[j].norm()) * dt;  // m
+      const double reach = def_.uavs[i].radius + def_.uavs[j].radius + closing;
+      if ((start[i] - start[j]).norm() >= reach + b2_aabbExtension) continue;
+      const double smaller = std::min(def_.uavs[i].radius, def_.uavs[j].radius);
+      substeps =
+          std::max(substeps, static_cast<int>(std::ceil(closing / (kMaxSubstepRadii * smaller))));
+    }
   }
 
-  const int substeps =
-      std::max({1, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
+  substeps =
+      std::max({substeps, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
                 static_cast<int>(std::ceil(max_rotation / kMaxSubstepRotation))});
   const float h = static_cast<float>(dt / substeps);
-  for (int s = 0; s < substeps; ++s) b2_->world.Step(h, 1, 1);
+  std::vector<std::vector<BodyRef>> touched(n);
+  for (int s = 0; s < substeps; ++s) {
+    for (std::size_t i = 0; i < n; ++i) {
+      b2_->uavs[i]->SetLinearVelocity(velocity[i]);
+      b2_->uavs[i]->SetAngularVelocity(omega[i]);
+    }
+    b2_->world.Step(h, kVelocityIterations, kPositionIterations);
+    for (b2Contact* c = b2_->world.GetContactList(); c != nullptr; c = c->GetNext()) {
+      if (!c->IsTouching()) continue;
+      const BodyRef a = decode(c->GetFixtureA()->GetUserData().pointer);
+      const BodyRef b = decode(c->GetFixtureB()->GetUserData().pointer);
+      if (a.kind == BodyKind::uav) touched[a.index].push_back(b);
+      if (b.kind == BodyKind::uav) touched[b.index].push_back(a);
+    }
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<BodyRef>& now = touched[i];
+    std::sort(now.begin(), now.end());
+    now.erase(std::unique(now.begin(), now.end()), now.end());
+    const std::vector<BodyRef>& before = contacts_[i];
+    contacts_begun_[i] =
+        static_cast<int>(std::count_if(now.begin(), now.end(), [&](const BodyRef& r) {
+          return !std::binary_search(before.begin(), before.end(), r);
+        }));
+    // A body that touched something went where the solver let it: its velocity is what it moved.
+    if (!now.empty()) uav_velocity_[i] = (fromB2(b2_->uavs[i]->GetPosition()) - start[i]) / dt;
+    contacts_[i] = std::move(now);
+  }
 
   time_ += dt;
   ++step_;
@@ -238,8 +373,8 @@ WorldSnapshot World::snapshot() const {
   snap.uavs.reserve(b2_->uavs.size());
   for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
     const b2Body* body = b2_->uavs[i];
-    snap.uavs.push_back(
-        {fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle())});
+    snap.uavs.push_back({fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle()),
+                         contacts_[i], contacts_begun_[i]});
   }
   snap.targets.reserve(b2_->targets.size());
   for (std::size_t t = 0; t < b2_->targets.size(); ++t) {
@@ -256,10 +391,7 @@ void World::queryAabb(const Aabb& box, std::vector<BodyRef>& out) const {
   query.upperBound = toB2(box.hi);
   b2_->world.QueryAABB(&callback, query);
   // The broad-phase order depends on the tree's history; sort so callers see a stable order.
-  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
-            [](const BodyRef& x, const BodyRef& y) {
-              return x.kind != y.kind ? x.kind < y.kind : x.index < y.index;
-            });
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
 bool World::insideOccluder(const Vec2& p) const {

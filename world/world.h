@@ -1,7 +1,9 @@
 #pragma once
-// The Box2D world: UAVs and targets as kinematic bodies, trees as fixtures of one static body.
-// The only code in canopy that includes Box2D; nothing here collides, Box2D serves as the
-// integrator and the spatial database (broad-phase AABB queries and ray casts).
+// The Box2D world: agents as dynamic bodies, targets as kinematic ones, trees as fixtures of one
+// static body. The only code in canopy that includes Box2D. Box2D serves as the integrator, the
+// spatial database (broad-phase AABB queries and ray casts) and the contact solver: a ground
+// robot is stopped by trunks, walls and other robots and slides along them, UAVs keep their
+// separation; targets and crowns touch nothing (docs/design-notes.md, "Bodies that collide").
 #include <memory>
 #include <optional>
 #include <vector>
@@ -11,15 +13,6 @@
 #include "world/snapshot.h"
 
 namespace canopy::world {
-
-enum class BodyKind { uav, target, tree };
-
-/// Our own id of a body: its kind and its index in the WorldDef's list.
-struct BodyRef {
-  BodyKind kind = BodyKind::target;
-  int index = 0;
-  friend bool operator==(const BodyRef&, const BodyRef&) = default;
-};
 
 class World {
  public:
@@ -36,8 +29,12 @@ class World {
   const Vec2& commandedVelocity(int uav) const { return commands_[uav]; }
 
   /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
-  /// commanded velocity, ground robots by unicycleMove over dt. Sub-steps Box2D so that no body
-  /// exceeds Box2D's per-step motion limits.
+  /// commanded velocity, ground robots by unicycleMove over dt, as far as the contact solver lets
+  /// them. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits, no ground
+  /// robot moves more than half its radius and no two UAVs that could meet close by more than
+  /// half the smaller radius in one sub-step (so none passes through another or a thin wall);
+  /// each sub-step drives every agent at its command again (the solver removes only the part
+  /// into what it touches).
   void step(double dt);
 
   WorldSnapshot snapshot() const;
@@ -46,8 +43,8 @@ class World {
   const WorldDef& def() const { return def_; }
   const std::vector<TreeDef>& trees() const { return def_.trees; }
 
-  /// Bodies whose Box2D fixture bounds overlap box (a superset: callers test exact geometry).
-  /// Appends to out, in a deterministic order.
+  /// Bodies whose Box2D fixture bounds overlap box (a superset: callers test exact geometry);
+  /// crowns, not solid parts. Appends to out, in a deterministic order.
   void queryAabb(const Aabb& box, std::vector<BodyRef>& out) const;
   /// True when p is strictly inside some tree crown.
   bool insideOccluder(const Vec2& p) const;
@@ -58,9 +55,11 @@ class World {
   struct Box2d;  // Box2D objects, hidden from the header
   WorldDef def_;
   std::unique_ptr<Box2d> b2_;
-  std::vector<Vec2> commands_;         // clamped UAV velocity commands (m/s)
-  std::vector<Vec2> uav_velocity_;     // last applied (m/s)
-  std::vector<Vec2> target_velocity_;  // last applied (m/s)
+  std::vector<Vec2> commands_;                  // clamped UAV velocity commands (m/s)
+  std::vector<Vec2> uav_velocity_;              // last applied (m/s)
+  std::vector<Vec2> target_velocity_;           // last applied (m/s)
+  std::vector<std::vector<BodyRef>> contacts_;  // per agent: touched during the last step
+  std::vector<int> contacts_begun_;             // per agent: of those, new at the last step
   double time_ = 0.0;
   int step_ = 0;
 };

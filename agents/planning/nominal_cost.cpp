@@ -33,6 +33,7 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   s.terminal_penalty_weight = config.terminal_penalty_weight;
   s.substeps = config.cost_substeps;
   s.sigma_a = sigma_a;
+  s.clearance = config.clearance;
   return s;
 }
 
@@ -81,7 +82,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
                  u.occlusion == sensing::OcclusionModel::line_of_sight,
                  u.kind == world::AgentKind::ground,
                  u.yaw,
-                 u.turn_rate};
+                 u.turn_rate,
+                 u.radius};
   };
   map_ = problem.map;
   std::vector<char> is_free(n_uavs, 0);
@@ -195,9 +197,70 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }
   }
+  prepareClearance(problem, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
   charged_.assign(n_uavs, 0.0);
+}
+
+void NominalCost::prepareClearance(const PlanningProblem& problem, const std::vector<char>& is_free,
+                                   const std::vector<Vec2>& fixed_pos) {
+  const int T = horizon_ * substeps_;
+  clearance_ = problem.settings.clearance;
+  free_robots_.clear();
+  fixed_robots_.clear();
+  solids_near_.assign(free_.size(), {});
+  if (!problem.settings.keep_clear) return;
+  for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
+    if (!free_[f].ground) continue;
+    free_robots_.push_back(f);
+    if (problem.map == nullptr) continue;
+    // The solids it could come within r + c of: |p − p₀| ≤ v_max·H·Δ along the horizon.
+    const Mover& robot = free_[f];
+    const double reach = robot.v_max * horizon_ * period_ + robot.radius + clearance_;
+    for (const world::TreeDef& tree : problem.map->trees()) {
+      if (world::solidDistance(tree, robot.position) <= reach) solids_near_[f].push_back(&tree);
+    }
+  }
+  if (free_robots_.empty()) return;
+  for (int i = 0; i < n_uavs_; ++i) {
+    if (is_free[i] || problem.uavs[i].kind != world::AgentKind::ground) continue;
+    fixed_robots_.push_back(
+        {problem.uavs[i].radius,
+         std::vector<Vec2>(fixed_pos.begin() + static_cast<std::ptrdiff_t>(i) * T,
+                           fixed_pos.begin() + static_cast<std::ptrdiff_t>(i + 1) * T)});
+  }
+}
+
+double NominalCost::clearancePenalty(int lane) const {
+  constexpr double kForbidden = 1e6;  // m², K₀
+  constexpr double kPerMetre = 1e6;   // m²/m, K₁
+  const int T = horizon_ * substeps_;
+  double penalty = 0.0;
+  auto charge = [&](double room, double distance) {
+    if (distance < room) penalty += kForbidden + kPerMetre * (room - distance);
+  };
+  for (std::size_t a = 0; a < free_robots_.size(); ++a) {
+    const int f = free_robots_[a];
+    const Mover& robot = free_[f];
+    const PoseLanes* poses = &free_pose_[static_cast<std::size_t>(f) * T];
+    Vec2 from = robot.position;
+    for (int t = 0; t < T; ++t) {
+      const Vec2 to(poses[t].x[lane], poses[t].y[lane]);
+      for (const world::TreeDef* solid : solids_near_[f])
+        charge(robot.radius + clearance_, world::solidDistance(*solid, from, to));
+      for (const Teammate& mate : fixed_robots_)
+        charge(robot.radius + mate.radius + clearance_, (to - mate.path[t]).norm());
+      for (std::size_t b = a + 1; b < free_robots_.size(); ++b) {
+        const int g = free_robots_[b];
+        const PoseLanes& other = free_pose_[static_cast<std::size_t>(g) * T + t];
+        charge(robot.radius + free_[g].radius + clearance_,
+               (to - Vec2(other.x[lane], other.y[lane])).norm());
+      }
+      from = to;
+    }
+  }
+  return penalty;
 }
 
 double nominalCost(const PlanningProblem& problem, std::span<const Plan> plans) {

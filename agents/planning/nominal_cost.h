@@ -28,8 +28,10 @@ struct CostSettings {
   bool full_trace = false;               // tr(P) instead of tr(P_pos) in the stage cost
   bool terminal_penalty = true;          // Miller et al. 2009 penalty at m = H
   double terminal_penalty_weight = 0.5;  // w, 1/m
-  int substeps = 1;      // S samples per action (1: the plan instants only, the paper's setting)
-  double sigma_a = 1.0;  // m/s², NCV process-noise intensity σ_a
+  int substeps = 1;        // S samples per action (1: the plan instants only, the paper's setting)
+  double sigma_a = 1.0;    // m/s², NCV process-noise intensity σ_a
+  double clearance = 0.2;  // m, c: ground robots keep radius + c from mapped trunks and walls
+  bool keep_clear = true;  // charge the clearance term (off only to measure what it costs)
 
   static CostSettings from(const PlannerConfig& config, double sigma_a);
 };
@@ -67,6 +69,16 @@ struct PlanningProblem {
 /// bits it has alone. A commanded speed above v_max is clamped, as the world does; a ground robot
 /// follows each action as the world's unicycle (world/unicycle.h: turn toward it, then drive), its
 /// sector turning with it.
+///
+/// Plans that keep clear (docs/design-notes.md): a free ground robot f of radius r_f is charged,
+/// for each sample t, the segment σ_t from its pose at the sample before to its pose at t (the
+/// unicycle drives straight between samples), each solid part s of the map (a wall's polygon, a
+/// trunk's disc) and each other robot g's intended position q_{g,t},
+///   K₀ + K₁·(r_f + c − d(σ_t, s))          when d(σ_t, s) < r_f + c,
+///   K₀ + K₁·(r_f + r_g + c − |p_{f,t} − q_{g,t}|)  when that distance < r_f + r_g + c,
+/// with K₀ = 10⁶ m² and K₁ = 10⁶ m²/m: more than any plan's information cost, so a plan that
+/// comes that close to a known solid is never chosen over one that does not, and deeper is worse.
+/// UAVs are not charged (they fly above all of it; the world keeps them apart).
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
@@ -106,6 +118,7 @@ class NominalCost {
     bool ground;                      // a ground robot: moves as world/unicycle.h
     double yaw;                       // rad, ψ now (the unicycle's heading)
     double turn_rate;                 // rad/s, ω_max of a ground robot
+    double radius;                    // m, its body
   };
   // Whether `uav` at p sees the nominal position z that its footprint holds and no crown covers:
   // under line of sight, when no tree of the map lies on the segment p → z.
@@ -130,6 +143,12 @@ class NominalCost {
   inline void evaluateBody(std::span<const Vec2> actions, std::span<double> costs);
   // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
   double addTerminalPenalty(int lane, double J);
+  // prepare()'s part for the clearance charge: the solids near each free robot, the fixed robots'
+  // intended positions (fixed_pos: every UAV's T samples, filled for the fixed ones).
+  void prepareClearance(const PlanningProblem& problem, const std::vector<char>& is_free,
+                        const std::vector<Vec2>& fixed_pos);
+  // The clearance charge of the candidate in `lane` (free_pose_ holds its flown poses).
+  double clearancePenalty(int lane) const;
 
   int horizon_ = 0;                    // H
   int substeps_ = 1;                   // S samples per action
@@ -143,6 +162,17 @@ class NominalCost {
   std::vector<Mover> free_;            // the free UAVs, in prepare's order
   std::vector<int> free_index_;        // UAV index of each free UAV
   int n_uavs_ = 0;
+  // Clearance: per free agent, the map's solid parts within its reach over the horizon (empty
+  // for a UAV); the other robots' intended positions, T per robot; and which free agents are
+  // robots.
+  double clearance_ = 0.2;                                       // m, c
+  std::vector<std::vector<const world::TreeDef*>> solids_near_;  // [f]
+  struct Teammate {
+    double radius;           // m
+    std::vector<Vec2> path;  // m, at the T samples
+  };
+  std::vector<Teammate> fixed_robots_;  // the fixed ground robots
+  std::vector<int> free_robots_;        // the free ground robots (f)
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j

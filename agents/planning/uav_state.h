@@ -17,6 +17,7 @@ struct UavState {
   double v_max = 5.0;                               // m/s, |a_{i,m}| ≤ v_max
   world::AgentKind kind = world::AgentKind::uav;    // ground: moves as world/unicycle.h
   double turn_rate = 1.0;                           // rad/s, ground robots' ω_max
+  double radius = 0.5;                              // m, its body (world::UavDef::radius)
   sensing::FootprintDef footprint;                  // φ_i relative to the UAV (m)
   sensing::SensorQuality quality;                   // α_i (dimensionless) and r0 (m) of R_i
   // What hides a target from its camera: the same model its sensor uses (sensing/visibility.h).

@@ -101,6 +101,10 @@ const CanopyReplay = {};
       const o = (k * A + i) * 3;
       return { x: raw.uav[o], y: raw.uav[o + 1], yaw: raw.uav[o + 2] };
     };
+    // What agent i's body touched over step k ("wall:3", "uav:1", …), or null.
+    const contacts = new Map();
+    (raw.contacts || []).forEach(function (c) { contacts.set(c[0] * A + c[1], c.slice(2)); });
+    run.contactsAt = function (k, i) { return contacts.get(k * A + i) || null; };
     run.target = function (k, t) {
       const o = (k * T + t) * 2;
       return { x: raw.target[o], y: raw.target[o + 1] };

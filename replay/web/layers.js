@@ -9,6 +9,7 @@
   const C = {
     outside: "rgb(186,188,182)", ground: "rgb(238,234,222)", aoiEdge: "rgb(120,120,112)",
     treeFill: "rgb(92,150,72)", treeEdge: "rgb(46,92,38)", target: "rgb(24,24,24)",
+    contact: "rgb(214,40,40)",
     trail: "rgba(70,70,70,0.784)", shadow: "rgba(60,60,60,0.275)", text: "rgb(20,20,20)",
     panel: "rgba(250,250,246,0.92)", panelEdge: "rgb(90,90,90)", white: "rgb(255,255,255)",
     link: "rgba(40,40,40,0.55)", late: "rgb(200,110,0)", lost: "rgb(200,0,0)"
@@ -419,7 +420,15 @@
   function drawAgents(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
       const p = run.uav(k, i);
-      dart(ctx, view.toScreen(p.x, p.y), p.yaw, 18, agent.colour);
+      const s = view.toScreen(p.x, p.y);
+      dart(ctx, s, p.yaw, 18, agent.colour);
+      if (run.contactsAt(k, i)) {  // touching a trunk, wall or agent: a red ring, as the frames
+        ctx.beginPath();
+        ctx.arc(s.x, s.y, 13, 0, 2 * Math.PI);
+        ctx.strokeStyle = C.contact;
+        ctx.lineWidth = 2.5;
+        ctx.stroke();
+      }
     });
   }
 

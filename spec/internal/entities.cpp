@@ -193,6 +193,10 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
       uav.body.turn_rate = reader.number("turn_rate", uav.body.turn_rate, Bound::positive);
     }
     uav.body.v_max = reader.number("v_max", uav.body.v_max, Bound::positive);
+    // A robot has a body by default; UAVs pass over one another unless given one (the paper's
+    // scenarios have them cross: docs/design-notes.md).
+    uav.body.radius = reader.number("radius", ground ? 0.5 : 0.0, Bound::non_negative);
+    if (uav.body.radius > 100.0) reader.required("radius").fail("expected at most 100 m");
 
     uav.sensor.ground_level = ground;
     if (ground) {

@@ -103,9 +103,27 @@ world::TreeDef readPolygon(ObjectReader& reader) {
   return world::TreeDef::polygon(std::move(vertices));
 }
 
+// trunk_radius: every tree of the entry gets it, no wider than its crown. Absent, a disc keeps
+// world::defaultTrunkRadius of its radius and a polygon stays a wall (world/tree.h).
+void readTrunk(ObjectReader& reader, std::vector<world::TreeDef>& out, std::size_t first) {
+  const auto field = reader.optional("trunk_radius");
+  if (!field) return;
+  const double trunk = field->number(Bound::positive);
+  for (std::size_t k = first; k < out.size(); ++k) {
+    if (trunk > out[k].radius) {
+      std::ostringstream text;
+      text << "expected a trunk no wider than its crown; tree " << k - first
+           << " of this entry has a crown of radius " << out[k].radius << " m";
+      field->fail(text.str());
+    }
+    out[k].trunk_radius = trunk;
+  }
+}
+
 void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& aoi,
                    std::vector<world::TreeDef>& out) {
   const Field& field = reader.field();
+  const std::size_t first = out.size();
   if (type == "disc") {
     const Field centre_field = reader.required("centre");
     const Vec2 centre = centre_field.vec2();
@@ -162,6 +180,7 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     const auto trees = drawBounded(field, [&] { return clusterForest(def); });
     out.insert(out.end(), trees.begin(), trees.end());
   }
+  readTrunk(reader, out, first);
 }
 
 }  // namespace

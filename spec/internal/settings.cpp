@@ -137,6 +137,8 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);
   p.cost_substeps = reader.integer("cost_substeps", p.cost_substeps, 1, 100);
+  p.clearance = reader.number("clearance", p.clearance, Bound::non_negative);
+  if (p.clearance > 100.0) reader.required("clearance").fail("expected at most 100 m");
   readPso(reader, p.pso);
   p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);

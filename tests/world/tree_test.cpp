@@ -70,5 +70,37 @@ TEST(Tree, BoundsHoldTheCrown) {
   EXPECT_EQ(poly.hi, Vec2(3, 4));
 }
 
+TEST(Tree, SolidPartsTrunksAndWalls) {
+  // Default trunks: 0.1 r within [0.05, 0.5] m, never wider than the crown.
+  EXPECT_DOUBLE_EQ(TreeDef::disc(Vec2(0, 0), 2.0).trunk_radius, 0.2);
+  EXPECT_DOUBLE_EQ(TreeDef::disc(Vec2(0, 0), 9.0).trunk_radius, 0.5);
+  EXPECT_DOUBLE_EQ(TreeDef::disc(Vec2(0, 0), 0.2).trunk_radius, 0.05);
+  EXPECT_DOUBLE_EQ(TreeDef::disc(Vec2(0, 0), 0.03).trunk_radius, 0.03);
+  TreeDef wall = TreeDef::polygon({{2, -1}, {4, -1}, {4, 1}, {2, 1}});
+  EXPECT_TRUE(isWall(wall));
+  EXPECT_FALSE(isWall(TreeDef::disc(Vec2(0, 0), 1.0)));
+  // Points: to the nearest edge or corner, 0 inside.
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(0, 0)), 2.0);
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(7, 5)), 5.0);  // (4, 1) + (3, 4)
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(3, 0)), 0.0);
+  // Segments: crossing it, passing 0.5 above, parallel to an edge, ending short.
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(0, 0), Vec2(10, 0)), 0.0);
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(0, 1.5), Vec2(10, 1.5)), 0.5);
+  // Along x + y = 8: the corner (4, 1) is 3/√2 from it.
+  EXPECT_NEAR(solidDistance(wall, Vec2(3, 5), Vec2(9, -1)), 3.0 / std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(solidDistance(wall, Vec2(0, 0), Vec2(1.5, 0)), 0.5);
+  // A trunk: the segment's distance to the centre less its radius.
+  TreeDef tree = TreeDef::disc(Vec2(5, 0), 3.0);
+  tree.trunk_radius = 0.3;
+  EXPECT_NEAR(solidDistance(tree, Vec2(0, 1), Vec2(10, 1)), 0.7, 1e-12);
+  // Nearest point of (0, 0) → (3, 4) to (5, 0): (1.8, 2.4), 4 m away.
+  EXPECT_NEAR(solidDistance(tree, Vec2(0, 0), Vec2(3, 4)), 4.0 - 0.3, 1e-12);
+  EXPECT_NEAR(solidDistance(tree, Vec2(5, 0)), -0.3, 1e-12);
+  // A polygon with a trunk is a crown: only the trunk at its centroid is solid.
+  wall.trunk_radius = 0.2;
+  EXPECT_FALSE(isWall(wall));
+  EXPECT_NEAR(solidDistance(wall, Vec2(0, 0), Vec2(10, 0)), -0.2, 1e-12);
+}
+
 }  // namespace
 }  // namespace canopy::world
