@@ -64,7 +64,7 @@ struct FusionConfig {
   FusionMethod method = FusionMethod::ci;
   int rounds = 5;                                               // L consensus rounds per step
   double comm_range = std::numeric_limits<double>::infinity();  // m, neighbours within this range
-  double comm_drop = 0.0;          // probability that a message is lost
+  double comm_drop = 0.0;  // probability that a message is lost
   // Simulation steps a message is in flight: intention messages (SMA-NBO's plans, the centralised
   // leader's orders) and consensus messages alike (docs/design-notes.md).
   int comm_latency = 0;
@@ -88,6 +88,16 @@ inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
 /// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
 /// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
 /// rounds — on the same joint cost.
+/// What the NBO cost of one agent's planning call sums over (docs/design-notes.md, "Cost scope").
+/// team: every track of its belief and every UAV of the team (the paper's cost); reach: only the
+/// tracks that a free UAV's footprint can reach within the horizon, and only the teammates whose
+/// footprints can reach those tracks.
+enum class CostScope { team, reach };
+inline constexpr EnumNames<CostScope, 2> kCostScopeNames{{
+    {CostScope::team, "team"},
+    {CostScope::reach, "reach"},
+}};
+
 enum class JointSearch { swarm, block_coordinate };
 inline constexpr EnumNames<JointSearch, 2> kJointSearchNames{{
     {JointSearch::swarm, "swarm"},
@@ -110,7 +120,7 @@ struct PsoConfig {
 struct PlannerConfig {
   PlannerAlgorithm algorithm = PlannerAlgorithm::none;  // none: UAVs follow scripted paths
   int horizon = 5;                                      // H planning steps
-  double plan_period = 1.0;  // s, Δ: the length of each planned action
+  double plan_period = 1.0;                             // s, Δ: the length of each planned action
   // s, between planning epochs; the loader defaults it to plan_period (the paper's setting). A
   // shorter period re-plans inside an action: the actions stay Δ long, intentions and warm starts
   // are shifted by the time elapsed (docs/design-notes.md).
@@ -120,6 +130,7 @@ struct PlannerConfig {
   bool full_trace = false;  // cost on tr(P) instead of tr(P_pos)
   bool terminal_penalty = true;
   double terminal_penalty_weight = 0.5;  // w
+  CostScope cost_scope = CostScope::team;
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)

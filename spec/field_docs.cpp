@@ -143,6 +143,10 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"planner.cost_trace", "", "position (tr P_pos) or full (tr P)"},
       {"planner.terminal_penalty", "", "add w × the distance to the tracks at the horizon's end"},
       {"planner.terminal_penalty_weight", "", "w of the terminal penalty"},
+      {"planner.cost_scope", "",
+       "team (the paper's cost: every track, every UAV) or reach (only the tracks a free UAV can "
+       "reach within the horizon and the teammates that can reach them; an approximation of the "
+       "terminal penalty, docs/design-notes.md)"},
       {"planner.cost_substeps", "",
        "samples of the nominal trajectory per action (1: the paper's cost)"},
       {"planner.joint_search", "",

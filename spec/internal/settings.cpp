@@ -137,6 +137,7 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);
   p.cost_substeps = reader.integer("cost_substeps", p.cost_substeps, 1, 100);
+  p.cost_scope = reader.enumeration("cost_scope", agents::kCostScopeNames, p.cost_scope);
   readPso(reader, p.pso);
   p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
