@@ -88,6 +88,16 @@ inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
 /// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
 /// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
 /// rounds — on the same joint cost.
+/// What the NBO cost of one agent's planning call sums over (docs/design-notes.md, "Cost scope").
+/// team: every track of its belief and every UAV of the team (the paper's cost); reach: only the
+/// tracks that a free UAV's footprint can reach within the horizon, and only the teammates whose
+/// footprints can reach those tracks.
+enum class CostScope { team, reach };
+inline constexpr EnumNames<CostScope, 2> kCostScopeNames{{
+    {CostScope::team, "team"},
+    {CostScope::reach, "reach"},
+}};
+
 enum class JointSearch { swarm, block_coordinate };
 inline constexpr EnumNames<JointSearch, 2> kJointSearchNames{{
     {JointSearch::swarm, "swarm"},
@@ -120,6 +130,7 @@ struct PlannerConfig {
   bool full_trace = false;  // cost on tr(P) instead of tr(P_pos)
   bool terminal_penalty = true;
   double terminal_penalty_weight = 0.5;  // w
+  CostScope cost_scope = CostScope::team;
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)

@@ -6,10 +6,13 @@
 #include <cstdio>
 #include <unordered_map>
 
+#include "sensing/footprint.h"
 #include "spec/error.h"
 
 namespace canopy::spec {
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 std::string roughly(double x) {
   char text[32];
@@ -108,7 +111,15 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
       steps * uavs *
       (measurements * measurements * (1.0 + (measurements > 1.0 ? kPropagationSweeps : 0.0)) +
        (measurements > 1.0 ? spec.tracking.max_hypotheses * std::max(1.0, depth) : 0.0));
-  work.fusion_units = steps * spec.fusion.rounds * uavs * uavs * std::max(1.0, targets);
+  // The expected number of agents within `range` of one of `uavs` agents spread over the AOI
+  // (itself included), at most the team.
+  const double area = std::max(1.0, spec.aoi.width() * spec.aoi.height());
+  auto within = [&](double range) {
+    return std::isfinite(range) ? std::min(uavs, 1.0 + uavs * kPi * range * range / area) : uavs;
+  };
+  // Consensus: each agent merges its neighbours' tracks (within fusion.comm_range) every round.
+  work.fusion_units =
+      steps * spec.fusion.rounds * uavs * within(spec.fusion.comm_range) * std::max(1.0, targets);
   const agents::PlannerConfig& p = spec.planner;
   if (p.algorithm != agents::PlannerAlgorithm::none) {
     const double epochs = spec.duration / p.replan_period + 1.0;
@@ -118,7 +129,24 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     const double swarms_per_call = blocks ? p.joint_rounds * uavs : 1.0;
     // Upper bound: every swarm runs to max_iterations (the stall rule usually stops it sooner).
     const double evaluations = epochs * uavs * swarms_per_call * particles * p.pso.max_iterations;
-    work.planning_units = evaluations * p.horizon * p.cost_substeps * std::max(1.0, targets) * uavs;
+    // A cost evaluation runs the recursion of every track in scope over H·S samples, and the
+    // terminal penalty charges each uncovered one among the UAVs in scope. Scope "team": every
+    // track and UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
+    // reach radii R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the
+    // larger of the team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean
+    // density (people cluster), and the teammates within 2R likewise.
+    double scope_targets = std::max(1.0, targets), scope_uavs = uavs;
+    if (p.cost_scope == agents::CostScope::reach) {
+      double reach = 0.0;
+      for (const UavSpec& uav : spec.uavs)
+        reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
+                                    sensing::circumradius(uav.sensor.footprint));
+      const double disc = kPi * 4.0 * reach * reach / area;
+      scope_targets = std::min(
+          scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));
+      scope_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);
+    }
+    work.planning_units = evaluations * p.horizon * p.cost_substeps * scope_targets * scope_uavs;
   }
   return work;
 }
@@ -148,10 +176,10 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
           "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
           "targets + sensing.clutter_rate + trees one footprint can hold)");
   require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
-          "fusion units per trial (steps × rounds × UAVs² × targets)");
+          "fusion units per trial (steps × rounds × UAVs × neighbours in comm_range × targets)");
   require(spec, "planner.pso", work.planning_units, limits.planning_units,
           "planning units per trial (epochs × UAVs × particles × max_iterations × horizon × "
-          "cost_substeps × targets × UAVs)");
+          "cost_substeps × targets in scope × UAVs in scope)");
 }
 
 }  // namespace canopy::spec

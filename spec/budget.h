@@ -16,8 +16,8 @@ struct WorkLimits {
   double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
   double record_bytes = 4e9;          // estimated size of record.jsonl
   double tracking_units = 2e11;       // steps × UAVs × (measurements² + joint-event cap)
-  double fusion_units = 2e11;         // steps × rounds × UAVs² × targets
-  double planning_units = 2e11;       // evaluations × H × substeps × targets × UAVs
+  double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
+  double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
   double sweep_trials = 1e7;          // configurations × trials
   double sweep_bytes = 1e9;           // configurations × (their overrides' text + 4 kB)

@@ -156,6 +156,10 @@ const std::vector<FieldDoc>& fieldDocs() {
        "ground robots: a nominal pose closer than radius + clearance to a trunk or wall of the "
        "agent's map, or than the sum of the radii + clearance to another robot's intended pose "
        "at the same sample, is charged a penalty that forbids it (docs/design-notes.md)"},
+      {"planner.cost_scope", "",
+       "team (the paper's cost: every track, every UAV) or reach (only the tracks a free UAV can "
+       "reach within the horizon and the teammates that can reach them; an approximation of the "
+       "terminal penalty, docs/design-notes.md)"},
       {"planner.cost_substeps", "",
        "samples of the nominal trajectory per action (1: the paper's cost)"},
       {"planner.joint_search", "",

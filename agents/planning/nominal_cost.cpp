@@ -34,6 +34,7 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   s.substeps = config.cost_substeps;
   s.sigma_a = sigma_a;
   s.clearance = config.clearance;
+  s.scope = config.cost_scope;
   return s;
 }
 
@@ -94,16 +95,39 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     free_.push_back(moverOf(problem.uavs[i]));
   }
 
+  // Cost scope "reach" (docs/design-notes.md): a UAV's footprint holds points within
+  // reach(i) = T·v_max·τ + circumradius of its start over the horizon (speeds are clamped to
+  // v_max), so a fixed UAV farther than reach(f) + reach(i) from every free UAV f holds no nominal
+  // position a free UAV can reach, and a track whose nominal positions all lie beyond reach(f)
+  // plays no part in the free UAVs' choice (its stage costs do not depend on them).
+  const bool reach_scope = s.scope == CostScope::reach;
+  auto reachOf = [&](const UavState& u) {
+    return T * u.v_max * tau + sensing::circumradius(u.footprint);
+  };
+  auto nearFree = [&](const Vec2& p, double margin) {
+    for (const int f : free_agents) {
+      if ((p - problem.uavs[f].position).norm() <= reachOf(problem.uavs[f]) + margin + kReachSlack)
+        return true;
+    }
+    return false;
+  };
+
   // The fixed UAVs' paths and footprints over the horizon.
   n_uavs_ = n_uavs;
   final_position_.assign(static_cast<std::size_t>(kLanes) * n_uavs, Vec2::Zero());
+  penalty_uavs_.clear();
   std::vector<int> fixed;
   std::vector<Mover> fixed_movers(n_uavs);
   std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
   std::vector<Vec2> fixed_heading(fixed_pos.size());
   std::vector<Vec2> actions(H);
   for (int i = 0; i < n_uavs; ++i) {
-    if (is_free[i]) continue;
+    if (is_free[i]) {
+      penalty_uavs_.push_back(i);
+      continue;
+    }
+    if (reach_scope && !nearFree(problem.uavs[i].position, reachOf(problem.uavs[i]))) continue;
+    penalty_uavs_.push_back(i);
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
     fixed_movers[i] = moverOf(problem.uavs[i]);
@@ -127,6 +151,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 
   for (int j = 0; j < n_targets; ++j) {
     Vec4 x = problem.targets[j].x;
+    // |z_{j,t} − p_{f,0}| ≥ |ξ_j − p_{f,0}| − T·τ·|v_j|: beyond every free UAV's reach, the track
+    // is out of scope (its start_ stays T, its cost 0).
+    if (reach_scope && !nearFree(x.head<2>(), T * tau * x.tail<2>().norm())) continue;
     const Mat4& P0 = problem.targets[j].P;
     // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
     SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
@@ -182,14 +209,16 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   }
 
   reachable_.clear();
+  scope_tracks_.clear();
   for (int j = 0; j < n_targets; ++j) {
     if (start_[j] < T) reachable_.push_back(j);
+    if (!reach_scope || start_[j] < T) scope_tracks_.push_back(j);
   }
   free_pose_.resize(free_.size() * T);
   // A track no free UAV can see ends as the fixed UAVs leave it (evaluate() overwrites the others).
   trace_final_.resize(static_cast<std::size_t>(kLanes) * n_targets);
   in_view_final_.resize(trace_final_.size());
-  for (int j = 0; j < n_targets; ++j) {
+  for (const int j : scope_tracks_) {
     for (int lane = 0; lane < kLanes; ++lane) {
       trace_final_[kLanes * j + lane] =
           fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
@@ -200,7 +229,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   prepareClearance(problem, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
-  charged_.assign(n_uavs, 0.0);
+  charged_.assign(penalty_uavs_.size(), 0.0);
 }
 
 void NominalCost::prepareClearance(const PlanningProblem& problem, const std::vector<char>& is_free,

@@ -32,6 +32,7 @@ struct CostSettings {
   double sigma_a = 1.0;    // m/s², NCV process-noise intensity σ_a
   double clearance = 0.2;  // m, c: ground robots keep radius + c from mapped trunks and walls
   bool keep_clear = true;  // charge the clearance term (off only to measure what it costs)
+  CostScope scope = CostScope::team;  // reach: only the tracks and teammates within reach
 
   static CostSettings from(const PlannerConfig& config, double sigma_a);
 };
@@ -187,6 +188,8 @@ class NominalCost {
   std::vector<int> start_;          // first such sample t (H·S: none)
   std::vector<double> cost_start_;  // Σ_{m<start} γ^{m−1} tr(P_{j,m})
   std::vector<int> reachable_;      // the tracks with start_ < H·S, in order
+  std::vector<int> scope_tracks_;   // the tracks J sums over: all (team) or reachable_ (reach)
+  std::vector<int> penalty_uavs_;   // the UAVs the terminal penalty charges, by index
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
   std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
@@ -195,7 +198,7 @@ class NominalCost {
   std::vector<double> trace_final_;   // m², tr(P_{j,H}[pos]), 4 lanes at [4j]
   std::vector<std::int64_t> in_view_final_;  // some footprint holds z_{j,H}: −1/0, 4 lanes at [4j]
   std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
-  std::vector<double> charged_;              // m, D_i
+  std::vector<double> charged_;              // m, D_i, per entry of penalty_uavs_
 };
 
 /// The cost of a complete joint plan (one plan per UAV) — prepares and evaluates once. For tests,

@@ -11,12 +11,11 @@ namespace canopy::agents::planning {
 double NominalCost::addTerminalPenalty(int lane, double J) {
   if (!terminal_ || charged_.empty()) return J;
   const int T = horizon_ * substeps_;
-  const int n_targets = static_cast<int>(start_.size());
   auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
   // Tracks in no footprint and not occluded at m = H, by decreasing tr(P_{j,H}[pos]) (ties: lower
   // index first; stable insertion sort).
   int count = 0;
-  for (int j = 0; j < n_targets; ++j) {
+  for (const int j : scope_tracks_) {
     if (in_view_final_[kLanes * j + lane] != 0 ||
         occluded_[static_cast<std::size_t>(j) * T + T - 1])
       continue;
@@ -33,11 +32,12 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
     const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
     int best = 0;
     double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
-    for (int i = 0; i < n_uavs_; ++i) {
-      const double distance = (final_position[i] - z).norm();  // |p_{i,H} − z_{j,H}|
-      if (charged_[i] + distance < best_total) {
-        best = i;
-        best_total = charged_[i] + distance;
+    const int n_charged = static_cast<int>(penalty_uavs_.size());
+    for (int k = 0; k < n_charged; ++k) {
+      const double distance = (final_position[penalty_uavs_[k]] - z).norm();  // |p_{i,H} − z_{j,H}|
+      if (charged_[k] + distance < best_total) {
+        best = k;
+        best_total = charged_[k] + distance;
         best_distance = distance;
       }
     }

@@ -139,6 +139,7 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.cost_substeps = reader.integer("cost_substeps", p.cost_substeps, 1, 100);
   p.clearance = reader.number("clearance", p.clearance, Bound::non_negative);
   if (p.clearance > 100.0) reader.required("clearance").fail("expected at most 100 m");
+  p.cost_scope = reader.enumeration("cost_scope", agents::kCostScopeNames, p.cost_scope);
   readPso(reader, p.pso);
   p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
