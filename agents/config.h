@@ -64,7 +64,7 @@ struct FusionConfig {
   FusionMethod method = FusionMethod::ci;
   int rounds = 5;                                               // L consensus rounds per step
   double comm_range = std::numeric_limits<double>::infinity();  // m, neighbours within this range
-  double comm_drop = 0.0;          // probability that a message is lost
+  double comm_drop = 0.0;  // probability that a message is lost
   // Simulation steps a message is in flight: intention messages (SMA-NBO's plans, the centralised
   // leader's orders) and consensus messages alike (docs/design-notes.md).
   int comm_latency = 0;
@@ -84,13 +84,15 @@ inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
     {OcclusionMapMode::dynamic, "dynamic"},
     {OcclusionMapMode::none, "none"},
 }};
-/// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md): one swarm
-/// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
-/// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
+/// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md, "Dec-POMDP's
+/// joint search"): one swarm over all 2·N·H variables, either the paper's global-best swarm or a
+/// local-best (ring) swarm with warm starts and restarts; or block coordinate descent — one swarm
+/// per UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
 /// rounds — on the same joint cost.
-enum class JointSearch { swarm, block_coordinate };
-inline constexpr EnumNames<JointSearch, 2> kJointSearchNames{{
-    {JointSearch::swarm, "swarm"},
+enum class JointSearch { global_best, local_best, block_coordinate };
+inline constexpr EnumNames<JointSearch, 3> kJointSearchNames{{
+    {JointSearch::global_best, "global_best"},
+    {JointSearch::local_best, "local_best"},
     {JointSearch::block_coordinate, "block_coordinate"},
 }};
 
@@ -110,7 +112,7 @@ struct PsoConfig {
 struct PlannerConfig {
   PlannerAlgorithm algorithm = PlannerAlgorithm::none;  // none: UAVs follow scripted paths
   int horizon = 5;                                      // H planning steps
-  double plan_period = 1.0;  // s, Δ: the length of each planned action
+  double plan_period = 1.0;                             // s, Δ: the length of each planned action
   // s, between planning epochs; the loader defaults it to plan_period (the paper's setting). A
   // shorter period re-plans inside an action: the actions stay Δ long, intentions and warm starts
   // are shifted by the time elapsed (docs/design-notes.md).
@@ -123,8 +125,8 @@ struct PlannerConfig {
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
-  JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
-  int joint_rounds = 2;                           // block coordinate rounds over all UAVs
+  JointSearch joint_search = JointSearch::global_best;  // Dec-POMDP and centralised only
+  int joint_rounds = 2;                                 // block coordinate rounds over all UAVs
 };
 
 /// Simulation steps between plan instants: replan_period / dt, rounded, at least 1.
