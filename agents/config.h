@@ -84,10 +84,6 @@ inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
     {OcclusionMapMode::dynamic, "dynamic"},
     {OcclusionMapMode::none, "none"},
 }};
-/// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md): one swarm
-/// over all 2·N·H variables (the paper's setting), or block coordinate descent — one swarm per
-/// UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
-/// rounds — on the same joint cost.
 /// What the NBO cost of one agent's planning call sums over (docs/design-notes.md, "Cost scope").
 /// team: every track of its belief and every UAV of the team (the paper's cost); reach: only the
 /// tracks that a free UAV's footprint can reach within the horizon, and only the teammates whose
@@ -98,9 +94,15 @@ inline constexpr EnumNames<CostScope, 2> kCostScopeNames{{
     {CostScope::reach, "reach"},
 }};
 
-enum class JointSearch { swarm, block_coordinate };
-inline constexpr EnumNames<JointSearch, 2> kJointSearchNames{{
-    {JointSearch::swarm, "swarm"},
+/// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md, "Dec-POMDP's
+/// joint search"): one swarm over all 2·N·H variables, either the paper's global-best swarm or a
+/// local-best (ring) swarm with warm starts and restarts; or block coordinate descent — one swarm
+/// per UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
+/// rounds — on the same joint cost.
+enum class JointSearch { global_best, local_best, block_coordinate };
+inline constexpr EnumNames<JointSearch, 3> kJointSearchNames{{
+    {JointSearch::global_best, "global_best"},
+    {JointSearch::local_best, "local_best"},
     {JointSearch::block_coordinate, "block_coordinate"},
 }};
 
@@ -134,8 +136,8 @@ struct PlannerConfig {
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
-  JointSearch joint_search = JointSearch::swarm;  // Dec-POMDP and centralised only
-  int joint_rounds = 2;                           // block coordinate rounds over all UAVs
+  JointSearch joint_search = JointSearch::global_best;  // Dec-POMDP and centralised only
+  int joint_rounds = 2;                                 // block coordinate rounds over all UAVs
   // m: a ground robot's nominal pose keeps this much more than its radius from the trunks and
   // walls of its map, and the sum of the radii plus this from another robot's intended pose
   // (docs/design-notes.md, "Plans that keep clear").

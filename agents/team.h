@@ -4,6 +4,7 @@
 // SMA-NBO / Dec-POMDP / centralised planning → velocity commands.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "agents/agent.h"
@@ -57,6 +58,10 @@ class Team {
   const std::vector<Agent>& agents() const { return agents_; }
   const fusion::TeamFusion& fusion() const { return fusion_; }
   const planning::TeamPlanner& planner() const { return planner_; }
+  /// TeamPlanner::observeJointProblems: a hook for tools that save planning states.
+  void observeJointProblems(planning::TeamPlanner::JointProblemObserver observer) {
+    planner_.observeJointProblems(std::move(observer));
+  }
 
  private:
   TeamConfig config_;

@@ -4,6 +4,7 @@
 // adopted by every agent → occlusion maps → on planning epochs, the team's plan → commands for
 // the next step → the step's record. Each tick fills one StepRecord (sim/step_record.h),
 // the only thing observers see.
+#include <utility>
 #include <vector>
 
 #include "agents/team.h"
@@ -51,6 +52,11 @@ class Simulation {
   const spec::ScenarioSpec& spec() const { return spec_; }
   const world::World& world() const { return world_; }
   const agents::Team& team() const { return team_; }
+  /// TeamPlanner::observeJointProblems: every joint search's planning state, for tools
+  /// (bench/joint_search_gaps.cpp); it never changes the run.
+  void observeJointProblems(agents::planning::TeamPlanner::JointProblemObserver observer) {
+    team_.observeJointProblems(std::move(observer));
+  }
   /// Steps between planning epochs (plan_period / dt).
   int stepsPerPlan() const { return steps_per_plan_; }
 

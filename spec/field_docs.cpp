@@ -163,7 +163,8 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"planner.cost_substeps", "",
        "samples of the nominal trajectory per action (1: the paper's cost)"},
       {"planner.joint_search", "",
-       "dec_pomdp and centralized: swarm (one joint swarm) or block_coordinate"},
+       "dec_pomdp and centralized: global_best (the paper's one swarm), local_best (one ring swarm "
+       "with warm starts and restarts) or block_coordinate"},
       {"planner.joint_rounds", "", "block_coordinate: rounds over all UAVs"},
       {"planner.order", "",
        "block_coordinate: the UAVs' order (names or indices; default their order)"},

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace canopy::agents::planning {
 SwarmOptions SwarmOptions::from(const PsoConfig& config, int horizon) {
@@ -18,12 +19,41 @@ SwarmOptions SwarmOptions::from(const PsoConfig& config, int horizon) {
   return o;
 }
 
+bool ParticleSwarm::updateNeighbourhoods(std::size_t n, std::size_t dim, int neighbours,
+                                         std::span<const double> swarm_best, double ftol) {
+  const std::size_t k = static_cast<std::size_t>(
+      std::clamp<long long>(neighbours, 0, static_cast<long long>((n - 1) / 2)));
+  if (neighbourhood_cost_.size() != n)
+    neighbourhood_cost_.assign(n, std::numeric_limits<double>::infinity());
+  bool progress = false;
+  for (std::size_t p = 0; p < n; ++p) {
+    std::size_t best = n;  // none with a finite own best
+    for (std::size_t j = 0; j <= 2 * k; ++j) {
+      const std::size_t q = (p + n - k + j) % n;
+      if (std::isfinite(own_best_cost_[q]) &&
+          (best == n || own_best_cost_[q] < own_best_cost_[best] ||
+           (own_best_cost_[q] == own_best_cost_[best] && q < best))) {
+        best = q;
+      }
+    }
+    const double previous = neighbourhood_cost_[p];
+    const double now = best == n ? std::numeric_limits<double>::infinity() : own_best_cost_[best];
+    if (std::isfinite(previous) && now < previous - ftol * (1.0 + std::abs(previous))) {
+      progress = true;
+    }
+    neighbourhood_cost_[p] = now;
+    const double* from = best == n ? swarm_best.data() : own_best_.data() + best * dim;
+    std::copy(from, from + dim, swarm_best_.begin() + p * dim);
+  }
+  return progress;
+}
+
 SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const double> lo,
                                     std::span<const double> hi, const SwarmOptions& options,
                                     RandomStream& rng, std::span<const double> warm_start) {
   const std::size_t dim = lo.size();
   const std::size_t n = static_cast<std::size_t>(std::max(1, options.particles));
-  if (hi.size() != dim || (!warm_start.empty() && warm_start.size() != dim)) {
+  if (hi.size() != dim || dim == 0 || warm_start.size() % dim != 0 || warm_start.size() > n * dim) {
     std::fprintf(stderr, "ParticleSwarm::minimise: bounds of size %zu and %zu, warm start %zu\n",
                  dim, hi.size(), warm_start.size());
     std::abort();
@@ -39,7 +69,7 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
     }
   }
   for (std::size_t d = 0; d < warm_start.size(); ++d) {
-    x_[d] = wrapPeriodic(warm_start[d], lo[d], hi[d]);
+    x_[d] = wrapPeriodic(warm_start[d], lo[d % dim], hi[d % dim]);
   }
 
   SwarmResult result;
@@ -78,6 +108,13 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
                        hi_.data(),   width_.data(),    x_.data(),          v_.data(),
                        moved_.data()};
   const InstructionSet kernels = instructionSet();
+  const bool ring = options.topology == SwarmTopology::ring;
+  const int restart_after = options.restart_after;
+  if (ring) {
+    neighbourhood_cost_.clear();  // a new swarm: no previous neighbourhood bests
+    updateNeighbourhoods(n, dim, options.neighbours, result.best);
+  }
+  since_improved_.assign(n, 0);
   while (result.iterations < options.max_iterations) {
     moveParticles(move, kernels);
     cost(x_, cost_);
@@ -87,7 +124,11 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
     const double previous = result.best_cost;
     bool improved = false;
     for (std::size_t p = 0; p < n; ++p) {
-      if (!(cost_[p] < own_best_cost_[p])) continue;
+      if (!(cost_[p] < own_best_cost_[p])) {
+        ++since_improved_[p];
+        continue;
+      }
+      since_improved_[p] = 0;
       own_best_cost_[p] = cost_[p];
       std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, own_best_.begin() + p * dim);
       if (cost_[p] < result.best_cost) {
@@ -96,11 +137,33 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
         improved = true;
       }
     }
-    if (improved) repeatSwarmBest();
-    // Stall: |best_k − best_{k−1}| < ftol·(1 + |best_{k−1}|).
-    stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
-                 ? stalls + 1
-                 : 0;
+    if (restart_after > 0) {
+      for (std::size_t p = 0; p < n; ++p) {
+        if (since_improved_[p] < restart_after || own_best_cost_[p] == result.best_cost) continue;
+        for (std::size_t d = 0; d < dim; ++d) {
+          const double range = hi[d] - lo[d];
+          x_[p * dim + d] = rng.uniform(lo[d], hi[d]);
+          v_[p * dim + d] = kInitialVelocityFraction * rng.uniform(-range, range);
+        }
+        // Its own best forgotten: it starts at the new position, replaced by the next evaluation.
+        std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, own_best_.begin() + p * dim);
+        own_best_cost_[p] = std::numeric_limits<double>::infinity();
+        since_improved_[p] = 0;
+      }
+    }
+    if (ring) {
+      // Stall: no neighbourhood best improved by ftol·(1 + |previous|) (a forgotten best that
+      // is replaced by a worse one is no progress).
+      stalls = updateNeighbourhoods(n, dim, options.neighbours, result.best, options.ftol)
+                   ? 0
+                   : stalls + 1;
+    } else {
+      if (improved) repeatSwarmBest();
+      // Stall: |best_k − best_{k−1}| < ftol·(1 + |best_{k−1}|).
+      stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
+                   ? stalls + 1
+                   : 0;
+    }
     if (stalls >= options.stall_iterations) {
       result.stalled = true;
       break;

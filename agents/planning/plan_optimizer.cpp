@@ -10,7 +10,8 @@ namespace canopy::agents::planning {
 
 PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConfig& pso,
                                    std::span<const int> free_agents, std::span<const Plan> assumed,
-                                   std::span<const Plan> warm_start, RandomStream& rng) {
+                                   std::span<const Plan> warm_start, RandomStream& rng,
+                                   const SwarmShape& shape) {
   const int H = problem.settings.horizon;
   const std::size_t n_free = free_agents.size();
   cost_.prepare(problem, free_agents, assumed);
@@ -25,10 +26,11 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
     }
   }
   warm_.clear();
-  if (pso.warm_start && warm_start.size() == n_free) {
-    for (std::size_t f = 0; f < n_free; ++f) {
+  if (pso.warm_start && n_free > 0 && !warm_start.empty() && warm_start.size() % n_free == 0) {
+    for (std::size_t k = 0; k < warm_start.size(); ++k) {
+      const std::size_t f = k % n_free;
       for (int m = 0; m < H; ++m) {
-        const Vec2 a = warm_start[f].action(m);
+        const Vec2 a = warm_start[k].action(m);
         const double speed = a.norm();
         warm_.push_back(std::min(speed, problem.uavs[free_agents[f]].v_max));
         warm_.push_back(speed > 0.0 ? wrapAnglePositive(std::atan2(a.y(), a.x())) : 0.0);
@@ -43,7 +45,16 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
     decodeActions(positions, swarm_actions_);
     cost_.evaluate(swarm_actions_, costs);
   };
-  const SwarmResult best = swarm_.minimise(batch, lo_, hi_, SwarmOptions::from(pso, H), rng, warm_);
+  SwarmOptions options = SwarmOptions::from(pso, H);
+  options.topology = shape.topology;
+  options.neighbours = shape.neighbours;
+  options.restart_after = shape.restart_after;
+  if (shape.particles_per_step > 0) options.particles = shape.particles_per_step * H;
+  if (shape.max_iterations > 0) options.max_iterations = shape.max_iterations;
+  // No more warm starts than particles (the first ones kept).
+  warm_.resize(std::min(warm_.size(),
+                        static_cast<std::size_t>(std::max(1, options.particles)) * lo_.size()));
+  const SwarmResult best = swarm_.minimise(batch, lo_, hi_, options, rng, warm_);
 
   decodeActions(best.best, actions_);
   PlanSearch search;

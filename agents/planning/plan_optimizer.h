@@ -19,17 +19,28 @@ struct PlanSearch {
   long long evaluations = 0;  // cost evaluations
 };
 
+/// The swarm's social structure beyond the paper's global best (particle_swarm.h).
+struct SwarmShape {
+  SwarmTopology topology = SwarmTopology::global_best;
+  int neighbours = 1;     // ring: particles on each side
+  int restart_after = 0;  // > 0: restart a particle after this many iterations without progress
+  int particles_per_step = 0;  // > 0: instead of pso.particles_per_step
+  int max_iterations = 0;      // > 0: instead of pso.max_iterations
+};
+
 /// Decision variables, per free UAV f and step m (agent-major): x[2(f·H + m)] = speed ∈ [0,
 /// v_max_f] (m/s), x[2(f·H + m) + 1] = heading ∈ [0, 2π] (rad); a_{f,m} = speed · (cos heading, sin
 /// heading). Keeps its buffers between calls; one instance per thread.
 class PlanOptimizer {
  public:
   /// free_agents: the UAVs to optimise (SMA: the planning agent; Dec-POMDP: all). assumed: one
-  /// plan per UAV, used for the others. warm_start: empty, or one plan per free UAV (the previous
-  /// plan already shifted), used when pso.warm_start is on.
+  /// plan per UAV, used for the others. warm_start: empty, or k joint starts of one plan per free
+  /// UAV each (k·free_agents.size() plans, start-major; the first is the previous plan already
+  /// shifted), given to particles 0 … k − 1 when pso.warm_start is on.
   PlanSearch optimise(const PlanningProblem& problem, const PsoConfig& pso,
                       std::span<const int> free_agents, std::span<const Plan> assumed,
-                      std::span<const Plan> warm_start, RandomStream& rng);
+                      std::span<const Plan> warm_start, RandomStream& rng,
+                      const SwarmShape& shape = {});
 
  private:
   NominalCost cost_;

@@ -93,7 +93,8 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
     // at once), each shifted by the time elapsed.
     for (int j = 0; j < n; ++j) {
       const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
-      joint[j] = m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
+      joint[j] =
+          m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
       joint_epoch[j] = m.epoch;
     }
     const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
@@ -121,8 +122,27 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
   }
 }
 
-PlanSearch TeamPlanner::searchByBlocks(const PlanningProblem& problem, std::span<const Plan> warm,
-                                       RandomStream& rng) {
+std::vector<Plan> jointWarmStarts(std::span<const Plan> previous, int n, int horizon) {
+  // Start-major, n plans per start: the previous joint plan shifted; every UAV hovering; then for
+  // each UAV, the previous plan with that UAV hovering (the others as before). Without a previous
+  // plan only the hover start.
+  std::vector<Plan> starts;
+  const bool has_previous = previous.size() == static_cast<std::size_t>(n);
+  if (has_previous) starts.insert(starts.end(), previous.begin(), previous.end());
+  starts.insert(starts.end(), n, hoverPlan(horizon));
+  if (has_previous && n > 1) {
+    for (int f = 0; f < n; ++f) {
+      for (int i = 0; i < n; ++i) starts.push_back(i == f ? hoverPlan(horizon) : previous[i]);
+    }
+  }
+  return starts;
+}
+
+namespace {
+
+PlanSearch searchByBlocks(PlanOptimizer& optimizer, const PlanningProblem& problem,
+                          const PlannerConfig& config, std::span<const int> order,
+                          std::span<const Plan> warm, RandomStream& rng) {
   // Block coordinate descent on J(b_i, a): each UAV's 2·H variables in turn, the others held at
   // their current plans. The block's current plan is one of its swarm's particles, so J never
   // increases from one block to the next; the last block's cost is J of the joint plan returned.
@@ -130,14 +150,14 @@ PlanSearch TeamPlanner::searchByBlocks(const PlanningProblem& problem, std::span
   PlanSearch joint;
   joint.plans = warm.size() == static_cast<std::size_t>(n)
                     ? std::vector<Plan>(warm.begin(), warm.end())
-                    : std::vector<Plan>(n, hoverPlan(settings_.horizon));
-  PsoConfig pso = config_.pso;
+                    : std::vector<Plan>(n, hoverPlan(problem.settings.horizon));
+  PsoConfig pso = config.pso;
   pso.warm_start = true;
-  for (int round = 0; round < config_.joint_rounds; ++round) {
-    for (const int i : order_) {
+  for (int round = 0; round < config.joint_rounds; ++round) {
+    for (const int i : order) {
       const int self[] = {i};
       const PlanSearch block =
-          optimizer_.optimise(problem, pso, self, joint.plans, {&joint.plans[i], 1}, rng);
+          optimizer.optimise(problem, pso, self, joint.plans, {&joint.plans[i], 1}, rng);
       joint.plans[i] = block.plans.front();
       joint.cost = block.cost;
       joint.iterations += block.iterations;
@@ -148,13 +168,31 @@ PlanSearch TeamPlanner::searchByBlocks(const PlanningProblem& problem, std::span
   return joint;
 }
 
+}  // namespace
+
+PlanSearch searchJointPlan(PlanOptimizer& optimizer, const PlanningProblem& problem,
+                           const PlannerConfig& config, std::span<const int> order,
+                           std::span<const Plan> warm, RandomStream& rng, const SwarmShape& local) {
+  const int n = static_cast<int>(problem.uavs.size());
+  std::vector<int> everyone(n);
+  std::iota(everyone.begin(), everyone.end(), 0);
+  const std::vector<Plan> unused(n);  // every UAV is free: no plan is held fixed
+  switch (config.joint_search) {
+    case JointSearch::global_best:
+      return optimizer.optimise(problem, config.pso, everyone, unused, warm, rng);
+    case JointSearch::local_best:
+      return optimizer.optimise(problem, config.pso, everyone, unused,
+                                jointWarmStarts(warm, n, problem.settings.horizon), rng, local);
+    case JointSearch::block_coordinate:
+      break;
+  }
+  return searchByBlocks(optimizer, problem, config, order, warm, rng);
+}
+
 void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs,
                             const AgentView& view) {
   const int n = static_cast<int>(uavs.size());
   const int H = settings_.horizon;
-  std::vector<int> everyone(n);
-  std::iota(everyone.begin(), everyone.end(), 0);
-  const std::vector<Plan> unused(n);  // every UAV is free: no plan is held fixed
   std::vector<Plan> warm;
   if (last_joint_epoch_[planner] >= 0) {
     for (const Plan& previous : last_joint_[planner]) {
@@ -170,10 +208,9 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
   RandomStream joint_stream(seed_, "pso.joint", static_cast<std::uint64_t>(out.epoch));
   RandomStream& rng =
       config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
+  if (joint_observer_) joint_observer_(out.epoch, planner, problem, warm);
   const Clock::time_point start = Clock::now();
-  PlanSearch search = config_.joint_search == JointSearch::swarm
-                          ? optimizer_.optimise(problem, config_.pso, everyone, unused, warm, rng)
-                          : searchByBlocks(problem, warm, rng);
+  PlanSearch search = searchJointPlan(optimizer_, problem, config_, order_, warm, rng);
   const double seconds = secondsSince(start);
   last_joint_[planner] = search.plans;
   last_joint_epoch_[planner] = out.epoch;

@@ -3,6 +3,7 @@
 // `order`), Dec-POMDP NBO (every agent optimises the joint plan on its own belief) or centralised
 // (the first agent in `order` plans for all). The entry point the simulation calls.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -52,23 +53,51 @@ struct TeamPlan {
 /// Dec-POMDP agents all draw from one stream per epoch ("pso.joint", epoch): the paper's argmax
 /// is a function of the belief, so equal beliefs must give equal joint plans. Wall time is measured
 /// for the report only and never feeds back into a decision.
+/// The joint warm starts of the local-best search (k starts of n plans each, start-major): the
+/// previous joint plan already shifted (when `previous` has n plans), every UAV hovering, and for
+/// each UAV the previous plan with that UAV hovering.
+std::vector<Plan> jointWarmStarts(std::span<const Plan> previous, int n, int horizon);
+
+/// The local-best joint search's swarm (docs/design-notes.md, "Dec-POMDP's joint search").
+inline constexpr SwarmShape kLocalBest{SwarmTopology::ring, 1, 25};
+
+/// The joint plan of Dec-POMDP and centralised planning by config.joint_search, over every UAV of
+/// the problem: global_best, one swarm with the previous plan (`warm`, already shifted; or empty)
+/// as particle 0; local_best, one swarm of shape `local` with jointWarmStarts(warm); block
+/// coordinate descent over `order` for config.joint_rounds rounds, starting from `warm` (or
+/// hover). The entry point of TeamPlanner and of the tools that compare the searches.
+PlanSearch searchJointPlan(PlanOptimizer& optimizer, const PlanningProblem& problem,
+                           const PlannerConfig& config, std::span<const int> order,
+                           std::span<const Plan> warm, RandomStream& rng,
+                           const SwarmShape& local = kLocalBest);
+
 class TeamPlanner {
  public:
+  /// Called before every joint search (Dec-POMDP and centralised) with the epoch, the planning
+  /// agent, its problem and its warm start (the previous joint plan shifted, or empty): a hook
+  /// for tools that save planning states (bench/joint_search_gaps.cpp). Never feeds back.
+  using JointProblemObserver =
+      std::function<void(int epoch, int agent, const PlanningProblem&, std::span<const Plan> warm)>;
+  void observeJointProblems(JointProblemObserver observer) {
+    joint_observer_ = std::move(observer);
+  }
+
   /// sigma_a: the trackers' NCV σ_a (m/s²); seed: the trial seed (streams "pso", agent index);
   /// links: what intention messages travel through (default: every message arrives at once).
   TeamPlanner(const PlannerConfig& config, double sigma_a, std::uint64_t seed,
               const LinkConfig& links = {});
 
-  /// One planning epoch (epochs increase by one per replan_period; actions last plan_period). uavs and views: one per UAV,
-  /// by index, the same team size at every call. With algorithm `none` every UAV hovers.
-  /// SMA-NBO: agents plan in `order`; agent i optimises its own H actions against, for every
-  /// other UAV, the latest plan of it that has reached agent i through the links (with perfect
-  /// links: the new plans of the agents before it and the intentions of those after it), shifted
-  /// by the time elapsed, a missing step repeating the last action; hover when none has reached
-  /// it. Then it publishes {i, i, epoch, plan} to the team. Dec-POMDP: each agent optimises all
-  /// N·H actions on its own view and applies its own; no messages. Centralised: the first agent
-  /// in `order` optimises the joint plan on its view and sends each UAV its part ({leader, i,
-  /// epoch, plan_i}); a UAV whose order did not arrive flies the latest one that did, shifted.
+  /// One planning epoch (epochs increase by one per replan_period; actions last plan_period). uavs
+  /// and views: one per UAV, by index, the same team size at every call. With algorithm `none`
+  /// every UAV hovers. SMA-NBO: agents plan in `order`; agent i optimises its own H actions
+  /// against, for every other UAV, the latest plan of it that has reached agent i through the links
+  /// (with perfect links: the new plans of the agents before it and the intentions of those after
+  /// it), shifted by the time elapsed, a missing step repeating the last action; hover when none
+  /// has reached it. Then it publishes {i, i, epoch, plan} to the team. Dec-POMDP: each agent
+  /// optimises all N·H actions on its own view and applies its own; no messages. Centralised: the
+  /// first agent in `order` optimises the joint plan on its view and sends each UAV its part
+  /// ({leader, i, epoch, plan_i}); a UAV whose order did not arrive flies the latest one that did,
+  /// shifted.
   TeamPlan plan(int epoch, std::span<const UavState> uavs, std::span<const AgentView> views);
 
   const PlannerConfig& config() const { return config_; }
@@ -81,20 +110,18 @@ class TeamPlanner {
   void planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs, const AgentView& view);
   /// Actions (of plan_period) elapsed from one epoch to a later one.
   double actionsSince(int earlier_epoch, int epoch) const;
-  PlanSearch searchByBlocks(const PlanningProblem& problem, std::span<const Plan> warm,
-                            RandomStream& rng);
-
   PlannerConfig config_;
   CostSettings settings_;
   std::uint64_t seed_;
-  std::vector<int> order_;                     // planning order (UAV indices)
-  std::vector<RandomStream> rng_;              // per agent, purpose "pso"
+  std::vector<int> order_;         // planning order (UAV indices)
+  std::vector<RandomStream> rng_;  // per agent, purpose "pso"
   LinkConfig link_config_;
   IntentionLinks links_;                       // intention messages in flight and received
   std::vector<IntentionMessage> own_;          // per agent: its own latest plan (epoch −1: none)
   std::vector<std::vector<Plan>> last_joint_;  // per agent: its previous joint plan (or empty)
   std::vector<int> last_joint_epoch_;          // per agent: the epoch of last_joint_
   PlanOptimizer optimizer_;
+  JointProblemObserver joint_observer_;
 };
 
 }  // namespace canopy::agents::planning
