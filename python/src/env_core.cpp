@@ -159,10 +159,8 @@ bool spinFor(Ready ready) {
   const auto until = std::chrono::steady_clock::now() + TaskPool::kSpin;
   for (int k = 0;; ++k) {
     if (ready()) return true;
-    if (k % 64 == 63 && std::chrono::steady_clock::now() > until) return ready();
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#endif
+    if (k % 16 == 15 && std::chrono::steady_clock::now() > until) return ready();
+    std::this_thread::yield();  // on a busy machine, lets the thread that has work run
   }
 }
 

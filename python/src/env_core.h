@@ -53,10 +53,10 @@ double stageReward(const sim::StepRecord& record, int agent, bool full_trace);
 /// its block [k·n/T, (k+1)·n/T), so that task i keeps running on the same thread from call to
 /// call (its data stays in that core's caches and that thread's malloc arena, and the threads'
 /// output rows share one cache line), then takes any task not yet started (a late or
-/// descheduled thread's). Waiting threads spin for up to kSpin before they
-/// sleep on a condition variable: a VectorEnv step is a few hundred µs of work, and a futex sleep
-/// and wake-up on every step cost the two threads more than they gained (perf: 17 % of the time
-/// in the kernel's scheduler). The first exception a task throws is rethrown by run().
+/// descheduled thread's). Waiting threads spin for up to kSpin, yielding the CPU at each turn,
+/// before they sleep on a condition variable: a VectorEnv step is a few hundred µs of work, and
+/// a futex sleep and wake-up on every step cost the two threads more than they gained (perf: 17 %
+/// of the time in the kernel's scheduler). The first exception a task throws is rethrown by run().
 class TaskPool {
  public:
   explicit TaskPool(int threads);  // threads ≥ 1 in all, the caller included
