@@ -11,6 +11,11 @@ actions (autoresets included) on one thread and on one thread per core, PAIRS al
 of timings: prints the env-steps per second of each (median and best of the pairs) and the
 median of the pair ratios.
 
+    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector-once N SCENARIO STEPS THREADS
+
+canopy.VectorEnv(N, SCENARIO, threads=THREADS) reset and stepped once, then STEPS times (for
+callgrind slopes over STEPS).
+
     PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --env SCENARIO RUNS [SEED]
 
 canopy.TrackingEnv(SCENARIO) reset and stepped to its end RUNS times with zero actions (after one
@@ -92,6 +97,14 @@ def vector(n, name, steps, pairs, keep_planner=False):
 if __name__ == "__main__":
     if sys.argv[1] == "--env":
         env_loop(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]) if len(sys.argv) > 4 else 1)
+    elif sys.argv[1] == "--vector-once":
+        import numpy as np
+
+        v = canopy.VectorEnv(int(sys.argv[2]), sys.argv[3], threads=int(sys.argv[5]))
+        v.reset(seed=0)
+        zero = np.zeros(v.action_space.shape)
+        for _ in range(1 + int(sys.argv[4])):
+            v.step(zero)
     elif sys.argv[1] == "--vector":
         vector(int(sys.argv[2]), sys.argv[3], int(sys.argv[4]), int(sys.argv[5]),
                keep_planner=sys.argv[6:] == ["--keep-planner"])
