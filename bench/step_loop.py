@@ -4,11 +4,17 @@
 
 One untimed warm-up run comes first; callgrind slopes (runs N2 − N1) cancel it and the imports.
 
-    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector N SCENARIO STEPS PAIRS
+    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector N SCENARIO STEPS PAIRS [--keep-planner]
 
-canopy.VectorEnv(N, SCENARIO) stepped STEPS times with zero actions (autoresets included) on
-one thread and on one thread per core, PAIRS alternating pairs of timings: prints the env-steps
-per second of each (median and best of the pairs) and the median of the pair ratios.
+canopy.VectorEnv(N, SCENARIO) (planner off unless --keep-planner) stepped STEPS times with zero
+actions (autoresets included) on one thread and on one thread per core, PAIRS alternating pairs
+of timings: prints the env-steps per second of each (median and best of the pairs) and the
+median of the pair ratios.
+
+    PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector-once N SCENARIO STEPS THREADS
+
+canopy.VectorEnv(N, SCENARIO, threads=THREADS) reset and stepped once, then STEPS times (for
+callgrind slopes over STEPS).
 
     PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --env SCENARIO RUNS [SEED]
 
@@ -64,10 +70,10 @@ def env_loop(name, runs, seed):
     print(f"TrackingEnv({name!r}): {runs} episodes, {steps} steps, {t / max(steps, 1) * 1e6:.1f} us a step")
 
 
-def vector(n, name, steps, pairs):
+def vector(n, name, steps, pairs, keep_planner=False):
     import numpy as np
 
-    envs = {label: canopy.VectorEnv(n, name, threads=threads)
+    envs = {label: canopy.VectorEnv(n, name, threads=threads, keep_planner=keep_planner)
             for label, threads in (("1 thread", 1), ("threads", None))}
     zero = np.zeros(envs["threads"].action_space.shape)
     rates = {label: [] for label in envs}
@@ -91,7 +97,16 @@ def vector(n, name, steps, pairs):
 if __name__ == "__main__":
     if sys.argv[1] == "--env":
         env_loop(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]) if len(sys.argv) > 4 else 1)
+    elif sys.argv[1] == "--vector-once":
+        import numpy as np
+
+        v = canopy.VectorEnv(int(sys.argv[2]), sys.argv[3], threads=int(sys.argv[5]))
+        v.reset(seed=0)
+        zero = np.zeros(v.action_space.shape)
+        for _ in range(1 + int(sys.argv[4])):
+            v.step(zero)
     elif sys.argv[1] == "--vector":
-        vector(int(sys.argv[2]), sys.argv[3], int(sys.argv[4]), int(sys.argv[5]))
+        vector(int(sys.argv[2]), sys.argv[3], int(sys.argv[4]), int(sys.argv[5]),
+               keep_planner=sys.argv[6:] == ["--keep-planner"])
     else:
         main()

@@ -98,23 +98,23 @@ class VectorEnv:
         "seed" (the new episodes' seeds)."""
         if not self._started:
             raise RuntimeError("VectorEnv.step: call reset() first")
-        self._core.step(actions)
         core = self._core
-        ended = core.ended.copy()
-        rewards = core.rewards.copy()
-        steps = core.steps.copy()
-        terminations = np.zeros((self.num_envs, len(self.possible_agents)), bool)
-        truncations = np.repeat(ended[:, None], len(self.possible_agents), axis=1)
+        observations, rewards, ended, steps = core.step_results(actions)  # one call, fresh arrays
+        shape = rewards.shape
+        terminations = np.zeros(shape, bool)
+        truncations = np.empty(shape, bool)
+        truncations[:] = ended[:, None]
         infos = {"step": steps}
         if ended.any():
-            infos["final_observation"] = core.observations.copy()
+            infos["final_observation"] = observations
             infos["_final_observation"] = ended
             which = np.flatnonzero(ended)
             new_seeds = [self._next_seed(int(i)) for i in which]
             core.reset([int(i) for i in which], new_seeds)
             self._seeds[which] = new_seeds
             infos["seed"] = self._seeds.copy()
-        return core.observations.copy(), rewards, terminations, truncations, infos
+            observations = core.observations.copy()
+        return observations, rewards, terminations, truncations, infos
 
     def close(self):
         self.single_env.close()

@@ -128,16 +128,22 @@ class VectorCore {
   /// Starts a new episode in each env of `envs`, env envs[j] with seed seeds[j].
   void reset(const std::vector<int>& envs, const std::vector<std::uint64_t>& seeds) {
     if (envs.size() != seeds.size()) throw py::value_error("reset: one seed per environment");
-    for (int e : envs) checkEnv(e);
+    // By environment, not by position in `envs`: environment e is made on the thread that
+    // steps it (TaskPool runs task e on the same thread every call).
+    std::vector<std::optional<std::uint64_t>> seed_of(static_cast<std::size_t>(n_));
+    for (std::size_t j = 0; j < envs.size(); ++j) {
+      checkEnv(envs[j]);
+      seed_of[static_cast<std::size_t>(envs[j])] = seeds[j];
+    }
     float* obs = observations_.mutable_data();
     double* rew = rewards_.mutable_data();
     bool* ended = ended_.mutable_data();
     std::int64_t* steps = steps_.mutable_data();
     py::gil_scoped_release release;
-    pool_.run(envs.size(), [&](std::size_t j) {
-      const auto e = static_cast<std::size_t>(envs[j]);
+    pool_.run(static_cast<std::size_t>(n_), [&](std::size_t e) {
+      if (!seed_of[e]) return;
       spec::ScenarioSpec spec = *spec_;
-      spec.seed = seeds[j];
+      spec.seed = *seed_of[e];
       sims_[e] = std::make_unique<sim::Simulation>(std::move(spec));
       sims_[e]->tick();  // step 0, as canopy.Simulation
       writeStep(e, obs, rew, ended, steps);
@@ -184,6 +190,11 @@ class VectorCore {
     });
   }
 
+  /// Fresh copies of the step's outputs: (observations, rewards, ended, steps).
+  py::tuple results() const {
+    return py::make_tuple(copyOf(observations_), copyOf(rewards_), copyOf(ended_), copyOf(steps_));
+  }
+
   py::object observations() const { return observations_; }
   py::object rewards() const { return rewards_; }
   py::object ended() const { return ended_; }
@@ -191,6 +202,13 @@ class VectorCore {
   int threads() const { return pool_.threads(); }
 
  private:
+  template <typename T, int Flags>
+  static py::array_t<T, Flags> copyOf(const py::array_t<T, Flags>& a) {
+    py::array_t<T, Flags> out(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()));
+    std::copy_n(a.data(), a.size(), out.mutable_data());
+    return out;
+  }
+
   void checkEnv(int e) const {
     if (e < 0 || e >= n_)
       throw py::index_error("environment " + std::to_string(e) + " out of range (" +
@@ -253,6 +271,14 @@ void bindEnv(py::module_& m) {
            py::arg("threads"))
       .def("reset", &VectorCore::reset, py::arg("envs"), py::arg("seeds"))
       .def("step", &VectorCore::step, py::arg("actions"))
+      .def(
+          "step_results",
+          [](VectorCore& core, const py::handle& actions) {
+            core.step(actions);
+            return core.results();
+          },
+          py::arg("actions"),
+          "step(actions), then fresh copies of (observations, rewards, ended, steps)")
       .def_property_readonly("observations", &VectorCore::observations)
       .def_property_readonly("rewards", &VectorCore::rewards)
       .def_property_readonly("ended", &VectorCore::ended)
