@@ -169,6 +169,13 @@ bool pythonEditInput(std::string_view data) {
   } catch (const std::exception&) {
     return false;  // Python would not get here: its value is a Python object, always JSON
   }
+  // A Python str is text: a path that is not valid UTF-8 cannot be typed (json.dumps would
+  // escape what it holds; the loader then refuses the escape).
+  try {
+    (void)spec::Json(path).dump();
+  } catch (const spec::Json::type_error&) {
+    return false;
+  }
   // Python's Scenario._parent: walk the dotted path; the last part is set.
   spec::Json* node = &config;
   std::size_t start = 0;

@@ -1,5 +1,6 @@
 #include "replay/run_folder.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -215,10 +216,14 @@ RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpe
 }
 
 std::vector<RecordedStep> readRecord(const fs::path& path, const spec::ScenarioSpec& spec) {
-  std::istringstream text(readText(path, "record"));
+  // Held once (up to kMaxResultBytes): lines are copied out one at a time, not the whole text.
+  const std::string text = readText(path, "record");
   std::vector<RecordedStep> steps;
-  std::string line;
-  for (int number = 1; std::getline(text, line); ++number) {
+  std::size_t at = 0;
+  for (int number = 1; at < text.size(); ++number) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at, end - at);
+    at = end + 1;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const LineReader r(path, number);
     const Json json = parseBounded(line);

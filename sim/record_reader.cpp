@@ -1,5 +1,6 @@
 #include "sim/record_reader.h"
 
+#include <algorithm>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -92,10 +93,14 @@ spec::ScenarioSpec readManifest(const fs::path& path) {
 
 std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
                                                   const spec::ScenarioSpec& spec) {
-  std::stringstream text(readResultFile(path, "record"));
+  // Held once (up to kMaxResultBytes): lines are copied out one at a time, not the whole text.
+  const std::string text = readResultFile(path, "record");
   std::vector<world::WorldSnapshot> steps;
-  std::string line;
-  for (int number = 1; std::getline(text, line); ++number) {
+  std::size_t next = 0;
+  for (int number = 1; next < text.size(); ++number) {
+    const std::size_t end = std::min(text.find('\n', next), text.size());
+    const std::string line = text.substr(next, end - next);
+    next = end + 1;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     const LineReader r(path, number);
     Json json;
