@@ -297,11 +297,6 @@ void World::step(double dt) {
       const Pose2 next = unicycleMove(now, v, agent.turn_rate, dt);
       v = (next.position - now.position) / dt;
       w = wrapAngle(next.heading - now.heading) / dt;
-      if (agent.radius > 0.0) {
-        substeps = std::max(
-            substeps,
-            static_cast<int>(std::ceil(v.norm() * dt / (kMaxSubstepRadii * agent.radius))));
-      }
     } else if (agent.yaw_mode == YawMode::velocity && v.squaredNorm() > 1e-12) {
       const double heading = std::atan2(v.y(), v.x());
       w = wrapAngle(heading - body->GetAngle()) / dt;
@@ -312,13 +307,14 @@ void World::step(double dt) {
     max_translation = std::max(max_translation, v.norm() * dt);
     max_rotation = std::max(max_rotation, std::abs(w) * dt);
   }
-  // Two UAVs that could come within their separation during the step: sub-steps short enough
-  // that neither passes through the other. UAVs far apart keep the sub-steps they had.
+  // Two agents that collide with each other (two robots, or two UAVs with bodies) and could meet
+  // during the step: sub-steps short enough that neither passes through the other. Agents far
+  // apart keep the sub-steps they had (a robot meeting a trunk or wall is stopped at the time of
+  // impact by continuous collision, whatever the sub-step).
   for (std::size_t i = 0; i < n; ++i) {
-    if (def_.uavs[i].kind == AgentKind::ground) continue;
+    if (!(def_.uavs[i].radius > 0.0)) continue;  // no body
     for (std::size_t j = i + 1; j < n; ++j) {
-      if (def_.uavs[j].kind == AgentKind::ground) continue;
-      if (!(def_.uavs[i].radius > 0.0 && def_.uavs[j].radius > 0.0)) continue;          // no body
+      if (def_.uavs[j].kind != def_.uavs[i].kind || !(def_.uavs[j].radius > 0.0)) continue;
       const double closing = (uav_velocity_[i].norm() + uav_velocity_[j].norm()) * dt;  // m
       const double reach = def_.uavs[i].radius + def_.uavs[j].radius + closing;
       if ((start[i] - start[j]).norm() >= reach + b2_aabbExtension) continue;

@@ -30,11 +30,11 @@ class World {
 
   /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
   /// commanded velocity, ground robots by unicycleMove over dt, as far as the contact solver lets
-  /// them. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits, no ground
-  /// robot moves more than half its radius and no two UAVs that could meet close by more than
-  /// half the smaller radius in one sub-step (so none passes through another or a thin wall);
-  /// each sub-step drives every agent at its command again (the solver removes only the part
-  /// into what it touches).
+  /// them. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits and no two
+  /// agents that collide and could meet close by more than half the smaller radius in one
+  /// sub-step (so none passes through another); continuous collision stops a robot at a trunk or
+  /// wall at the time of impact. Each sub-step drives every agent at its command again (the
+  /// solver removes only the part into what it touches).
   void step(double dt);
 
   WorldSnapshot snapshot() const;

@@ -284,5 +284,29 @@ TEST_F(Outputs, ForestPrintsOneTreeALine) {
   EXPECT_EQ(lines, stated + 5);  // {, description, "occluders": [, one line a tree, ], }
 }
 
+// A target scripted through a wall: validate warns, naming the target, its waypoints and the
+// wall, and passes; with --strict the warning is an error and the exit code 2 (issue 27).
+TEST_F(Outputs, ValidateWarnsOfATargetWalkingThroughAWallAndStrictRefusesIt) {
+  writeText(base_ / "through.json", R"({"name": "through", "aoi": [-20, -20, 20, 20],
+    "uavs": [{"start": [0, 0]}],
+    "targets": [{"name": "W", "path": {"waypoints": [{"t": 0, "p": [-10, 0]},
+                                                     {"t": 10, "p": [10, 0]}]}}],
+    "occluders": [{"type": "polygon", "vertices": [[-1, -5], [1, -5], [1, 5], [-1, 5]]}]})");
+  const Outcome warned = runIn(base_, "validate through.json");
+  EXPECT_EQ(warned.code, 0) << warned.err;
+  EXPECT_NE(warned.err.find("warning: target \"W\": its path from waypoint 0 (t = 0 s) to "
+                            "waypoint 1 (t = 10 s) runs into wall 0"),
+            std::string::npos)
+      << warned.err;
+  const Outcome strict = runIn(base_, "validate through.json --strict");
+  EXPECT_EQ(strict.code, 2);
+  EXPECT_NE(strict.err.find("error: target \"W\""), std::string::npos) << strict.err;
+  // A clear path: no warning, --strict passes.
+  writeText(base_ / "clear.json", tinyScenario("\"clear\""));
+  const Outcome clear = runIn(base_, "validate clear.json --strict");
+  EXPECT_EQ(clear.code, 0);
+  EXPECT_EQ(clear.err, "");
+}
+
 }  // namespace
 }  // namespace canopy::cli_test
