@@ -69,6 +69,9 @@ struct FusionConfig {
   // leader's orders) and consensus messages alike (docs/design-notes.md).
   int comm_latency = 0;
   double association_gate = 9.21;  // χ²₂ (99 %) gate on the position Mahalanobis distance
+  // m: after each fusion step an agent forgets the target tracks and trees farther than this from
+  // it (a swarm's beliefs stay local; docs/design-notes.md "Cost scope"); ∞: keeps everything.
+  double interest_range = std::numeric_limits<double>::infinity();
 };
 
 enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized };

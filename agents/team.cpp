@@ -1,6 +1,8 @@
 #include "agents/team.h"
 
+#include <cmath>
 #include <utility>
+#include <vector>
 
 namespace canopy::agents {
 
@@ -41,8 +43,19 @@ void Team::fuse() {
     fusion_inputs_.push_back({tracker.targets(), tracker.trees(), uav_states_[i].position});
   }
   fusion_.fuse(fusion_inputs_, fused_);
-  for (std::size_t i = 0; i < agents_.size(); ++i)
+  const double range = config_.fusion.interest_range;
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    if (std::isfinite(range)) {  // forget what lies beyond the agent's interest
+      const Vec2 p = uav_states_[i].position;
+      std::erase_if(fused_.targets[i], [&](const tracking::TargetTrack& t) {
+        return (t.posterior.x.head<2>() - p).norm() > range;
+      });
+      std::erase_if(fused_.trees[i], [&](const tracking::TreeTrack& t) {
+        return (t.posterior.x.head<2>() - p).norm() > range;
+      });
+    }
     agents_[i].adoptFused(std::move(fused_.targets[i]), std::move(fused_.trees[i]));
+  }
 }
 
 std::optional<planning::TeamPlan> Team::plan(int epoch) {

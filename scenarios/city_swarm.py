@@ -92,7 +92,8 @@ def scenario(args):
         "targets": targets,
         "occluders": occluders,
         "tracking": {"preseed": True, "preseed_variance": [1, 1, 1, 1]},
-        "fusion": {"method": "ci", "rounds": 5, "comm_range": args.comm_range},
+        "fusion": {"method": "ci", "rounds": 5, "comm_range": args.comm_range,
+                   "interest_range": args.interest_range},
         "planner": {"algorithm": args.planner, "horizon": 5, "occlusion_map": "dynamic",
                     "cost_scope": args.cost_scope},
     }
@@ -110,6 +111,8 @@ def main():
                    help="people start within this distance of a UAV's start (m)")
     p.add_argument("--duration", type=positive_float, default=60.0, help="simulated seconds")
     p.add_argument("--comm-range", type=positive_float, default=250.0, help="fusion.comm_range (m)")
+    p.add_argument("--interest-range", type=positive_float, default=150.0,
+                   help="fusion.interest_range (m)")
     p.add_argument("--planner", choices=["sma", "dec_pomdp", "centralized", "none"], default="sma")
     p.add_argument("--cost-scope", choices=["team", "reach"], default="reach",
                    help="planner.cost_scope")

@@ -132,6 +132,9 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"fusion.method", "", "ci, hcmci or observer_average"},
       {"fusion.rounds", "", "L consensus rounds per step"},
       {"fusion.comm_range", "m", "agents within this distance exchange messages; null: unlimited"},
+      {"fusion.interest_range", "m",
+       "after each fusion step an agent forgets target tracks and trees farther than this from it; "
+       "null: keeps everything"},
       {"fusion.comm_drop", "", "probability that a message is lost"},
       {"fusion.comm_latency", "steps",
        "simulation steps every message is in flight: consensus messages (a receiver fuses what "

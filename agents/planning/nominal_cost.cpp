@@ -49,6 +49,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   full_trace_ = s.full_trace;
   terminal_ = s.terminal_penalty;
   weight_ = s.terminal_penalty_weight;
+  scope_ = s.scope;
   const int n_uavs = static_cast<int>(problem.uavs.size());
   const int n_targets = static_cast<int>(problem.targets.size());
   if (H < 1 || S < 1 || static_cast<int>(free_agents.size()) > kMaxFreeAgents ||

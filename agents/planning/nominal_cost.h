@@ -157,6 +157,7 @@ class NominalCost {
   bool full_trace_ = false;            // stage cost on tr(P) rather than tr(P_pos)
   bool terminal_ = true;               // add the terminal penalty
   double weight_ = 0.5;                // 1/m, w
+  CostScope scope_ = CostScope::team;  // what J sums over (CostSettings::scope)
   NcvNoise Q_;                         // Q(τ) of the NCV model, τ = Δ/S
   std::vector<double> discount_;       // γ^{m−1}, m = 1..H
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)

@@ -46,6 +46,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   const int H = horizon_, S = substeps_, T = H * S;
   const std::size_t per_candidate = free_.size() * H;
   const std::size_t n_candidates = costs.size();
+  const int n_targets = static_cast<int>(start_.size());
   const double tau = period_ / S;
   if (actions.size() != per_candidate * n_candidates) {
     std::fprintf(stderr, "NominalCost::evaluate: %zu actions for %zu candidates of %zu\n",
@@ -124,10 +125,15 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
     }
     // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
     V4 J = V4{};
-    for (const int j : scope_tracks_) {
+    auto add = [&](int j) {
       J += cost_start_[j];
       for (int k = start_[j] / S; k < H; ++k)
         J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
+    };
+    if (scope_ == CostScope::team) {
+      for (int j = 0; j < n_targets; ++j) add(j);
+    } else {
+      for (const int j : scope_tracks_) add(j);
     }
     for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
       costs[first + lane] = addTerminalPenalty(lane, J[lane]);

@@ -102,6 +102,8 @@ void readFusion(ObjectReader& root, ScenarioSpec& spec) {
   } else {
     (*reader.field().out())["comm_range"] = nullptr;  // null: every pair of UAVs can talk
   }
+  if (auto range = reader.optional("interest_range"); range && !range->json().is_null())
+    f.interest_range = range->number(Bound::positive);
   f.comm_drop = reader.number("comm_drop", f.comm_drop, Bound::probability);
   f.comm_latency = reader.integer("comm_latency", f.comm_latency, 0, 1000);
   f.association_gate = reader.number("association_gate", f.association_gate, Bound::positive);

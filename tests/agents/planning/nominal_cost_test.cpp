@@ -403,3 +403,77 @@ TEST(NominalCost, BatchesAndInstructionSetsGiveEachCandidateItsBits) {
 
 }  // namespace
 }  // namespace canopy::agents::planning
+
+namespace canopy::agents::planning {
+namespace {
+
+// Cost scope "reach" (docs/design-notes.md, issue 33) is the team cost of the problem reduced to
+// the tracks a free UAV can reach and the teammates that can reach them: computed here by the
+// team scope on that reduced problem, built by hand. Free UAV 0 at the origin (H = 3, v_max 5,
+// 20 × 20 m footprint: reach 15 + 14.1 m); UAV 1 20 m east (a neighbour), UAV 2 1 km east.
+TEST(NominalCost, ReachScopeIsTheTeamCostOfTheNeighbourhood) {
+  const std::vector<UavState> uavs{hoveringUav({0, 0}), hoveringUav({20, 0}),
+                                   hoveringUav({1000, 0})};
+  const std::vector<TargetGaussian> all{
+      target({5, 3}, {1, 0}),         // in reach
+      target({200, 0}, {0, 1}, 4.0),  // beyond every reach: uncovered, charged in team scope
+      target({25, -8}, {0, 0}, 2.0),  // in reach, and in UAV 1's footprint
+      target({1000, 5}, {0, 0}),      // under UAV 2
+  };
+  const std::vector<TargetGaussian> near{all[0], all[2]};
+  const std::vector<UavState> neighbours{uavs[0], uavs[1]};
+  const std::vector<Plan> assumed{
+      hoverPlan(3), Plan{std::vector<Vec2>{Vec2(1, 0), Vec2(1, 1), Vec2(0, 0)}}, hoverPlan(3)};
+  const std::vector<Plan> assumed_near{assumed[0], assumed[1]};
+  CostSettings reach = settings(3, true);
+  reach.scope = CostScope::reach;
+  const CostSettings team = settings(3, true);
+  NominalCost scoped, reduced, whole;
+  const int self[] = {0};
+  scoped.prepare(PlanningProblem{all, uavs, nullptr, reach}, self, assumed);
+  reduced.prepare(PlanningProblem{near, neighbours, nullptr, team}, self, assumed_near);
+  whole.prepare(PlanningProblem{all, uavs, nullptr, team}, self, assumed);
+  RandomStream rng(33, "reach-scope-test");
+  int differs = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vec2> actions;
+    for (int m = 0; m < 3; ++m) actions.emplace_back(rng.uniform(-5, 5), rng.uniform(-5, 5));
+    const double j_reach = scoped.evaluate(actions);
+    EXPECT_DOUBLE_EQ(j_reach, reduced.evaluate(actions)) << trial;
+    // The track at (200, 0) is uncovered at m = H whatever UAV 0 does, so the team cost is
+    // larger, by its stage costs and its share of the terminal penalty.
+    EXPECT_GT(whole.evaluate(actions), j_reach) << trial;
+    differs += whole.evaluate(actions) != j_reach;
+  }
+  EXPECT_EQ(differs, 50);
+}
+
+// Without the terminal penalty the scopes differ by a constant: the stage costs of the tracks
+// out of reach do not depend on the free UAV's plan (the exact part of the argument).
+TEST(NominalCost, ReachScopeWithoutPenaltyDiffersFromTeamByAConstant) {
+  const std::vector<UavState> uavs{hoveringUav({0, 0}), hoveringUav({60, 0}),
+                                   hoveringUav({-300, 40})};
+  const std::vector<TargetGaussian> all{target({5, 3}, {1, 0}), target({65, 0}, {-1, 0}),
+                                        target({-300, 45}, {0, 0}), target({10, -12}, {0, 1})};
+  const std::vector<Plan> assumed{
+      hoverPlan(3), Plan{std::vector<Vec2>{Vec2(-4, 0), Vec2(-4, 0), Vec2(-4, 0)}}, hoverPlan(3)};
+  CostSettings reach = settings(3, false);
+  reach.scope = CostScope::reach;
+  NominalCost scoped, whole;
+  const int self[] = {0};
+  scoped.prepare(PlanningProblem{all, uavs, nullptr, reach}, self, assumed);
+  whole.prepare(PlanningProblem{all, uavs, nullptr, settings(3, false)}, self, assumed);
+  RandomStream rng(34, "reach-scope-constant");
+  double offset = 0.0;
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vec2> actions;
+    for (int m = 0; m < 3; ++m) actions.emplace_back(rng.uniform(-5, 5), rng.uniform(-5, 5));
+    const double difference = whole.evaluate(actions) - scoped.evaluate(actions);
+    if (trial == 0) offset = difference;
+    EXPECT_NEAR(difference, offset, 1e-9 * (1.0 + offset)) << trial;
+  }
+  EXPECT_GT(offset, 1.0);  // the far track's stage costs (tr P grows from 2 m² over 3 steps)
+}
+
+}  // namespace
+}  // namespace canopy::agents::planning
