@@ -26,9 +26,9 @@ struct IntentionMessage {
 
 struct LinkConfig {
   double range = std::numeric_limits<double>::infinity();  // m
-  double drop = 0.0;                                       // probability a message is lost
-  int latency_steps = 0;                                   // simulation steps in flight
-  int steps_per_epoch = 1;                                 // replan_period / dt
+  double drop = 0.0;                                        // probability a message is lost
+  int latency_steps = 0;                                    // simulation steps in flight
+  int steps_per_epoch = 1;                                  // replan_period / dt
 };
 
 /// Messages of one kind since the start. As for consensus (FusionDiagnostics), a message is sent

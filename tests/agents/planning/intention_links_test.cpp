@@ -44,8 +44,7 @@ TEST(IntentionLinks, LatencyOfKStepsDelaysEachMessageByExactlyKSteps) {
 // Planning every 5 steps (1 s epochs, 0.2 s steps): a latency of 1–5 steps is read one epoch
 // later, 6–10 steps two epochs later.
 TEST(IntentionLinks, ALatencyInsideAnEpochIsReadAtTheNextEpoch) {
-  for (const auto& [k, epochs] :
-       std::vector<std::pair<int, int>>{{1, 1}, {5, 1}, {6, 2}, {10, 2}}) {
+  for (const auto& [k, epochs] : std::vector<std::pair<int, int>>{{1, 1}, {5, 1}, {6, 2}, {10, 2}}) {
     IntentionLinks links(LinkConfig{INFINITY, 0.0, k, 5}, 2, 1);
     const std::vector<UavState> uavs = uavsAt({{0, 0}, {5, 0}});
     links.beginEpoch(0, uavs);
@@ -93,8 +92,7 @@ TEST(IntentionLinks, DropIsTheFractionOfMessagesLost) {
     links.send(planOf(1, epoch));
   }
   ASSERT_EQ(links.counts().sent, 20000);
-  EXPECT_NEAR(static_cast<double>(links.counts().lost) / 20000.0, 0.3,
-              4 * std::sqrt(0.3 * 0.7 / 20000));
+  EXPECT_NEAR(static_cast<double>(links.counts().lost) / 20000.0, 0.3, 4 * std::sqrt(0.3 * 0.7 / 20000));
 }
 
 // Sent to one agent: the others hear nothing of it (the centralised leader's orders).
