@@ -130,6 +130,7 @@ struct PlannerVariant {
 inline constexpr PlannerVariant kPlanners[] = {
     {"sma", "sma", "SMA-NBO"},
     {"dec_pomdp", "dec_pomdp", "Dec-POMDP"},
+    {"dec_pomdp_local", "dec_pomdp", "Dec-POMDP, local-best swarm"},
     {"dec_pomdp_blocks", "dec_pomdp", "Dec-POMDP, block search"},
 };
 

@@ -61,6 +61,7 @@ struct Options {
   int particles_per_step = 0;  // 0: the scenario's
   int stride = 1;              // keep every stride-th saved state
   std::string reference_csv;   // J* per state from an earlier --csv (no long runs)
+  bool show = false;           // print every search's plans
 };
 
 const char* searchName(JointSearch s) {
@@ -110,7 +111,7 @@ int run(const Options& options) {
   if (options.particles_per_step > 0)
     base.planner.pso.particles_per_step = options.particles_per_step;
   std::vector<SavedState> states = saveStates(base, options.states * options.stride);
-  for (std::size_t i = 1; i * options.stride < states.size(); ++i) {
+  for (std::size_t i = 1; options.stride > 1 && i * options.stride < states.size(); ++i) {
     states[i] = std::move(states[i * options.stride]);
   }
   states.resize(options.states);
@@ -169,6 +170,14 @@ int run(const Options& options) {
       const PlanSearch search =
           searchJointPlan(optimizer, problem, config, order, s.warm, rng, options.local);
       cost[k] = search.cost;
+      if (options.show) {
+        std::printf("state %zu %-16s J %8.3f", index, searchName(searches[k]), search.cost);
+        for (const Plan& p : search.plans) {
+          std::printf("  |");
+          for (const Vec2& a : p.velocities) std::printf(" (%5.2f,%5.2f)", a.x(), a.y());
+        }
+        std::printf("\n");
+      }
       evaluations[k] += static_cast<double>(search.evaluations);
     }
     std::vector<double> long_costs;
@@ -178,7 +187,17 @@ int run(const Options& options) {
       config.joint_search = r % 2 == 0 ? JointSearch::local_best : JointSearch::block_coordinate;
       RandomStream rng(s.seed * 1000003ULL + static_cast<std::uint64_t>(s.epoch), "reference",
                        static_cast<std::uint64_t>(r));
-      long_costs.push_back(searchJointPlan(optimizer, problem, config, order, {}, rng).cost);
+      const PlanSearch search = searchJointPlan(optimizer, problem, config, order, {}, rng);
+      long_costs.push_back(search.cost);
+      if (options.show) {
+        std::printf("state %zu long %-11s J %8.3f", index, searchName(config.joint_search),
+                    search.cost);
+        for (const Plan& p : search.plans) {
+          std::printf("  |");
+          for (const Vec2& a : p.velocities) std::printf(" (%5.2f,%5.2f)", a.x(), a.y());
+        }
+        std::printf("\n");
+      }
     }
     std::sort(long_costs.begin(), long_costs.end());
     double reference = long_costs.empty() ? cost[0] : long_costs.front();
@@ -246,6 +265,8 @@ int main(int argc, char** argv) {
       options.local.restart_after = canopy::integerArgument(argc, argv, i);
     } else if (a == "--particles-per-step") {
       options.particles_per_step = canopy::integerArgument(argc, argv, i);
+    } else if (a == "--show") {
+      options.show = true;
     } else if (a == "--stride") {
       options.stride = std::max(1, canopy::integerArgument(argc, argv, i));
     } else if (a == "--max-iterations") {

@@ -59,7 +59,10 @@ struct TeamPlan {
 std::vector<Plan> jointWarmStarts(std::span<const Plan> previous, int n, int horizon);
 
 /// The local-best joint search's swarm (docs/design-notes.md, "Dec-POMDP's joint search").
-inline constexpr SwarmShape kLocalBest{SwarmTopology::ring, 1, 25};
+/// A ring of ±1 neighbours, restarts after 25 iterations without progress, and at most 250
+/// iterations: 250 · 20·H particles, about 1.5 times the evaluations the paper's swarm makes
+/// before its stall rule stops it in Resource Allocation (bench/RESULTS.md).
+inline constexpr SwarmShape kLocalBest{SwarmTopology::ring, 1, 25, 0, 250};
 
 /// The joint plan of Dec-POMDP and centralised planning by config.joint_search, over every UAV of
 /// the problem: global_best, one swarm with the previous plan (`warm`, already shifted; or empty)

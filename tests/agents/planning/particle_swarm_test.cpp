@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <vector>
 
 namespace canopy::agents::planning {
@@ -145,6 +148,105 @@ TEST(ParticleSwarm, WarmStartIsParticleZero) {
   const SwarmResult r = swarm.minimise(batchOf(2, sphere), lo, hi, options, rng, warm);
   EXPECT_EQ(r.best, warm);
   EXPECT_EQ(r.best_cost, 0.0);
+}
+
+TEST(ParticleSwarm, SeveralWarmStartsTakeTheFirstParticles) {
+  const std::vector<double> lo(2, -5.0), hi(2, 5.0);
+  const std::vector<double> warm{1.0, 2.0, -3.0, 4.0};  // two starts
+  SwarmOptions options;
+  options.particles = 10;
+  options.max_iterations = 0;
+  ParticleSwarm swarm;
+  RandomStream rng(4, "test");
+  std::vector<double> seen;
+  const BatchCost record = [&seen](std::span<const double> x, std::span<double> costs) {
+    seen.assign(x.begin(), x.end());
+    for (double& c : costs) c = 1.0;
+  };
+  swarm.minimise(record, lo, hi, options, rng, warm);
+  ASSERT_EQ(seen.size(), 20u);
+  EXPECT_EQ(std::vector<double>(seen.begin(), seen.begin() + 4), warm);
+  // The other particles are the draws a swarm without warm starts makes.
+  RandomStream again(4, "test");
+  std::vector<double> cold;
+  const BatchCost record_cold = [&cold](std::span<const double> x, std::span<double> costs) {
+    cold.assign(x.begin(), x.end());
+    for (double& c : costs) c = 1.0;
+  };
+  swarm.minimise(record_cold, lo, hi, options, again);
+  EXPECT_EQ(std::vector<double>(seen.begin() + 4, seen.end()),
+            std::vector<double>(cold.begin() + 4, cold.end()));
+}
+
+SwarmOptions ringWithRestarts(int particles, int max_iterations) {
+  SwarmOptions o = precise(particles, max_iterations);
+  o.topology = SwarmTopology::ring;
+  o.neighbours = 1;
+  o.restart_after = 25;
+  return o;
+}
+
+TEST(ParticleSwarm, RingWithRestartsFindsTheMinimaOfTheSphereAndRosenbrock) {
+  {
+    const std::vector<double> lo(5, -5.0), hi(5, 5.0);
+    ParticleSwarm swarm;
+    RandomStream rng(1, "test");
+    const SwarmResult r =
+        swarm.minimise(batchOf(5, sphere), lo, hi, ringWithRestarts(50, 3000), rng);
+    for (const double v : r.best) EXPECT_NEAR(v, 0.0, 1e-4);
+    EXPECT_LT(r.best_cost, 1e-8);
+  }
+  const std::vector<double> lo(3, -2.0), hi(3, 2.0);
+  ParticleSwarm swarm;
+  RandomStream rng(3, "test");
+  const SwarmResult r =
+      swarm.minimise(batchOf(3, rosenbrock), lo, hi, ringWithRestarts(120, 20000), rng);
+  for (const double v : r.best) EXPECT_NEAR(v, 1.0, 1e-3);
+}
+
+TEST(ParticleSwarm, RingReturnsTheLowestCostEverEvaluatedAndIsDeterministic) {
+  // Restarts forget particles' own bests; the swarm's best must still be the minimum over every
+  // evaluation made (recorded independently by the cost).
+  const std::vector<double> lo(4, -3.0), hi(4, 3.0);
+  const SwarmOptions options = ringWithRestarts(20, 400);
+  double lowest = std::numeric_limits<double>::infinity();
+  long long evaluations = 0;
+  const BatchCost rastrigin = [&](std::span<const double> x, std::span<double> costs) {
+    for (std::size_t p = 0; p < costs.size(); ++p) {
+      double s = 40.0;
+      for (std::size_t d = 0; d < 4; ++d) {
+        const double v = x[p * 4 + d];
+        s += v * v - 10.0 * std::cos(2.0 * std::numbers::pi * v);
+      }
+      costs[p] = s;
+      lowest = std::min(lowest, s);
+      ++evaluations;
+    }
+  };
+  ParticleSwarm swarm;
+  RandomStream rng(8, "test");
+  const SwarmResult r = swarm.minimise(rastrigin, lo, hi, options, rng);
+  EXPECT_EQ(r.best_cost, lowest);
+  EXPECT_EQ(r.evaluations, evaluations);
+  RandomStream rng2(8, "test");
+  const SwarmResult again = swarm.minimise(rastrigin, lo, hi, options, rng2);
+  EXPECT_EQ(again.best, r.best);
+  EXPECT_EQ(again.iterations, r.iterations);
+}
+
+TEST(ParticleSwarm, RingStallsWhenNoNeighbourhoodImproves) {
+  const std::vector<double> lo(2, -1.0), hi(2, 1.0);
+  SwarmOptions options;
+  options.particles = 16;
+  options.topology = SwarmTopology::ring;
+  const BatchCost flat = [](std::span<const double>, std::span<double> costs) {
+    for (double& c : costs) c = 1.0;
+  };
+  ParticleSwarm swarm;
+  RandomStream rng(2, "test");
+  const SwarmResult r = swarm.minimise(flat, lo, hi, options, rng);
+  EXPECT_TRUE(r.stalled);
+  EXPECT_EQ(r.iterations, options.stall_iterations);
 }
 
 }  // namespace
