@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -47,9 +48,16 @@ int Validate::run() {
   if (scenario_.empty()) usageError("validate", "expected a scenario to check");
   const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
   const std::vector<spec::SolidCrossing> crossings = spec::solidCrossings(spec);
-  for (const spec::SolidCrossing& c : crossings) {
-    std::fprintf(stderr, "%s: %s: %s\n", printable(spec.file.string(), 200).c_str(),
-                 strict_ ? "error" : "warning", printable(c.message, 400).c_str());
+  // The first kShown crossings in full, then their count (a city of 10⁵ trees has hundreds).
+  constexpr std::size_t kShown = 10;
+  const char* kind = strict_ ? "error" : "warning";
+  for (std::size_t i = 0; i < std::min(crossings.size(), kShown); ++i) {
+    std::fprintf(stderr, "%s: %s: %s\n", printable(spec.file.string(), 200).c_str(), kind,
+                 printable(crossings[i].message, 400).c_str());
+  }
+  if (crossings.size() > kShown) {
+    std::fprintf(stderr, "%s: %s: … and %zu more target paths into a trunk or wall\n",
+                 printable(spec.file.string(), 200).c_str(), kind, crossings.size() - kShown);
   }
   if (strict_ && !crossings.empty()) return kExitUsage;
   // A run records steps k = 0 … duration/dt: one more than the number of dt it spans.

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "sensing/footprint.h"
 #include "spec/error.h"
@@ -43,40 +45,79 @@ std::string budgetMessage(double amount, double limit, const std::string& what) 
          roughly(amount) + " (--budget K raises every work limit K-fold)";
 }
 
-double visibleTreesBound(const ScenarioSpec& spec) {
-  if (spec.trees.empty() || spec.uavs.empty()) return 0.0;
-  double reach = 0.0;  // the largest footprint's circumradius, and a crown's
+namespace {
+
+double footprintReach(const ScenarioSpec& spec) {
+  double reach = 0.0;  // the largest footprint's circumradius
   for (const UavSpec& uav : spec.uavs)
     reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
-  double crown = 0.0;
-  for (const world::TreeDef& tree : spec.trees) crown = std::max(crown, tree.radius);
-  // A footprint of circumradius R placed anywhere lies in a square of side 2 (R + crown), which
-  // meets at most 2 × 2 cells of that side (+1 each way, cells are half-open): count the trees
-  // per cell, and bound any window by the busiest 3 × 3 block.
-  const double cell = std::max(2.0 * (reach + crown), 1e-3);
+  return reach;
+}
+
+/// The most of `points` one window of circumradius `reach` can hold, bounded from above: a window
+/// lies in a square of side 2·reach, which meets at most 3 × 3 half-open cells of side `reach`,
+/// so the busiest 3 × 3 block of such cells bounds it.
+double busiestWindow(const std::vector<Vec2>& points, double reach) {
+  const double cell = std::max(reach, 1e-3);
   std::unordered_map<std::uint64_t, double> counts;
-  counts.reserve(spec.trees.size());
+  counts.reserve(points.size());
   auto key = [](long long i, long long j) {
     return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint32_t>(j);
   };
-  for (const world::TreeDef& tree : spec.trees) {
-    const auto i = static_cast<long long>(std::floor(tree.centre.x() / cell));
-    const auto j = static_cast<long long>(std::floor(tree.centre.y() / cell));
+  auto cellOf = [&](const Vec2& p) {
+    return std::pair(static_cast<long long>(std::floor(p.x() / cell)),
+                     static_cast<long long>(std::floor(p.y() / cell)));
+  };
+  for (const Vec2& p : points) {
+    const auto [i, j] = cellOf(p);
     counts[key(i, j)] += 1.0;
   }
   double busiest = 0.0;
-  for (const world::TreeDef& tree : spec.trees) {
-    const auto i = static_cast<long long>(std::floor(tree.centre.x() / cell));
-    const auto j = static_cast<long long>(std::floor(tree.centre.y() / cell));
+  for (const Vec2& p : points) {
+    const auto [i, j] = cellOf(p);
     double block = 0.0;
     for (long long di = -1; di <= 1; ++di)
       for (long long dj = -1; dj <= 1; ++dj)
         if (const auto it = counts.find(key(i + di, j + dj)); it != counts.end())
           block += it->second;
     busiest = std::max(busiest, block);
-    if (busiest >= static_cast<double>(spec.trees.size())) break;
+    if (busiest >= static_cast<double>(points.size())) break;
   }
-  return std::min(busiest, static_cast<double>(spec.trees.size()));
+  return std::min(busiest, static_cast<double>(points.size()));
+}
+
+}  // namespace
+
+double visibleTreesBound(const ScenarioSpec& spec) {
+  if (spec.trees.empty() || spec.uavs.empty()) return 0.0;
+  // A crown is seen when it meets the footprint: its centre lies within reach + crown.
+  double crown = 0.0;
+  for (const world::TreeDef& tree : spec.trees) crown = std::max(crown, tree.radius);
+  std::vector<Vec2> centres;
+  centres.reserve(spec.trees.size());
+  for (const world::TreeDef& tree : spec.trees) centres.push_back(tree.centre);
+  return busiestWindow(centres, footprintReach(spec) + crown);
+}
+
+double visibleTargetsBound(const ScenarioSpec& spec) {
+  const double targets = static_cast<double>(spec.targets.size());
+  if (spec.targets.empty() || spec.uavs.empty()) return 0.0;
+  // Targets are sensed at the steps only: the busiest footprint window over every step's
+  // positions. Past kSamples positions in all, every target counts (the cheap bound).
+  constexpr double kSamples = 2e6;
+  const double steps = spec.steps() + 1.0;
+  if (steps * targets > kSamples) return targets;
+  const double reach = footprintReach(spec);
+  double busiest = 0.0;
+  std::vector<Vec2> positions(spec.targets.size());
+  for (int k = 0; k < static_cast<int>(steps); ++k) {
+    const double t = k * spec.dt;
+    for (std::size_t i = 0; i < spec.targets.size(); ++i)
+      positions[i] = spec.targets[i].path.positionAt(t);
+    busiest = std::max(busiest, busiestWindow(positions, reach));
+    if (busiest >= targets) break;
+  }
+  return busiest;
 }
 
 WorkEstimate estimateWork(const ScenarioSpec& spec) {
@@ -86,7 +127,9 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   const double clutter = spec.sensing.clutter_rate;
   WorkEstimate work;
   work.visible_trees = visibleTreesBound(spec);
-  const double seen = targets + clutter + work.visible_trees;  // detections per scan, at most
+  work.visible_targets = visibleTargetsBound(spec);
+  // detections per scan, at most
+  const double seen = work.visible_targets + clutter + work.visible_trees;
   // Sensing: every UAV looks at every target, its clutter and the trees in its footprint; the
   // world moves every body.
   work.world_units = steps * (uavs + targets + uavs * seen);
@@ -160,21 +203,20 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
           work.visible_trees > static_cast<double>(spec.targets.size()) ? "occluders"
                                                                         : "clock.duration",
           work.world_units, limits.world_units,
-          "world units per trial (steps × (UAVs + targets + UAVs × (targets + clutter_rate + "
+          "world units per trial (steps × (UAVs + targets + UAVs × (clutter_rate + targets and "
           "trees one footprint can hold)))");
   require(spec, "clock.duration", work.record_bytes, limits.record_bytes,
           "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate) + 45 × "
           "polygon vertices))");
   // The field named is the one that drives the estimate most.
-  const double m =
-      static_cast<double>(spec.targets.size()) + spec.sensing.clutter_rate + work.visible_trees;
+  const double m = work.visible_targets + spec.sensing.clutter_rate + work.visible_trees;
   const double enumeration = spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
   const std::string tracking_field = enumeration > 1001.0 * m * m ? "tracking.max_hypotheses"
                                      : work.visible_trees > m - work.visible_trees ? "occluders"
                                                                                    : "targets";
   require(spec, tracking_field, work.tracking_units, limits.tracking_units,
           "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
-          "targets + sensing.clutter_rate + trees one footprint can hold)");
+          "targets and trees one footprint can hold + sensing.clutter_rate)");
   require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
           "fusion units per trial (steps × rounds × UAVs × neighbours in comm_range × targets)");
   require(spec, "planner.pso", work.planning_units, limits.planning_units,

@@ -15,7 +15,7 @@ struct WorkLimits {
   double trees = 2e6;                 // points one layout generator draws; trees in a scenario
   double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
   double record_bytes = 4e9;          // estimated size of record.jsonl
-  double tracking_units = 2e11;       // steps × UAVs × (measurements² + joint-event cap)
+  double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
   double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
   double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
@@ -30,10 +30,13 @@ WorkLimits workLimits(double scale = 1.0);
 /// side 2 × the largest footprint's circumradius (every tree in a footprint is a detection, a
 /// track and a line of the record). Counted on a grid of half that side, O(trees).
 double visibleTreesBound(const ScenarioSpec& spec);
+/// The most targets one footprint holds at any step (every target past 2·10⁶ positions to check).
+double visibleTargetsBound(const ScenarioSpec& spec);
 
 /// What one trial of `spec` asks for, in the units of WorkLimits.
 struct WorkEstimate {
-  double visible_trees = 0.0;  // visibleTreesBound
+  double visible_trees = 0.0;    // visibleTreesBound
+  double visible_targets = 0.0;  // visibleTargetsBound
   double world_units = 0.0;
   double record_bytes = 0.0;
   double tracking_units = 0.0;
