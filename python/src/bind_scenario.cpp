@@ -72,7 +72,7 @@ void bindScenario(py::module_& m) {
             spec::loadScenarioText(text, file, loadOptions(allowed_roots, std::nullopt)));
       },
       py::arg("text"), py::arg("file"), py::arg("allowed_roots"));
-  m.def("library_scenarios", &spec::libraryScenarios, "The built-in scenarios' names.");
+  m.def("library_scenarios", [] { return spec::libraryScenarios(); }, "The built-in scenarios' names.");
   m.def("_library_dir", [] { return spec::libraryDir().string(); });
   m.def(
       "_set_builtin_scenarios", [](const std::string& dir) { spec::setBuiltinScenarioDir(dir); },

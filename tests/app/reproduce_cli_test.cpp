@@ -36,10 +36,11 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
     ++figures;
     at = end;
   }
-  // 12 Sankey diagrams (3 planners × 2 horizons × 2), 2 coverage figures and 6 sensitivity maps
+  // 16 Sankey diagrams (4 planners — SMA-NBO, Dec-POMDP with the paper's and the local-best joint
+  // search, centralised — × 2 horizons × 2), 2 coverage figures and 6 sensitivity maps
   // (Resource Allocation; Joint Effect's occlusion × spacing per occlusion map, and its decision
   // period × footprint per map with a map).
-  EXPECT_EQ(figures, 20);
+  EXPECT_EQ(figures, 24);
   EXPECT_NE(report.find("| decisions every 0.2 s step | a_priori |"), std::string::npos);
 }
 

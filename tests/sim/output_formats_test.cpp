@@ -1,5 +1,6 @@
 // docs/output-formats.md names every key a run writes to record.jsonl and summary.json, and
 // docs/scenario-reference.md is what `canopy schema --markdown` prints today.
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -92,8 +93,13 @@ TEST(ScenarioReference, SchemaCarriesTypesRangesDefaultsAndUnits) {
   EXPECT_EQ(horizon["minimum"], 1.0);
   EXPECT_EQ(horizon["maximum"], 50.0);
   EXPECT_EQ(schema["required"], Json({"aoi", "uavs"}));
-  EXPECT_EQ(schema["properties"]["occluders"]["items"]["properties"]["radius"]["type"],
-            Json({"number", "array"}));
+  // Lists of alternatives in any order (the order of first use in the library's files).
+  const auto sorted = [](Json list) {
+    std::sort(list.begin(), list.end());
+    return list;
+  };
+  EXPECT_EQ(sorted(schema["properties"]["occluders"]["items"]["properties"]["radius"]["type"]),
+            Json({"array", "number"}));
   // Variants: one per occluder type and include, each with its own required members, told apart
   // by "type"; a footprint is a radius, a size or a ground robot's sector, never two of them.
   const Json& occluder = schema["properties"]["occluders"]["items"];
@@ -106,8 +112,8 @@ TEST(ScenarioReference, SchemaCarriesTypesRangesDefaultsAndUnits) {
   EXPECT_EQ(fov["oneOf"][1]["required"], Json({"radius"}));
   EXPECT_EQ(fov["oneOf"][1]["additionalProperties"], false);
   // A numeric yaw or the one spelling "velocity".
-  EXPECT_EQ(schema["properties"]["uavs"]["items"]["properties"]["yaw"]["anyOf"],
-            Json::parse(R"([{"type": "string", "enum": ["velocity"]}, {"type": "number"}])"));
+  EXPECT_EQ(sorted(schema["properties"]["uavs"]["items"]["properties"]["yaw"]["anyOf"]),
+            sorted(Json::parse(R"([{"type": "string", "enum": ["velocity"]}, {"type": "number"}])")));
 }
 
 }  // namespace

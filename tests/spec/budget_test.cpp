@@ -231,5 +231,30 @@ TEST(WorkBudget, VisibleTreesAreBoundedByTheBusiestFootprintWindow) {
   EXPECT_EQ(visibleTreesBound(with(R"({"size": [3000, 3000]})")), 200.0);
 }
 
+// Targets one footprint can hold follow their paths: ten standing within a metre of each other
+// and ten walkers 90 m apart count at least ten and fewer than twenty while the walkers stay
+// apart (a 20 m footprint's 3 × 3 window of cells reaches at most one walker), and all twenty
+// when the walkers meet the cluster at t = 10 s.
+TEST(WorkBudget, TargetsOneFootprintCanHoldFollowTheirPaths) {
+  const auto with = [](double end_y) {
+    std::string targets;
+    for (int i = 0; i < 10; ++i) {
+      const std::string x = std::to_string(50 + 90 * i);
+      targets += (i ? ", " : "") + std::string(R"({"path": {"start": [)") +
+                 std::to_string(500 + 0.1 * i) + R"(, 500], "velocity": [0, 0]}})";
+      targets += R"(, {"path": {"waypoints": [{"t": 0, "p": [)" + x + R"(, 100]}, {"t": 10, "p": [)" +
+                 (end_y == 500 ? std::string("500") : x) + ", " + std::to_string(end_y) + "]}]}}";
+    }
+    return loadScenarioText(
+        R"({"aoi": [0, 0, 1000, 1000], "clock": {"dt": 1, "duration": 10}, "uavs": [{"start": [10, 10], "fov": {"size": [20, 20]}}], "targets": [)" +
+            targets + "]}",
+        "targets.json");
+  };
+  const double apart = visibleTargetsBound(with(100));
+  EXPECT_GE(apart, 10.0);
+  EXPECT_LT(apart, 20.0);
+  EXPECT_EQ(visibleTargetsBound(with(500)), 20.0);
+}
+
 }  // namespace
 }  // namespace canopy::spec

@@ -177,7 +177,7 @@ const std::vector<Case>& cases() {
            R"([{"path": {"start": [20, 20], "velocity": [0, 0]}}, {"path": {"start": [30, 20], "velocity": [0, 0]}}])",
            R"(, "clock": {"dt": 0.2, "duration": 1000}, "tracking": {"max_hypotheses": 10000000})"),
        // 5001 steps × 256 UAVs × (1001 × 2² + 10⁷ events × depth 2) = 2.6e13
-       {"tracking.max_hypotheses: expected at most 2.0e+11 tracking units", "about 2.6e+13"}},
+       {"tracking.max_hypotheses: expected at most 5.0e+11 tracking units", "about 2.6e+13"}},
       // 10⁷ + 1 steps × 1 UAV × (1000 + 600 × 1 target) = 1.6e10 bytes
       {"RecordTooLargeForTheDisk",
        base("[{\"start\": [10, 10]}]", R"([{"path": {"start": [20, 20], "velocity": [0, 0]}}])",
