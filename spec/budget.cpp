@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <numbers>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -13,8 +14,6 @@
 
 namespace canopy::spec {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string roughly(double x) {
   char text[32];
@@ -158,7 +157,9 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   // (itself included), at most the team.
   const double area = std::max(1.0, spec.aoi.width() * spec.aoi.height());
   auto within = [&](double range) {
-    return std::isfinite(range) ? std::min(uavs, 1.0 + uavs * kPi * range * range / area) : uavs;
+    return std::isfinite(range)
+               ? std::min(uavs, 1.0 + uavs * std::numbers::pi * range * range / area)
+               : uavs;
   };
   // Consensus: each agent merges its neighbours' tracks (within fusion.comm_range) every round.
   work.fusion_units =
@@ -184,7 +185,7 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
       for (const UavSpec& uav : spec.uavs)
         reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
                                     sensing::circumradius(uav.sensor.footprint));
-      const double disc = kPi * 4.0 * reach * reach / area;
+      const double disc = std::numbers::pi * 4.0 * reach * reach / area;
       scope_targets = std::min(
           scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));
       scope_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
-#include <numbers>
 
 #include "core/angles.h"
 #include "world/unicycle.h"
@@ -143,6 +143,12 @@ struct World::Box2d {
   std::vector<b2Body*> targets;
   b2Body* forest = nullptr;  // one static body holding every tree as a fixture
   b2Body* solids = nullptr;  // one static body holding every trunk and wall, with ground robots
+  // step()'s per-agent scratch, kept to reuse its memory: the command each sub-step drives at,
+  // the turn rate (rad/s), the position at the step's start (m), what it touched.
+  std::vector<b2Vec2> velocity;
+  std::vector<float> omega;
+  std::vector<Vec2> start;
+  std::vector<std::vector<BodyRef>> touched;
 };
 
 World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()) {
@@ -282,9 +288,14 @@ void World::step(double dt) {
   }
 
   const std::size_t n = b2_->uavs.size();
-  std::vector<b2Vec2> velocity(n);  // the command each sub-step drives at
-  std::vector<float> omega(n);      // rad/s
-  std::vector<Vec2> start(n);       // m
+  std::vector<b2Vec2>& velocity = b2_->velocity;
+  std::vector<float>& omega = b2_->omega;
+  std::vector<Vec2>& start = b2_->start;
+  std::vector<std::vector<BodyRef>>& touched = b2_->touched;
+  velocity.resize(n);
+  omega.resize(n);
+  start.resize(n);
+  touched.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     b2Body* body = b2_->uavs[i];
     const UavDef& agent = def_.uavs[i];
@@ -328,7 +339,6 @@ void World::step(double dt) {
       std::max({substeps, static_cast<int>(std::ceil(max_translation / kMaxSubstepTranslation)),
                 static_cast<int>(std::ceil(max_rotation / kMaxSubstepRotation))});
   const float h = static_cast<float>(dt / substeps);
-  std::vector<std::vector<BodyRef>> touched(n);
   for (int s = 0; s < substeps; ++s) {
     for (std::size_t i = 0; i < n; ++i) {
       b2_->uavs[i]->SetLinearVelocity(velocity[i]);
@@ -355,7 +365,8 @@ void World::step(double dt) {
         }));
     // A body that touched something went where the solver let it: its velocity is what it moved.
     if (!now.empty()) uav_velocity_[i] = (fromB2(b2_->uavs[i]->GetPosition()) - start[i]) / dt;
-    contacts_[i] = std::move(now);
+    contacts_[i].swap(now);  // the old list's memory is the next step's scratch
+    now.clear();
   }
 
   time_ += dt;
