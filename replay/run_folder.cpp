@@ -1,8 +1,6 @@
 #include "replay/run_folder.h"
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/text_file.h"
 #include "sim/record_reader.h"
@@ -216,22 +214,15 @@ RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpe
 }
 
 std::vector<RecordedStep> readRecord(const fs::path& path, const spec::ScenarioSpec& spec) {
-  // Held once (up to kMaxResultBytes): lines are copied out one at a time, not the whole text.
-  const std::string text = readText(path, "record");
   std::vector<RecordedStep> steps;
-  std::size_t at = 0;
-  for (int number = 1; at < text.size(); ++number) {
-    const std::size_t end = std::min(text.find('\n', at), text.size());
-    const std::string line = text.substr(at, end - at);
-    at = end + 1;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  sim::forEachRecordLine(readText(path, "record"), [&](const std::string& line, int number) {
     const LineReader r(path, number);
     const Json json = parseBounded(line);
     if (json.is_discarded() || !json.is_object()) r.fail("", "one JSON object per line");
     steps.push_back(step(r, json, spec));
     if (steps.back().k != static_cast<int>(steps.size()) - 1)
       r.fail("k", "step " + std::to_string(steps.size() - 1) + " (one line per step, in order)");
-  }
+  });
   if (steps.empty()) throw ScenarioError(path.string(), "", "has no steps");
   return steps;
 }

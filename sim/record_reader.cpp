@@ -1,8 +1,6 @@
 #include "sim/record_reader.h"
 
-#include <algorithm>
 #include <cstring>
-#include <sstream>
 #include <string>
 
 #include "core/text_file.h"
@@ -93,15 +91,8 @@ spec::ScenarioSpec readManifest(const fs::path& path) {
 
 std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
                                                   const spec::ScenarioSpec& spec) {
-  // Held once (up to kMaxResultBytes): lines are copied out one at a time, not the whole text.
-  const std::string text = readResultFile(path, "record");
   std::vector<world::WorldSnapshot> steps;
-  std::size_t next = 0;
-  for (int number = 1; next < text.size(); ++number) {
-    const std::size_t end = std::min(text.find('\n', next), text.size());
-    const std::string line = text.substr(next, end - next);
-    next = end + 1;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  forEachRecordLine(readResultFile(path, "record"), [&](const std::string& line, int number) {
     const LineReader r(path, number);
     Json json;
     try {
@@ -133,7 +124,7 @@ std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
       const std::string at = "targets." + std::to_string(t) + ".p";
       s.targets.emplace_back().position = r.point(r.member(targets[t], "p", at), at);
     }
-  }
+  });
   if (steps.empty()) throw ScenarioError(path.string(), "", "has no steps");
   return steps;
 }
