@@ -154,7 +154,7 @@ void readFov(const Field& fov_field, sensing::FootprintDef& footprint) {
 void readUavs(ObjectReader& root, ScenarioSpec& spec) {
   const Field list = root.required("uavs");
   std::set<std::string> names;
-  const std::vector<Field> elements = list.elements(1, 256);
+  const std::vector<Field> elements = list.elements(1, kMaxUavs);
   for (std::size_t i = 0; i < elements.size(); ++i) {
     ObjectReader reader = elements[i].object();
     UavSpec uav;
@@ -222,7 +222,7 @@ std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec) {
     return labels;
   }
   std::set<std::string> names;
-  const std::vector<Field> elements = list->elements(0, 100000);
+  const std::vector<Field> elements = list->elements(0, kMaxTargets);
   for (std::size_t i = 0; i < elements.size(); ++i) {
     ObjectReader reader = elements[i].object();
     TargetSpec target;

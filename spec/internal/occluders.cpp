@@ -1,6 +1,7 @@
 // Reading occluder layouts: explicit discs and polygons, Poisson / grid / cluster generators,
 // and includes of layout files.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -205,7 +206,15 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
       }
       // Errors inside the included file name it, behind the field that includes it.
       try {
-        const Json document = parseJson(file.text, file.shown);
+        // Its list, like the scenario's, is refused as it is read when longer than the tree
+        // budget (each entry is at least one tree).
+        const auto most = static_cast<std::size_t>(std::floor(treeLimit(name_field)));
+        const std::string too_many =
+            "expected at most " + std::to_string(most) +
+            " occluder entries (each is at least one tree of the tree budget), this file lists "
+            "more (--budget K raises every work limit K-fold)";
+        const Json document =
+            parseJson(file.text, file.shown, {{"", most, too_many}, {"occluders", most, too_many}});
         const bool wrapped = document.is_object();
         if (wrapped) {
           ObjectReader layout = Field(document, file.shown, "", nullptr).object();
