@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/printable.h"
+#include "core/progress.h"
 #include "core/text_file.h"
 
 namespace canopy::spec {
@@ -97,8 +98,10 @@ class BoundedSax {
   }
 
  private:
-  // A value starts: when its parent is the limited array, it is one more element.
+  // A value starts: when its parent is the limited array, it is one more element. A large file
+  // reports how far its reading got every 2^16 values.
   void element() {
+    if ((++values_ & 0xffff) == 0) reportProgress("reading JSON (values)", static_cast<double>(values_), 0.0);
     if (counted_ && objects_.size() == counted_depth_ && ++count_ > counted_->max_elements)
       throw JsonArrayTooLong(*counted_);
   }
@@ -123,6 +126,7 @@ class BoundedSax {
   const ArrayLimit* counted_ = nullptr;  // the limited array being read, if any
   std::size_t counted_depth_ = 0;         // the containers open while it takes elements
   std::size_t count_ = 0;                // its elements so far
+  std::uint64_t values_ = 0;             // values read so far
 };
 
 }  // namespace

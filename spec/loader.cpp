@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/printable.h"
+#include "core/progress.h"
 #include "spec/budget.h"
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
@@ -176,7 +177,7 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
       std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
       internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
     }
-    effective["occluders"] = occluders_effective;
+    effective["occluders"] = std::move(occluders_effective);
   });
   attempt([&] { internal::readTracking(root, spec); });
   attempt([&] { internal::readFusion(root, spec); });
@@ -191,9 +192,13 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   }
   attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
   if (!errors.empty()) failed();
+  // Stages without a loop of their own report where they start (core/progress.h).
+  reportProgress("checking the work budget", 0.0, 0.0);
   checkWork(spec, options.budget_scale);
 
+  reportProgress("writing the effective configuration", 0.0, 0.0);
   spec.effective_config = effective.dump(2);
+  reportProgress("releasing the parsed document", 0.0, 0.0);
   return spec;
 }
 

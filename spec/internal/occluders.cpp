@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/progress.h"
 #include "spec/budget.h"
 #include "spec/forest.h"
 #include "spec/internal/referenced_file.h"
@@ -188,7 +189,10 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
 
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
                    Json& effective, std::vector<std::string>& include_stack) {
-  for (const Field& element : list.elements()) {
+  const std::vector<Field> elements = list.elements();
+  ProgressCounter progress("reading occluders", static_cast<double>(elements.size()));
+  for (const Field& element : elements) {
+    progress.add();
     Json element_out = Json::object();
     const Field item(element.json(), element.file(), element.path(), &element_out,
                      element.context());
@@ -239,7 +243,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
     static const std::vector<std::string> kTypes{"disc", "polygon", "poisson", "grid", "cluster"};
     readGenerator(kTypes[reader.required("type").choice(kTypes)], reader, aoi, trees);
     reader.finish();
-    effective.push_back(element_out);
+    effective.push_back(std::move(element_out));
   }
 }
 
