@@ -8,6 +8,9 @@
 
 namespace canopy::spec::internal {
 
+constexpr std::size_t kMaxUavs = 256;        // "uavs": 1 to kMaxUavs elements
+constexpr std::size_t kMaxTargets = 100000;  // "targets": 0 to kMaxTargets elements
+
 /// Applies one "dotted.path=value" override to the raw document.
 void applyOverride(Json& document, const std::string& assignment);
 
