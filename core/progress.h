@@ -2,7 +2,7 @@
 // How far long work got. Stages that can run for seconds when the budget is raised (reading a
 // large JSON file, reading its occluders and targets, checking target paths, building the
 // world, a run's steps) report (stage, done, total) here every so often; the command line shows
-// a line on stderr when one has run for a while (app/progress_line). Without a hook, reporting
+// a line on stderr when one has run for a while (app/main.cpp's showProgress). Without a hook, reporting
 // costs one atomic load.
 #include <cstdint>
 

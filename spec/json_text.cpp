@@ -101,7 +101,8 @@ class BoundedSax {
   // A value starts: when its parent is the limited array, it is one more element. A large file
   // reports how far its reading got every 2^16 values.
   void element() {
-    if ((++values_ & 0xffff) == 0) reportProgress("reading JSON (values)", static_cast<double>(values_), 0.0);
+    if ((++values_ & 0xffff) == 0)
+      reportProgress("reading JSON (values)", static_cast<double>(values_), 0.0);
     if (counted_ && objects_.size() == counted_depth_ && ++count_ > counted_->max_elements)
       throw JsonArrayTooLong(*counted_);
   }

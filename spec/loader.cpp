@@ -1,7 +1,6 @@
 #include "spec/loader.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <map>
@@ -218,16 +217,10 @@ std::vector<ArrayLimit> listLimits(const LoadOptions& options) {
            " elements, got more than " + std::to_string(max_size) +
            " (refused as it was read; the rest of the file was not)";
   };
-  // Every entry of "occluders" is at least one unit of the tree budget (a disc, a polygon, a
-  // generator or an include).
-  const double trees = std::floor(workLimits(options.budget_scale).trees);
   std::vector<ArrayLimit> limits = {
       {"uavs", internal::kMaxUavs, fixed(1, internal::kMaxUavs)},
       {"targets", internal::kMaxTargets, fixed(0, internal::kMaxTargets)},
-      {"occluders", static_cast<std::size_t>(trees),
-       "expected at most " + std::to_string(static_cast<std::size_t>(trees)) +
-           " occluder entries (each is at least one tree of the tree budget), this file lists "
-           "more (--budget K raises every work limit K-fold)"}};
+      internal::occluderListLimit(workLimits(options.budget_scale).trees)};
   std::erase_if(limits, [&](const ArrayLimit& limit) { return overridden(limit.key); });
   return limits;
 }

@@ -187,6 +187,14 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
 
 }  // namespace
 
+ArrayLimit occluderListLimit(double tree_limit) {
+  const auto most = static_cast<std::size_t>(std::floor(tree_limit));
+  return {"occluders", most,
+          "expected at most " + std::to_string(most) +
+              " occluder entries (each is at least one tree of the tree budget), this file lists "
+              "more (--budget K raises every work limit K-fold)"};
+}
+
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
                    Json& effective, std::vector<std::string>& include_stack) {
   const std::vector<Field> elements = list.elements();
@@ -212,13 +220,10 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
       try {
         // Its list, like the scenario's, is refused as it is read when longer than the tree
         // budget (each entry is at least one tree).
-        const auto most = static_cast<std::size_t>(std::floor(treeLimit(name_field)));
-        const std::string too_many =
-            "expected at most " + std::to_string(most) +
-            " occluder entries (each is at least one tree of the tree budget), this file lists "
-            "more (--budget K raises every work limit K-fold)";
-        const Json document =
-            parseJson(file.text, file.shown, {{"", most, too_many}, {"occluders", most, too_many}});
+        ArrayLimit as_list = occluderListLimit(treeLimit(name_field));
+        ArrayLimit wrapped_list = as_list;
+        as_list.key = "";
+        const Json document = parseJson(file.text, file.shown, {as_list, wrapped_list});
         const bool wrapped = document.is_object();
         if (wrapped) {
           ObjectReader layout = Field(document, file.shown, "", nullptr).object();
