@@ -2,13 +2,18 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/printable.h"
+#include "core/progress.h"
 #include "core/text_file.h"
 #include "spec/internal/referenced_file.h"
 
 namespace canopy::spec {
 namespace {
+
+// Arrays at least this long report the listing of their elements (Field::elements).
+constexpr std::size_t kListedWithProgress = 65536;
 
 std::string joinPath(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
@@ -212,11 +217,15 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
     *out_ = Json::array();
     out_->get_ref<Json::array_t&>().resize(n);  // fixed size: element slots keep their address
   }
+  // Listing 10⁶ elements, each with its path, takes seconds: a stage of its own (core/progress.h).
+  std::optional<ProgressCounter> progress;
+  if (n >= kListedWithProgress) progress.emplace("listing a long array's elements", static_cast<double>(n), 65536);
   std::vector<Field> fields;
   fields.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     fields.emplace_back((*value_)[i], file_, path_ + "[" + std::to_string(i) + "]",
                         out_ ? &(*out_)[i] : nullptr, context_);
+    if (progress) progress->add();
   }
   return fields;
 }

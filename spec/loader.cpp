@@ -13,6 +13,7 @@
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
 #include "spec/json_lines.h"
+#include "spec/json_progress.h"
 
 namespace canopy::spec {
 namespace fs = std::filesystem;
@@ -195,9 +196,10 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   reportProgress("checking the work budget", 0.0, 0.0);
   checkWork(spec, options.budget_scale);
 
-  reportProgress("writing the effective configuration", 0.0, 0.0);
-  spec.effective_config = effective.dump(2);
-  reportProgress("releasing the parsed document", 0.0, 0.0);
+  // Each seconds long for 10⁶ trees: both report as they go (spec/json_progress.h).
+  spec.effective_config = dumpIndented2(effective, "writing the effective configuration");
+  releaseReporting(effective, "releasing the parsed document");
+  releaseReporting(document, "releasing the parsed document");
   return spec;
 }
 

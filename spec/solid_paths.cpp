@@ -6,7 +6,8 @@
 #include <cstdint>
 #include <limits>
 #include <sstream>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "core/progress.h"
 
@@ -67,15 +68,19 @@ class SolidIndex {
     // About one solid per cell on average.
     const Vec2 extent = all.hi - all.lo;
     cell_ = std::max(1.0, std::sqrt(extent.x() * extent.y() / static_cast<double>(solids_.size())));
+    ProgressCounter progress("indexing trunks and walls", static_cast<double>(solids_.size()));
     for (std::size_t s = 0; s < solids_.size(); ++s) {
+      progress.add();
       const auto [i0, j0, i1, j1] = cellsOf(boxes_[s]);
       if ((i1 - i0 + 1) * (j1 - j0 + 1) > kMaxCellsPerSolid) {
         wide_.push_back(solids_[s]);  // a long wall: tested against every leg
         continue;
       }
       for (long long i = i0; i <= i1; ++i)
-        for (long long j = j0; j <= j1; ++j) cells_[key(i, j)].push_back(solids_[s]);
+        for (long long j = j0; j <= j1; ++j) cells_.emplace_back(key(i, j), solids_[s]);
     }
+    // One sorted array rather than a hash map of lists: 10⁶ trunks are one allocation, not 10⁶.
+    std::sort(cells_.begin(), cells_.end());
   }
 
   // The indices (in spec.trees, ascending) of the solids whose box may meet the segment a → b.
@@ -91,8 +96,9 @@ class SolidIndex {
     std::vector<int> found = wide_;
     for (long long i = i0; i <= i1; ++i)
       for (long long j = j0; j <= j1; ++j)
-        if (const auto it = cells_.find(key(i, j)); it != cells_.end())
-          found.insert(found.end(), it->second.begin(), it->second.end());
+        for (auto it = std::lower_bound(cells_.begin(), cells_.end(), CellEntry{key(i, j), -1});
+             it != cells_.end() && it->first == key(i, j); ++it)
+          found.push_back(it->second);
     std::sort(found.begin(), found.end());
     found.erase(std::unique(found.begin(), found.end()), found.end());
     return found;
@@ -125,7 +131,8 @@ class SolidIndex {
   std::vector<Box> boxes_;   // per solid
   std::vector<int> wide_;    // solids spanning more than kMaxCellsPerSolid cells
   double cell_ = 1.0;        // m
-  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+  using CellEntry = std::pair<std::uint64_t, int>;  // (cell key, solid), sorted
+  std::vector<CellEntry> cells_;
 };
 
 }  // namespace

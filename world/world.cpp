@@ -140,6 +140,10 @@ class FirstTreeOnSegment {
 
 struct World::Box2d {
   b2World world{b2Vec2(0.0f, 0.0f)};
+  // The tree crowns, in a world of their own that is queried and never stepped: in `world` the
+  // first Step would pair-test every new static proxy, 10⁶ crowns taking tens of seconds with no
+  // output (issue 34), to find contacts crowns never have.
+  b2World crowns{b2Vec2(0.0f, 0.0f)};
   std::vector<b2Body*> uavs;
   std::vector<b2Body*> targets;
   b2Body* forest = nullptr;  // one static body holding every tree as a fixture
@@ -206,7 +210,7 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
 
   b2BodyDef forest_def;
   forest_def.type = b2_staticBody;
-  b2_->forest = w.CreateBody(&forest_def);
+  b2_->forest = b2_->crowns.CreateBody(&forest_def);
   ProgressCounter progress("building the world (trees)", static_cast<double>(def_.trees.size()));
   for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
     progress.add();
@@ -400,6 +404,7 @@ void World::queryAabb(const Aabb& box, std::vector<BodyRef>& out) const {
   query.lowerBound = toB2(box.lo);
   query.upperBound = toB2(box.hi);
   b2_->world.QueryAABB(&callback, query);
+  b2_->crowns.QueryAABB(&callback, query);
   // The broad-phase order depends on the tree's history; sort so callers see a stable order.
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
@@ -409,7 +414,7 @@ bool World::insideOccluder(const Vec2& p) const {
   b2AABB query;
   query.lowerBound = toB2(p);
   query.upperBound = toB2(p);
-  b2_->world.QueryAABB(&callback, query);
+  b2_->crowns.QueryAABB(&callback, query);
   return callback.hit.has_value();
 }
 
@@ -419,10 +424,10 @@ std::optional<int> World::firstOccluderOnSegment(const Vec2& a, const Vec2& b) c
     b2AABB query;
     query.lowerBound = toB2(a);
     query.upperBound = toB2(a);
-    b2_->world.QueryAABB(&callback, query);
+    b2_->crowns.QueryAABB(&callback, query);
     return callback.hit;
   }
-  const b2BroadPhase& broad_phase = b2_->world.GetContactManager().m_broadPhase;
+  const b2BroadPhase& broad_phase = b2_->crowns.GetContactManager().m_broadPhase;
   FirstTreeOnSegment callback(broad_phase, def_.trees, a, b);
   b2RayCastInput input;
   input.p1 = toB2(a);
