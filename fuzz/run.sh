@@ -10,7 +10,8 @@
 #     targets: scenario_loader sweep_loader track_csv result_files python_edits
 #
 # Environment: CANOPY_WERROR=1 builds with warnings as errors; CANOPY_JOBS=N build jobs (2);
-# CANOPY_FUZZ_FLAGS adds libFuzzer flags (e.g. "-runs=1000000" or "-jobs=2").
+# CANOPY_FUZZ_PARALLEL=N runs N targets at a time (1); CANOPY_FUZZ_FLAGS adds libFuzzer flags
+# (e.g. "-runs=1000000" or "-jobs=2").
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -28,21 +29,41 @@ cmake --preset fuzz -S "$root" -DCANOPY_WERROR="$werror" >"$build/configure.log"
 cmake --build "$build" -j "${CANOPY_JOBS:-2}" >"$build/build.log" 2>&1 ||
   { grep -E "error|Error" -A5 "$build/build.log" | head -60 >&2; exit 1; }
 
-failed=0
-for target in "${targets[@]}"; do
-  corpus="$build/corpus/$target"
-  findings="$build/findings/$target"
-  log="$build/$target.log"
+# One target: its executions and exit code go to $build/TARGET.status ("RUNS STATUS").
+fuzz_one() {
+  local target="$1" corpus="$build/corpus/$1" findings="$build/findings/$1" log="$build/$1.log"
   mkdir -p "$corpus" "$findings"
-  dict=()
+  local dict=()
   [ "$target" != track_csv ] && dict=(-dict="$root/fuzz/json.dict")
-  status=0
+  local status=0
   # New inputs go to the first folder only: the seeds in the repo stay as they are.
   # shellcheck disable=SC2086
   "$build/fuzz/fuzz_$target" "$corpus" "$root/fuzz/corpus/$target" "${dict[@]}" \
     -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
     -artifact_prefix="$findings/" ${CANOPY_FUZZ_FLAGS:-} >"$log" 2>&1 || status=$?
+  local runs
   runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{s += $2} END {print s + 0}' || true)
+  echo "$runs $status" >"$build/$target.status"
+}
+
+# CANOPY_FUZZ_PARALLEL targets at a time (default 1); each still gets SECONDS of one process.
+parallel="${CANOPY_FUZZ_PARALLEL:-1}"
+running=()
+for target in "${targets[@]}"; do
+  rm -f "$build/$target.status"
+  fuzz_one "$target" &
+  running+=($!)
+  if [ ${#running[@]} -ge "$parallel" ]; then
+    wait "${running[0]}"
+    running=("${running[@]:1}")
+  fi
+done
+wait
+
+failed=0
+for target in "${targets[@]}"; do
+  log="$build/$target.log"
+  read -r runs status <"$build/$target.status" || { runs=0; status=1; }
   echo "fuzz $target: $runs executions in ${seconds} s, exit code $status (log: $log)"
   if [ "$status" -ne 0 ]; then
     failed=1
