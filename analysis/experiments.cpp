@@ -17,7 +17,8 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
   // joint plan and with the local-best (ring) swarm (docs/design-notes.md), reported side by side.
   // JE and OS: SMA-NBO, H = 5, × the occlusion map.
   const std::string planners =
-      R"({"name": "planner", "values": ["sma", "dec_pomdp", "dec_pomdp_global", "dec_pomdp_local"],)"
+      R"({"name": "planner",)"
+      R"( "values": ["sma", "dec_pomdp", "dec_pomdp_global", "dec_pomdp_local"],)"
       R"( "set": [{"planner.algorithm": "sma"}, {"planner.algorithm": "dec_pomdp"},)"
       R"({"planner.algorithm": "dec_pomdp", "planner.joint_search": "global_best"},)"
       R"({"planner.algorithm": "dec_pomdp", "planner.joint_search": "local_best"}]},)"

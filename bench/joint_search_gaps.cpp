@@ -69,7 +69,8 @@ struct Options {
 };
 
 // The calls compared (kept out of line so that callgrind can count them alone).
-[[gnu::noinline]] PlanSearch comparedSearch(PlanOptimizer& optimizer, const PlanningProblem& problem,
+[[gnu::noinline]] PlanSearch comparedSearch(PlanOptimizer& optimizer,
+                                            const PlanningProblem& problem,
                                             const PlannerConfig& config, std::span<const int> order,
                                             std::span<const Plan> warm, RandomStream& rng,
                                             const SwarmShape& local) {

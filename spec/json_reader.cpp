@@ -219,7 +219,8 @@ std::vector<Field> Field::elements(std::size_t min_size, std::size_t max_size) c
   }
   // Listing 10⁶ elements, each with its path, takes seconds: a stage of its own (core/progress.h).
   std::optional<ProgressCounter> progress;
-  if (n >= kListedWithProgress) progress.emplace("listing a long array's elements", static_cast<double>(n), 65536);
+  if (n >= kListedWithProgress)
+    progress.emplace("listing a long array's elements", static_cast<double>(n), 65536);
   std::vector<Field> fields;
   fields.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {

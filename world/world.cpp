@@ -136,6 +136,17 @@ class FirstTreeOnSegment {
   Vec2 a_, b_;
 };
 
+// The first crown (in the broad phase's order) that strictly contains p.
+std::optional<int> crownContaining(const b2World& crowns, const std::vector<TreeDef>& trees,
+                                   const Vec2& p) {
+  PointInTreeCallback callback(trees, p);
+  b2AABB query;
+  query.lowerBound = toB2(p);
+  query.upperBound = toB2(p);
+  crowns.QueryAABB(&callback, query);
+  return callback.hit;
+}
+
 }  // namespace
 
 struct World::Box2d {
@@ -410,23 +421,12 @@ void World::queryAabb(const Aabb& box, std::vector<BodyRef>& out) const {
 }
 
 bool World::insideOccluder(const Vec2& p) const {
-  PointInTreeCallback callback(def_.trees, p);
-  b2AABB query;
-  query.lowerBound = toB2(p);
-  query.upperBound = toB2(p);
-  b2_->crowns.QueryAABB(&callback, query);
-  return callback.hit.has_value();
+  return crownContaining(b2_->crowns, def_.trees, p).has_value();
 }
 
 std::optional<int> World::firstOccluderOnSegment(const Vec2& a, const Vec2& b) const {
-  if ((b - a).squaredNorm() < 1e-12) {  // Box2D's ray cast needs a non-zero length
-    PointInTreeCallback callback(def_.trees, a);
-    b2AABB query;
-    query.lowerBound = toB2(a);
-    query.upperBound = toB2(a);
-    b2_->crowns.QueryAABB(&callback, query);
-    return callback.hit;
-  }
+  if ((b - a).squaredNorm() < 1e-12)  // Box2D's ray cast needs a non-zero length
+    return crownContaining(b2_->crowns, def_.trees, a);
   const b2BroadPhase& broad_phase = b2_->crowns.GetContactManager().m_broadPhase;
   FirstTreeOnSegment callback(broad_phase, def_.trees, a, b);
   b2RayCastInput input;

@@ -83,7 +83,8 @@ TEST(Progress, LoadingReportsEachLongStageAtItsIntervals) {
   EXPECT_EQ(of("checking the work budget").size(), 1u);
   // Printing the effective configuration and releasing both documents count the elements of
   // their top-level arrays (the occluders and targets among them) in steps of 1024.
-  for (const char* stage : {"writing the effective configuration", "releasing the parsed document"}) {
+  for (const char* stage :
+       {"writing the effective configuration", "releasing the parsed document"}) {
     const std::vector<Report> reported = of(stage);
     ASSERT_GE(reported.size(), 2u) << stage;
     const double total = reported.front().total;
