@@ -20,6 +20,14 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   const std::string report = slurp(dir / "report.md");
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
   EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
+  // Dec-POMDP with each joint search (README): the default block search, the paper's one swarm
+  // and the ring swarm, in Resource Allocation at H = 5.
+  for (const char* planner :
+       {"Dec-POMDP", "Dec-POMDP, the paper's one swarm", "Dec-POMDP, local-best swarm"}) {
+    EXPECT_NE(report.find("| resource_allocation | " + std::string(planner) + " | 5 |"),
+              std::string::npos)
+        << planner;
+  }
   EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
   for (const char* scenario :
        {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
