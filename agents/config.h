@@ -98,10 +98,10 @@ inline constexpr EnumNames<CostScope, 2> kCostScopeNames{{
 }};
 
 /// How Dec-POMDP and centralised planning search the joint plan (docs/design-notes.md, "Dec-POMDP's
-/// joint search"): one swarm over all 2·N·H variables, either the paper's global-best swarm or a
-/// local-best (ring) swarm with warm starts and restarts; or block coordinate descent — one swarm
-/// per UAV's 2·H variables in `order`, the others held at their current plans, for `joint_rounds`
-/// rounds — on the same joint cost.
+/// joint search"): block coordinate descent (the default) — one swarm per UAV's 2·H variables in
+/// `order`, the others held at their current plans, for `joint_rounds` rounds, every evaluation
+/// the joint cost; or one swarm over all 2·N·H variables, either the paper's global-best swarm or
+/// a local-best (ring) swarm with warm starts and restarts.
 enum class JointSearch { global_best, local_best, block_coordinate };
 inline constexpr EnumNames<JointSearch, 3> kJointSearchNames{{
     {JointSearch::global_best, "global_best"},
@@ -139,7 +139,7 @@ struct PlannerConfig {
   PsoConfig pso;
   std::vector<int> order;  // SMA planning order (UAV indices); empty: 0..N−1
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
-  JointSearch joint_search = JointSearch::global_best;  // Dec-POMDP and centralised only
+  JointSearch joint_search = JointSearch::block_coordinate;  // Dec-POMDP and centralised only
   int joint_rounds = 2;                                 // block coordinate rounds over all UAVs
   // m: a ground robot's nominal pose keeps this much more than its radius from the trunks and
   // walls of its map, and the sum of the radii plus this from another robot's intended pose

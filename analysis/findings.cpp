@@ -153,7 +153,7 @@ FailureSymptoms symptoms(const std::vector<ExperimentResult>& results,
                          const std::vector<FirstOcclusionRanking>& ranking) {
   FailureSymptoms f;
   if (const ExperimentResult* ra = findExperiment(results, "resource_allocation")) {
-    const ConfigStatistics* s = findConfig(*ra, "planner", "dec_pomdp", "planner.horizon", "5");
+    const ConfigStatistics* s = findConfig(*ra, "planner", "dec_pomdp_global", "planner.horizon", "5");
     f.single_swarm_never = s && s->stateFraction("M*", 4) == 0.0;
   }
   const std::string every_second = decisionPeriods().front().label;

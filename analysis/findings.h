@@ -91,7 +91,7 @@ std::optional<Verdict> reactsBeforeHiding(const std::vector<ReactionRow>& rows,
 
 /// Symptoms behind the findings that fail, each with the numbers that show it.
 struct FailureSymptoms {
-  bool single_swarm_never = false;  // Dec-POMDP, one swarm, H = 5: 0 trials in M* at L (RA)
+  bool single_swarm_never = false;  // Dec-POMDP, the paper's one swarm, H = 5: 0 trials in M* at L (RA)
   bool reaction_late = false;  // JE, decisions every 1 s: the a-priori onset not before 2.2 s
   bool first_occlusion_unranked = false;  // OS, decisions every 1 s: finding 5 does not hold
 };
@@ -130,8 +130,8 @@ struct PlannerVariant {
 inline constexpr PlannerVariant kPlanners[] = {
     {"sma", "sma", "SMA-NBO"},
     {"dec_pomdp", "dec_pomdp", "Dec-POMDP"},
+    {"dec_pomdp_global", "dec_pomdp", "Dec-POMDP, the paper's one swarm"},
     {"dec_pomdp_local", "dec_pomdp", "Dec-POMDP, local-best swarm"},
-    {"dec_pomdp_blocks", "dec_pomdp", "Dec-POMDP, block search"},
 };
 
 }  // namespace canopy::analysis

@@ -180,11 +180,12 @@ void writeDifferences(std::ostream& md) {
         "calibration is joint_effect_v2). "
         "scenarios/library/*.json say how each is laid out, and tests check each scenario's "
         "stated properties.\n";
-  md << "- Dec-POMDP is run three times: with the paper's single (global-best) swarm over the "
-        "joint plan, with a local-best (ring) swarm over the same plan with warm starts and "
-        "restarts, and with a block coordinate search of the same joint cost (one UAV's actions "
-        "at a time, two rounds; docs/design-notes.md), because the single swarm stalls far from "
-        "the optimum of the 2·N·H-variable problem.\n";
+  md << "- Dec-POMDP searches its joint plan by block coordinate descent (\"Dec-POMDP\": one "
+        "swarm over one UAV's actions at a time, the others held, two rounds, every evaluation "
+        "the joint cost; docs/design-notes.md), because the paper's single swarm over the "
+        "2·N·H variables stalls far from the optimum of that cost. "
+        "It is also run with the paper's single (global-best) swarm and with a local-best (ring) "
+        "swarm over the same plan with warm starts and restarts, reported beside it.\n";
   md << "- Joint Effect and Occlusion Sharing run with two decision periods: every 1 s "
         "(algorithms.md's reading of the paper's receding horizon) and at every 0.2 s "
         "simulation step with the actions still 1 s long (\"SMA-NBO generates a plan … at "
@@ -218,7 +219,7 @@ void writeWhyNot(std::ostream& md, const Findings& findings) {
   md << "## Why some findings do not reproduce (what we found, not a certainty)\n\n";
   if (swarm_never) {
     md << "- **Dec-POMDP with the paper's single swarm never reaches M\\* in Resource "
-          "Allocation**, where SMA-NBO and Dec-POMDP with the block search do. "
+          "Allocation**, where SMA-NBO and Dec-POMDP with its block search (the default) do. "
           "One swarm of 20·H particles over the 2·N·H = 20 variables of the joint plan stops, by "
           "its stall rule, far from the optimum of the same cost that per-UAV swarms reach; more "
           "particles, a longer stall window or less inertia did not close the gap "

@@ -15,9 +15,12 @@ void usageError(const std::string& what, const std::string& message) {
 
 namespace {
 
-// The whole text as a base-10 integer (no sign for unsigned types, no leading '+').
+// The whole text as a base-10 integer in JSON's grammar: digits after an optional '-' (none for
+// unsigned types), no '+', no blanks, no leading zeros ("007").
 template <class T>
 std::optional<T> wholeInteger(const std::string& text) {
+  const std::size_t first = !text.empty() && text[0] == '-' ? 1 : 0;
+  if (text.size() > first + 1 && text[first] == '0') return std::nullopt;
   T x = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
   if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
@@ -37,10 +40,6 @@ Reader<int> integerIn(int min_value, int max_value) {
 
 Reader<std::uint64_t> nonNegativeInteger() {
   return {wholeInteger<std::uint64_t>, "a non-negative integer"};
-}
-
-Reader<std::string> anyText() {
-  return {[](const std::string& text) { return std::optional<std::string>(text); }, "any text"};
 }
 
 Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range) {

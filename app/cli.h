@@ -33,8 +33,6 @@ struct Reader {
 
 Reader<int> integerIn(int min_value, int max_value);
 Reader<std::uint64_t> nonNegativeInteger();
-/// Any text (checked later, e.g. against the scenario).
-Reader<std::string> anyText();
 /// A finite number for which `in_range` holds; `expected` names the range.
 Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range);
 

@@ -66,10 +66,15 @@ class Run : public Command {
     addValue(o, "--frame-every", "K", every_, integerIn(1, 1000000), "a frame every K steps")
         ->default_str("1");
     addImageSize(o, size_, "frame size")->default_str("800 px along the view's longer side");
-    addValue(o, "--view", "aoi|action|x0,y0,x1,y1", view_, anyText(),
+    addValue(o, "--view", "aoi|action|x0,y0,x1,y1", view_,
+             Reader<std::string>{[](const std::string& text) -> std::optional<std::string> {
+                                   if (!render::isViewText(text)) return std::nullopt;
+                                   return text;
+                                 },
+                                 "aoi, action or x0,y0,x1,y1 (m) with x1 > x0 and y1 > y0"},
              "what every frame shows: the AOI, the padded box of everything that moves, or a "
              "box (m)")
-        ->default_str("action");  // checked against the scenario by render::viewFor
+        ->default_str("action");
     o.add_flag("--video", video_, "also assemble DIR/frames.mp4 with ffmpeg (Debian ffmpeg)");
     addValue(o, "--fps", "F", fps_,
              finiteNumber("frames per second in (0, 1000]",

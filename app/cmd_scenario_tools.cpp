@@ -146,7 +146,8 @@ class Forest : public Command {
     addValue(o, "--seed", "S", def_.seed, nonNegativeInteger(), "the layout's seed")
         ->default_str(std::to_string(def_.seed));
     addValue(o, "--min-gap", "G", def_.min_gap,
-             finiteNumber("a gap >= 0 (m)", [](double g) { return g >= 0.0; }),
+             finiteNumber("a gap in [0, 1e7] (m)",
+                          [](double g) { return g >= 0.0 && g <= world::kMaxTreeCoordinate; }),
              "least gap between crowns (m), Matérn type-II thinning")
         ->default_str("none");
     addLoadOptions(o, load_, /*allow_path=*/false);

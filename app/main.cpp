@@ -1,9 +1,11 @@
 // canopy: the command line. Thin: parses (CLI11), calls the libraries, prints.
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <mutex>
 #include <new>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "app/help.h"
 #include "core/output_file.h"
 #include "core/printable.h"
+#include "core/progress.h"
 #include "spec/error.h"
 
 namespace canopy::app {
@@ -85,6 +88,24 @@ std::string parseErrorMessage(const CLI::ParseError& e, const CLI::App* command)
     if (dynamic_cast<const CLI::RequiredError*>(&e)) return name + ": required, expected " + value;
   }
   return what;
+}
+
+// Long work shows how far it got: a line on stderr 2 s after the start, then every 2 s while
+// stages report (core/progress.h), from whichever thread reports.
+void showProgress(const char* stage, double done, double total) {
+  using Clock = std::chrono::steady_clock;
+  static const Clock::time_point start = Clock::now();
+  static canopy::ProgressThrottle throttle(0.0, 2.0, 2.0);
+  static std::mutex mutex;
+  const double now = std::chrono::duration<double>(Clock::now() - start).count();
+  const std::lock_guard lock(mutex);
+  if (!throttle.due(now)) return;
+  if (total > 0.0) {
+    std::fprintf(stderr, "canopy: %s: %.0f of %.0f (%.0f %%), %.0f s\n", stage, done, total,
+                 100.0 * done / total, now);
+  } else {
+    std::fprintf(stderr, "canopy: %s: %.0f, %.0f s\n", stage, done, now);
+  }
 }
 
 int unknownCommand(const std::string& word, std::span<const std::unique_ptr<Command>> commands) {
@@ -169,6 +190,8 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  showProgress("starting", 0.0, 0.0);  // the clock starts here (nothing is due yet)
+  canopy::setProgressHook(&showProgress);
   int code = kExitFailure;
   try {
     code = dispatch(argc, argv);

@@ -13,9 +13,12 @@
 //   build/release/bench/joint_search_gaps [--states 200] [--reference-runs 20] [--csv FILE]
 //       [--neighbours K] [--restart-after R] [--particles-per-step P] [--stride K]
 //       [--reference-csv FILE] [--max-iterations N] [--local-particles-per-step P]
+//       [--only SEARCH]
 // --stride K keeps every K-th saved state; --reference-csv FILE takes J* from an earlier --csv of
-// the same states (the same --states and --stride) instead of running the long runs; the other
-// options shape the local-best search.
+// the same states (the same --states and --stride) instead of running the long runs; --only SEARCH
+// runs that search alone on the states (no gaps; with --reference-runs 0, for callgrind's
+// --toggle-collect='*comparedSearch*', which counts the compared calls and nothing else); the
+// other options shape the local-best search.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -62,7 +65,16 @@ struct Options {
   int stride = 1;              // keep every stride-th saved state
   std::string reference_csv;   // J* per state from an earlier --csv (no long runs)
   bool show = false;           // print every search's plans
+  std::optional<JointSearch> only;  // run this search alone
 };
+
+// The calls compared (kept out of line so that callgrind can count them alone).
+[[gnu::noinline]] PlanSearch comparedSearch(PlanOptimizer& optimizer, const PlanningProblem& problem,
+                                            const PlannerConfig& config, std::span<const int> order,
+                                            std::span<const Plan> warm, RandomStream& rng,
+                                            const SwarmShape& local) {
+  return searchJointPlan(optimizer, problem, config, order, warm, rng, local);
+}
 
 const char* searchName(JointSearch s) {
   return nameOf(agents::kJointSearchNames, s).data();
@@ -164,11 +176,13 @@ int run(const Options& options) {
     const PlanningProblem problem = s.problem();
     double cost[kSearches];
     for (int k = 0; k < kSearches; ++k) {
+      cost[k] = 0.0;
+      if (options.only && *options.only != searches[k]) continue;
       PlannerConfig config = base.planner;
       config.joint_search = searches[k];
       RandomStream rng(s.seed, "pso.joint", static_cast<std::uint64_t>(s.epoch));
       const PlanSearch search =
-          searchJointPlan(optimizer, problem, config, order, s.warm, rng, options.local);
+          comparedSearch(optimizer, problem, config, order, s.warm, rng, options.local);
       cost[k] = search.cost;
       if (options.show) {
         std::printf("state %zu %-16s J %8.3f", index, searchName(searches[k]), search.cost);
@@ -275,13 +289,23 @@ int main(int argc, char** argv) {
       options.local.particles_per_step = canopy::integerArgument(argc, argv, i);
     } else if (a == "--reference-csv" && i + 1 < argc) {
       options.reference_csv = argv[++i];
+    } else if (a == "--only" && i + 1 < argc) {
+      const std::string name = argv[++i];
+      for (const auto& entry : canopy::agents::kJointSearchNames) {
+        if (entry.name == name) options.only = entry.value;
+      }
+      if (!options.only) {
+        std::fprintf(stderr, "--only: expected global_best, local_best or block_coordinate\n");
+        return 2;
+      }
     } else if (a == "--csv" && i + 1 < argc) {
       options.csv = argv[++i];
     } else {
       std::fprintf(stderr,
                    "usage: joint_search_gaps [--states N] [--reference-runs N] [--csv FILE] "
                    "[--neighbours K] [--restart-after R] [--particles-per-step P] [--stride K] "
-                   "[--reference-csv FILE] [--max-iterations N] [--local-particles-per-step P]\n");
+                   "[--reference-csv FILE] [--max-iterations N] [--local-particles-per-step P] "
+                   "[--only SEARCH]\n");
       return 2;
     }
   }

@@ -19,7 +19,11 @@ void TaskPool::drain(int id, const std::function<void(std::size_t)>& task, std::
   const auto parts = static_cast<std::size_t>(threads());
   const auto k = static_cast<std::size_t>(id);
   auto attempt = [&](std::size_t i) {
-    if (claimed_[i].exchange(true, std::memory_order_acq_rel)) return;
+    // A load first: the flags share a cache line, which a failed exchange would take from the
+    // other core every time.
+    if (claimed_[i].load(std::memory_order_relaxed) ||
+        claimed_[i].exchange(true, std::memory_order_acq_rel))
+      return;
     try {
       task(i);
     } catch (...) {
@@ -31,7 +35,9 @@ void TaskPool::drain(int id, const std::function<void(std::size_t)>& task, std::
   // Mine: a contiguous block, so that the threads' outputs (rows of the batch arrays) meet at
   // one cache line only.
   for (std::size_t i = k * n / parts; i < (k + 1) * n / parts; ++i) attempt(i);
-  for (std::size_t i = 0; i < n; ++i) attempt(i);  // then whatever nobody has started
+  // Then whatever nobody has started, from the end: the other blocks' last tasks, so that the
+  // tasks a slower thread is about to run stay on it.
+  for (std::size_t i = n; i-- > 0;) attempt(i);
 }
 
 namespace {
@@ -53,18 +59,24 @@ void TaskPool::work(int id) {
   std::uint64_t seen = 0;
   for (;;) {
     spinFor([&] { return generation_.load(std::memory_order_acquire) != seen; });
-    std::unique_lock lock(mutex_);
-    start_.wait(lock, [&] { return stop_ || generation_.load() != seen; });
-    if (stop_) return;
-    seen = generation_.load();
-    const std::function<void(std::size_t)>* task = task_;
-    const std::size_t n = n_;
-    if (!task) continue;  // that call has already finished
-    ++busy_;
-    lock.unlock();
+    const std::function<void(std::size_t)>* task = nullptr;
+    std::size_t n = 0;
+    {
+      std::unique_lock lock(mutex_);
+      start_.wait(lock, [&] { return stop_ || generation_.load() != seen; });
+      if (stop_) return;
+      seen = generation_.load();
+      task = task_;
+      n = n_;
+      if (!task) continue;  // that call has already finished
+      // Counted under the lock: run() clears task_ under it, once busy_ is 0.
+      busy_.fetch_add(1, std::memory_order_relaxed);
+    }
     drain(id, *task, n);
-    lock.lock();
-    --busy_;
+    // Out without the lock, so that run() can see it while spinning; then the lock taken and
+    // dropped before the notification, so that a run() between its check and its sleep is woken.
+    busy_.fetch_sub(1, std::memory_order_acq_rel);
+    { const std::lock_guard lock(mutex_); }
     finished_.notify_all();
   }
 }
@@ -82,11 +94,16 @@ void TaskPool::run(std::size_t n, const std::function<void(std::size_t)>& task) 
   }
   if (!workers_.empty() && n > 1) start_.notify_all();
   drain(0, task, n);
-  spinFor([&] { return done_.load(std::memory_order_acquire) == n; });
+  // Every task done and every worker out of drain(): spun for first, as a worker leaves drain()
+  // a few hundred ns after its last task, and sleeping on finished_ then costs a futex wake-up.
+  auto finished = [&] {
+    return done_.load(std::memory_order_acquire) == n && busy_.load(std::memory_order_acquire) == 0;
+  };
+  spinFor(finished);
   std::exception_ptr error;
   {
     std::unique_lock lock(mutex_);
-    finished_.wait(lock, [&] { return done_.load(std::memory_order_acquire) == n && busy_ == 0; });
+    finished_.wait(lock, finished);
     task_ = nullptr;
     error = error_;
   }

@@ -48,7 +48,7 @@ class TaskPool {
   std::size_t n_ = 0;
   std::vector<std::atomic<bool>> claimed_;  // per task of this call: started by someone
   std::atomic<std::size_t> done_{0};
-  int busy_ = 0;  // workers inside drain()
+  std::atomic<int> busy_{0};  // workers inside drain()
   std::exception_ptr error_;
 };
 

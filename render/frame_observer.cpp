@@ -10,6 +10,7 @@ render::SceneModel sceneModel(const spec::ScenarioSpec& spec, const Aabb& view) 
   model.aoi = spec.aoi;
   model.trees = spec.trees;
   for (const spec::UavSpec& uav : spec.uavs) {
+    model.contacts = model.contacts || uav.body.radius > 0.0;  // it can touch something
     model.sensors.push_back(uav.sensor);
     model.uav_names.push_back(uav.name);
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -41,27 +42,38 @@ Aabb actionBox(const spec::ScenarioSpec& spec) {
   return {view_lo, view_hi};
 }
 
-Aabb viewFor(const std::string& text, const spec::ScenarioSpec& spec) {
-  if (text == "aoi") return spec.aoi;
-  if (text == "action") return actionBox(spec);
+namespace {
+
+std::optional<Aabb> viewBox(const std::string& text) {
   std::vector<double> v;
   std::stringstream stream(text);
   for (std::string item; std::getline(stream, item, ',');) {
     const std::optional<double> x = strictNumber(item);
-    if (!x) {
-      v.clear();
-      break;
-    }
+    if (!x) return std::nullopt;
     v.push_back(*x);
   }
-  if (text.empty() || text.back() == ',') v.clear();
-  if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) {
+  if (text.empty() || text.back() == ',') return std::nullopt;
+  if (v.size() != 4 || !(v[2] > v[0] && v[3] > v[1])) return std::nullopt;
+  return Aabb{Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+}
+
+}  // namespace
+
+bool isViewText(const std::string& text) {
+  return text == "aoi" || text == "action" || viewBox(text).has_value();
+}
+
+Aabb viewFor(const std::string& text, const spec::ScenarioSpec& spec) {
+  if (text == "aoi") return spec.aoi;
+  if (text == "action") return actionBox(spec);
+  const std::optional<Aabb> box = viewBox(text);
+  if (!box) {
     throw spec::ScenarioError(
         "command line", "--view",
         "expected aoi, action or x0,y0,x1,y1 (m) with x1 > x0 and y1 > y0, got '" +
             printable(text, 100) + "'");
   }
-  return {Vec2(v[0], v[1]), Vec2(v[2], v[3])};
+  return *box;
 }
 
 }  // namespace canopy::render

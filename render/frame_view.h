@@ -14,6 +14,10 @@ namespace canopy::render {
 /// 2 m) on every side, and kept within the AOI. A planned UAV may leave it.
 Aabb actionBox(const spec::ScenarioSpec& spec);
 
+/// Whether `text` is in --view's grammar: "aoi", "action" or "x0,y0,x1,y1" (four numbers in JSON's
+/// grammar, x1 > x0, y1 > y0; no blanks). Checked as the command line is read.
+bool isViewText(const std::string& text);
+
 /// The region for `--view TEXT`: "aoi", "action" or "x0,y0,x1,y1" (m, x1 > x0, y1 > y0); a usage
 /// error naming --view otherwise.
 Aabb viewFor(const std::string& text, const spec::ScenarioSpec& spec);

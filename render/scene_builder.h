@@ -31,6 +31,7 @@ struct SceneModel {
   std::vector<std::string> target_names;    // optional; "T1", "T2", … when missing
   std::optional<Aabb> view;  // m, the region every frame shows (with the margin); AOI if unset
   bool plans = false;        // the UAVs plan: the legend has a "plan" entry
+  bool contacts = false;     // some agent has a body: the legend has a "contact" entry
 
   /// The region the frames show: `view`, or the AOI.
   Aabb shown() const { return view.value_or(aoi); }

@@ -24,6 +24,7 @@ std::optional<ImageSize> parseImageSize(std::string_view text) {
     int v = 0;
     const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), v);
     if (s.empty() || error != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    if (s[0] == '0' || s[0] == '-') return std::nullopt;  // plain digits: no "0800", no sign
     if (v < kMinImageSide || v > kMaxImageSide) return std::nullopt;
     return v;
   };

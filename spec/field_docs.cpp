@@ -166,8 +166,9 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"planner.cost_substeps", "",
        "samples of the nominal trajectory per action (1: the paper's cost)"},
       {"planner.joint_search", "",
-       "dec_pomdp and centralized: global_best (the paper's one swarm), local_best (one ring swarm "
-       "with warm starts and restarts) or block_coordinate"},
+       "dec_pomdp and centralized: block_coordinate (one swarm per UAV's part of the joint plan in "
+       "turn, every evaluation the joint cost), global_best (the paper's one swarm) or local_best "
+       "(one ring swarm with warm starts and restarts)"},
       {"planner.joint_rounds", "", "block_coordinate: rounds over all UAVs"},
       {"planner.order", "",
        "block_coordinate: the UAVs' order (names or indices; default their order)"},

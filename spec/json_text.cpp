@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/printable.h"
+#include "core/progress.h"
 #include "core/text_file.h"
 
 namespace canopy::spec {
@@ -24,23 +25,45 @@ std::string shortDump(const Json& value) {
 // UAV objects (bench/RESULTS.md); both are linear.
 class BoundedSax {
  public:
-  explicit BoundedSax(Json& root) : dom_(root, /*allow_exceptions=*/true) {}
+  BoundedSax(Json& root, const std::vector<ArrayLimit>& limits)
+      : dom_(root, /*allow_exceptions=*/true), limits_(limits) {}
 
-  bool null() { return dom_.null(); }
-  bool boolean(bool value) { return dom_.boolean(value); }
-  bool number_integer(Json::number_integer_t value) { return dom_.number_integer(value); }
-  bool number_unsigned(Json::number_unsigned_t value) { return dom_.number_unsigned(value); }
+  bool null() {
+    element();
+    return dom_.null();
+  }
+  bool boolean(bool value) {
+    element();
+    return dom_.boolean(value);
+  }
+  bool number_integer(Json::number_integer_t value) {
+    element();
+    return dom_.number_integer(value);
+  }
+  bool number_unsigned(Json::number_unsigned_t value) {
+    element();
+    return dom_.number_unsigned(value);
+  }
   bool number_float(Json::number_float_t value, const Json::string_t& text) {
+    element();
     return dom_.number_float(value, text);
   }
-  bool string(Json::string_t& value) { return dom_.string(value); }
-  bool binary(Json::binary_t& value) { return dom_.binary(value); }
+  bool string(Json::string_t& value) {
+    element();
+    return dom_.string(value);
+  }
+  bool binary(Json::binary_t& value) {
+    element();
+    return dom_.binary(value);
+  }
   bool start_object(std::size_t size) {
+    element();
     open(true);
     return dom_.start_object(size);
   }
   bool key(Json::string_t& key) {
     if (!keys_.back().insert(key).second) throw JsonDuplicateKey(key);
+    if (objects_.size() == 1) top_key_ = key;  // a key of the document's own object
     return dom_.key(key);
   }
   bool end_object() {
@@ -48,10 +71,24 @@ class BoundedSax {
     return dom_.end_object();
   }
   bool start_array(std::size_t size) {
+    element();
     open(false);
+    // The limited arrays: the document itself (key "") or the value of a top-level key.
+    const bool root = objects_.size() == 1;
+    const bool top_value = objects_.size() == 2 && objects_[0];
+    if (root || top_value) {
+      counted_ = nullptr;
+      for (const ArrayLimit& limit : limits_) {
+        if (root ? limit.key.empty() : !limit.key.empty() && limit.key == top_key_)
+          counted_ = &limit;
+      }
+      counted_depth_ = objects_.size();
+      count_ = 0;
+    }
     return dom_.start_array(size);
   }
   bool end_array() {
+    if (counted_ && objects_.size() == counted_depth_) counted_ = nullptr;
     close();
     return dom_.end_array();
   }
@@ -61,6 +98,15 @@ class BoundedSax {
   }
 
  private:
+  // A value starts: when its parent is the limited array, it is one more element. A large file
+  // reports how far its reading got every 2^16 values.
+  void element() {
+    if ((++values_ & 0xffff) == 0)
+      reportProgress("reading JSON (values)", static_cast<double>(values_), 0.0);
+    if (counted_ && objects_.size() == counted_depth_ && ++count_ > counted_->max_elements)
+      throw JsonArrayTooLong(*counted_);
+  }
+
   // Nesting is refused before the container is built (printing and destroying a value recurse
   // on its depth): the containers already open, as the library's callback counts them.
   void open(bool object) {
@@ -76,21 +122,28 @@ class BoundedSax {
   nlohmann::detail::json_sax_dom_parser<Json> dom_;
   std::vector<bool> objects_;                // per open container: an object (else an array)
   std::vector<std::set<std::string>> keys_;  // per open object: the keys it gave
+  const std::vector<ArrayLimit>& limits_;
+  std::string top_key_;                  // the document's key whose value is being read
+  const ArrayLimit* counted_ = nullptr;  // the limited array being read, if any
+  std::size_t counted_depth_ = 0;         // the containers open while it takes elements
+  std::size_t count_ = 0;                // its elements so far
+  std::uint64_t values_ = 0;             // values read so far
 };
 
 }  // namespace
 
-Json parseBoundedJson(const std::string& text) {
+Json parseBoundedJson(const std::string& text, const std::vector<ArrayLimit>& limits) {
   Json root;
-  BoundedSax sax(root);
+  BoundedSax sax(root, limits);
   Json::sax_parse(text, &sax, Json::input_format_t::json, /*strict=*/true,
                   /*ignore_comments=*/true);
   return root;
 }
 
-Json parseJson(const std::string& text, const std::string& file) {
+Json parseJson(const std::string& text, const std::string& file,
+               const std::vector<ArrayLimit>& limits) {
   try {
-    return parseBoundedJson(text);
+    return parseBoundedJson(text, limits);
   } catch (const Json::parse_error& e) {
     // e.what(): "[json.exception.parse_error.101] parse error at line L, column C: detail"
     std::string detail = e.what();
@@ -113,6 +166,8 @@ Json parseJson(const std::string& text, const std::string& file) {
     throw ScenarioError(file, "",
                         "invalid JSON: the key \"" + printable(e.key, 60) +
                             "\" appears twice in one object (only one value can count)");
+  } catch (const JsonArrayTooLong& e) {
+    throw ScenarioError(file, e.limit.key, e.limit.message);
   } catch (const JsonTooDeep&) {
     throw ScenarioError(file, "",
                         "expected JSON nested at most " + std::to_string(kMaxJsonDepth) +

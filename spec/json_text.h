@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "spec/error.h"
 
@@ -30,14 +31,34 @@ struct JsonDuplicateKey : std::invalid_argument {
   std::string key;
 };
 
+/// The most elements one array of a document may hold, checked while the text is parsed (before
+/// the rest of the document is built): the array that is the value of top-level key `key` (or,
+/// with key "", the document itself when it is an array). Refusing 10⁶ targets after building
+/// all of them took 4.6 s; this stops at the first element past the limit.
+struct ArrayLimit {
+  std::string key;
+  std::size_t max_elements = 0;
+  /// The message when the array is longer, e.g. budgetMessage's; the error names the field.
+  std::string message;
+};
+
+/// Thrown by parseBoundedJson for an array longer than its ArrayLimit.
+struct JsonArrayTooLong : std::length_error {
+  explicit JsonArrayTooLong(const ArrayLimit& l)
+      : std::length_error("JSON array too long"), limit(l) {}
+  ArrayLimit limit;
+};
+
 /// The JSON library's parse (comments allowed), refusing nesting deeper than kMaxJsonDepth before
 /// it is built (printing and destroying a value recurse on its depth): JsonTooDeep; a key twice
-/// in one object: JsonDuplicateKey; the library's own exceptions for anything else.
-Json parseBoundedJson(const std::string& text);
+/// in one object: JsonDuplicateKey; an array longer than its limit in `limits`:
+/// JsonArrayTooLong; the library's own exceptions for anything else.
+Json parseBoundedJson(const std::string& text, const std::vector<ArrayLimit>& limits = {});
 
 /// Parses JSON with comments, nested at most kMaxJsonDepth deep; syntax errors become ScenarioError
-/// naming file:line:column.
-Json parseJson(const std::string& text, const std::string& file);
+/// naming file:line:column; an array past its limit, a ScenarioError naming file and key.
+Json parseJson(const std::string& text, const std::string& file,
+               const std::vector<ArrayLimit>& limits = {});
 /// The text of a regular file of at most kMaxJsonBytes (never through a link, never from a FIFO);
 /// anything else is a ScenarioError naming `referenced_from` (or the path).
 std::string readJsonText(const std::string& path, const std::string& referenced_from = "");

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/printable.h"
+#include "core/progress.h"
 #include "spec/budget.h"
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
@@ -175,7 +176,7 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
       std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
       internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
     }
-    effective["occluders"] = occluders_effective;
+    effective["occluders"] = std::move(occluders_effective);
   });
   attempt([&] { internal::readTracking(root, spec); });
   attempt([&] { internal::readFusion(root, spec); });
@@ -190,24 +191,53 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
   }
   attempt([&] { root.finish(); });  // unknown top-level fields, once every section was read
   if (!errors.empty()) failed();
+  // Stages without a loop of their own report where they start (core/progress.h).
+  reportProgress("checking the work budget", 0.0, 0.0);
   checkWork(spec, options.budget_scale);
 
+  reportProgress("writing the effective configuration", 0.0, 0.0);
   spec.effective_config = effective.dump(2);
+  reportProgress("releasing the parsed document", 0.0, 0.0);
   return spec;
+}
+
+// The lists whose length alone bounds the work (spec/budget.h), counted as the text is parsed: a
+// list past its limit is refused before the rest of the document is built. A list that a --set
+// override replaces is not limited here (the override's value is checked when it is read).
+std::vector<ArrayLimit> listLimits(const LoadOptions& options) {
+  auto overridden = [&options](const std::string& key) {
+    for (const std::string& assignment : options.overrides) {
+      const std::size_t end = assignment.find_first_of(".=");
+      if (assignment.compare(0, end, key) == 0) return true;
+    }
+    return false;
+  };
+  auto fixed = [](std::size_t min_size, std::size_t max_size) {
+    return "expected an array of " + std::to_string(min_size) + " to " + std::to_string(max_size) +
+           " elements, got more than " + std::to_string(max_size) +
+           " (refused as it was read; the rest of the file was not)";
+  };
+  std::vector<ArrayLimit> limits = {
+      {"uavs", internal::kMaxUavs, fixed(1, internal::kMaxUavs)},
+      {"targets", internal::kMaxTargets, fixed(0, internal::kMaxTargets)},
+      internal::occluderListLimit(workLimits(options.budget_scale).trees)};
+  std::erase_if(limits, [&](const ArrayLimit& limit) { return overridden(limit.key); });
+  return limits;
 }
 
 }  // namespace
 
 ScenarioSpec loadScenarioText(const std::string& text, const std::string& file,
                               const LoadOptions& options) {
-  return loadDocument(parseJson(text, file), file, options,
+  return loadDocument(parseJson(text, file, listLimits(options)), file, options,
                       options.text_is_the_file ? text : std::string());
 }
 
 ScenarioSpec loadScenario(const std::string& scenario, const LoadOptions& options) {
   const fs::path path = resolveScenario(scenario);
   const std::string text = readJsonText(path.string());
-  return loadDocument(parseJson(text, path.string()), path.string(), options, text);
+  return loadDocument(parseJson(text, path.string(), listLimits(options)), path.string(), options,
+                      text);
 }
 
 namespace {

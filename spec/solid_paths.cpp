@@ -8,6 +8,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "core/progress.h"
+
 namespace canopy::spec {
 namespace {
 
@@ -131,7 +133,9 @@ class SolidIndex {
 std::vector<SolidCrossing> solidCrossings(const ScenarioSpec& spec) {
   std::vector<SolidCrossing> out;
   const SolidIndex index(spec.trees);
+  ProgressCounter progress("checking target paths", static_cast<double>(spec.targets.size()), 1024);
   for (int t = 0; t < static_cast<int>(spec.targets.size()); ++t) {
+    progress.add();
     const std::vector<Leg> legs = legsOf(spec.targets[t].path, spec.duration);
     for (int leg = 0; leg < static_cast<int>(legs.size()); ++leg) {
       for (const int k : index.near(legs[leg].a, legs[leg].b)) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/angles.h"
+#include "core/progress.h"
 #include "world/unicycle.h"
 
 namespace canopy::world {
@@ -206,7 +207,9 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
   b2BodyDef forest_def;
   forest_def.type = b2_staticBody;
   b2_->forest = w.CreateBody(&forest_def);
+  ProgressCounter progress("building the world (trees)", static_cast<double>(def_.trees.size()));
   for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
+    progress.add();
     const TreeDef& tree = def_.trees[k];
     // The loader refuses these with their field; a world built from elsewhere (Python, tests)
     // gets an exception here instead of Box2D's assertion aborting the process.

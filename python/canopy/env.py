@@ -131,13 +131,11 @@ class TrackingEnv(_ParallelEnv):
         return len(self.possible_agents)
 
     def reset(self, seed=None, options=None):
-        """Starts an episode: seed s repeats it exactly. options: None or a dict (no key is
-        read; an unknown key is a ValueError, so that a typo is not ignored)."""
-        if options is not None:
-            if not isinstance(options, dict):
-                raise ValueError(f"TrackingEnv.reset: options: expected None or a dict, got {type(options).__name__}")
-            if options:
-                raise ValueError(f"TrackingEnv.reset: options: unknown keys {sorted(options)} (none are read)")
+        """Starts an episode: seed s repeats it exactly. options: None or a dict, whose keys are
+        ignored (none is read; PettingZoo's parallel_api_test passes {"options": 1} and expects
+        it accepted)."""
+        if options is not None and not isinstance(options, dict):
+            raise ValueError(f"TrackingEnv.reset: options: expected None or a dict, got {type(options).__name__}")
         if seed is not None:
             # Gymnasium's seeds are non-negative integers; the simulation's --seed range.
             episode_seed = _args.seed(seed, "TrackingEnv.reset")
@@ -220,6 +218,22 @@ class TrackingEnv(_ParallelEnv):
             raise RuntimeError("TrackingEnv.state: call reset() first")
         s = np.concatenate([self.sim.uav_states.ravel(), self.sim.target_states.ravel()])
         return np.clip(s.astype(np.float32), self.state_space.low, self.state_space.high)
+
+    # --- pickling (SuperSuit's concat_vec_envs and RLlib's workers copy environments) --------
+    def __getstate__(self):
+        """An environment pickles as it was built, before reset(): the running simulation, the
+        seed generator and a 'human' window are not carried over."""
+        state = dict(self.__dict__)
+        for key in ("_observer", "sim", "_window", "_rng"):
+            state.pop(key, None)
+        state["agents"] = []
+        return state
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        self._observer = _canopy._Observer(self.scenario, self.max_tracks, self.max_trees,
+                                           self.map_radius, self.reward_trace)
+        self.sim, self._rng, self._window = None, None, None
 
     # --- internals --------------------------------------------------------------------------
     def _observe(self):

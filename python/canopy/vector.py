@@ -74,10 +74,10 @@ class VectorEnv:
 
     def reset(self, seed=None, options=None):
         """Starts every environment's episode. seed: None, an int s (environment i gets s + i)
-        or a sequence of n ints. Returns (observations (n, n_agents, size), infos) with
+        or a sequence of n ints; options: None or a dict, ignored. Returns (observations (n, n_agents, size), infos) with
         infos["seed"] the episodes' seeds (n,)."""
-        if options:
-            raise ValueError(f"VectorEnv.reset: options: unknown keys {sorted(options)} (none are read)")
+        if options is not None and not isinstance(options, dict):
+            raise ValueError(f"VectorEnv.reset: options: expected None or a dict (its keys are ignored), got {type(options).__name__}")
         if seed is None:
             seeds = [self._next_seed(i) for i in range(self.num_envs)]
         else:

@@ -239,8 +239,9 @@ def test_reset_with_options_and_seed_is_deterministic():
     for agent in a:
         np.testing.assert_array_equal(a[agent], b[agent])
     assert ia == ib and set(ia) == set(env.agents)
-    with pytest.raises(ValueError, match="unknown keys"):
-        env.reset(seed=1, options={"difficulty": 3})
+    c, _ = env.reset(seed=11, options={"difficulty": 3})  # keys ignored, as PettingZoo expects
+    for agent in a:
+        np.testing.assert_array_equal(a[agent], c[agent])
     with pytest.raises(ValueError, match="a dict"):
         env.reset(seed=1, options=3)
 
@@ -313,3 +314,17 @@ def test_close_ends_the_episode():
         env.step({})
     env.reset(seed=1)  # usable again after close
     assert env.agents == env.possible_agents
+
+
+def test_pickled_env_is_the_env_as_built():
+    # SuperSuit's concat_vec_envs and RLlib's workers copy environments by pickling them.
+    import pickle
+    env = _env(max_cycles=4)
+    env.reset(seed=3)
+    copy = pickle.loads(pickle.dumps(env))
+    assert copy.agents == [] and copy.sim is None and copy.max_cycles == 4
+    a, _ = env.reset(seed=8)
+    b, _ = copy.reset(seed=8)
+    for agent in a:
+        np.testing.assert_array_equal(a[agent], b[agent])
+        assert copy.observation_space(agent) == env.observation_space(agent)

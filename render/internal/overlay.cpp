@@ -84,6 +84,11 @@ std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs
   add(estimate, Ring{o, 7.0 * u, 1.5 * u, kLegendInk});
   add(estimate, Marker{o, MarkerShape::cross, 10.0 * u, 0.0, kLegendInk, palette::kWhite, u});
   add(entry("occlusion map"), Ring{o, 6.0 * u, 1.2 * u, kLegendInk});
+  if (model.contacts) {  // the ring drawn around an agent touching a trunk, wall or agent
+    std::vector<Primitive>& contact = entry("contact");
+    add(contact, Marker{o, MarkerShape::dot, 6.0 * u, 0.0, kLegendInk, kLegendInk, 0.0});
+    add(contact, Ring{o, 7.0 * u, 2.0 * u, palette::kContact});
+  }
   if (model.plans) {
     std::vector<Primitive>& plan = entry("plan");
     add(plan, Polyline{{Vec2(-8.0 * u, 0.0), Vec2(8.0 * u, 0.0)}, 1.5 * u, kLegendInk, false});

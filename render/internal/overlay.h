@@ -18,8 +18,9 @@ struct LegendEntry {
   std::vector<Primitive> symbol;  // around (0, 0), px
 };
 
-/// The legend's entries: one per UAV, then the targets, trees, estimates, occlusion map and, when
-/// the UAVs plan, plans; every entry a run can need, so that the band keeps its height.
+/// The legend's entries: one per UAV, then the targets, trees, estimates, occlusion map, contacts
+/// when an agent has a body, and plans when the UAVs plan; every entry a run can need, so that the
+/// band keeps its height.
 std::vector<LegendEntry> legendEntries(const SceneModel& model, std::size_t uavs, double u);
 
 /// Lays the entries out left to right in rows along the bottom; returns the band's height (px).

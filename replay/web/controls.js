@@ -59,6 +59,12 @@
       ctx.beginPath(); ctx.arc(13, 9, 7, 0, 2 * Math.PI); ctx.fillStyle = C.treeFill; ctx.fill();
       ctx.strokeStyle = C.treeEdge; ctx.lineWidth = 1; ctx.stroke();
     }, "tree crown or wall (truth)");
+    if (run.anyContact) {
+      entry(function (ctx) {
+        ctx.beginPath(); ctx.arc(13, 9, 6, 0, 2 * Math.PI);
+        ctx.strokeStyle = C.contact; ctx.lineWidth = 2.5; ctx.stroke();
+      }, "agent touching a trunk, wall or agent");
+    }
     entry(function (ctx) {
       ctx.fillStyle = C.shadow; ctx.fillRect(1, 1, 24, 16);
     }, "hidden from a line-of-sight camera");

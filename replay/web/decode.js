@@ -105,6 +105,7 @@ const CanopyReplay = {};
     const contacts = new Map();
     (raw.contacts || []).forEach(function (c) { contacts.set(c[0] * A + c[1], c.slice(2)); });
     run.contactsAt = function (k, i) { return contacts.get(k * A + i) || null; };
+    run.anyContact = contacts.size > 0;
     run.target = function (k, t) {
       const o = (k * T + t) * 2;
       return { x: raw.target[o], y: raw.target[o + 1] };

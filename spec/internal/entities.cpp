@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/angles.h"
+#include "core/progress.h"
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
 #include "spec/track_csv.h"
@@ -154,7 +155,7 @@ void readFov(const Field& fov_field, sensing::FootprintDef& footprint) {
 void readUavs(ObjectReader& root, ScenarioSpec& spec) {
   const Field list = root.required("uavs");
   std::set<std::string> names;
-  const std::vector<Field> elements = list.elements(1, 256);
+  const std::vector<Field> elements = list.elements(1, kMaxUavs);
   for (std::size_t i = 0; i < elements.size(); ++i) {
     ObjectReader reader = elements[i].object();
     UavSpec uav;
@@ -222,8 +223,10 @@ std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec) {
     return labels;
   }
   std::set<std::string> names;
-  const std::vector<Field> elements = list->elements(0, 100000);
+  const std::vector<Field> elements = list->elements(0, kMaxTargets);
+  ProgressCounter progress("reading targets", static_cast<double>(elements.size()), 1024);
   for (std::size_t i = 0; i < elements.size(); ++i) {
+    progress.add();
     ObjectReader reader = elements[i].object();
     TargetSpec target;
     target.name = reader.string("name", "T" + std::to_string(i + 1));

@@ -1,9 +1,11 @@
 // Reading occluder layouts: explicit discs and polygons, Poisson / grid / cluster generators,
 // and includes of layout files.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
+#include "core/progress.h"
 #include "spec/budget.h"
 #include "spec/forest.h"
 #include "spec/internal/referenced_file.h"
@@ -185,9 +187,20 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
 
 }  // namespace
 
+ArrayLimit occluderListLimit(double tree_limit) {
+  const auto most = static_cast<std::size_t>(std::floor(tree_limit));
+  return {"occluders", most,
+          "expected at most " + std::to_string(most) +
+              " occluder entries (each is at least one tree of the tree budget), this file lists "
+              "more (--budget K raises every work limit K-fold)"};
+}
+
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
                    Json& effective, std::vector<std::string>& include_stack) {
-  for (const Field& element : list.elements()) {
+  const std::vector<Field> elements = list.elements();
+  ProgressCounter progress("reading occluders", static_cast<double>(elements.size()));
+  for (const Field& element : elements) {
+    progress.add();
     Json element_out = Json::object();
     const Field item(element.json(), element.file(), element.path(), &element_out,
                      element.context());
@@ -205,7 +218,12 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
       }
       // Errors inside the included file name it, behind the field that includes it.
       try {
-        const Json document = parseJson(file.text, file.shown);
+        // Its list, like the scenario's, is refused as it is read when longer than the tree
+        // budget (each entry is at least one tree).
+        ArrayLimit as_list = occluderListLimit(treeLimit(name_field));
+        ArrayLimit wrapped_list = as_list;
+        as_list.key = "";
+        const Json document = parseJson(file.text, file.shown, {as_list, wrapped_list});
         const bool wrapped = document.is_object();
         if (wrapped) {
           ObjectReader layout = Field(document, file.shown, "", nullptr).object();
@@ -230,7 +248,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
     static const std::vector<std::string> kTypes{"disc", "polygon", "poisson", "grid", "cluster"};
     readGenerator(kTypes[reader.required("type").choice(kTypes)], reader, aoi, trees);
     reader.finish();
-    effective.push_back(element_out);
+    effective.push_back(std::move(element_out));
   }
 }
 

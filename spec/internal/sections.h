@@ -4,9 +4,17 @@
 #include <vector>
 
 #include "spec/json_reader.h"
+#include "spec/json_text.h"
 #include "spec/scenario_spec.h"
 
 namespace canopy::spec::internal {
+
+constexpr std::size_t kMaxUavs = 256;        // "uavs": 1 to kMaxUavs elements
+constexpr std::size_t kMaxTargets = 100000;  // "targets": 0 to kMaxTargets elements
+
+/// "occluders" read as the text is parsed: each entry is at least one tree of the tree budget
+/// (`tree_limit` trees), so a list of more entries is refused before it is built.
+ArrayLimit occluderListLimit(double tree_limit);
 
 /// Applies one "dotted.path=value" override to the raw document.
 void applyOverride(Json& document, const std::string& assignment);

@@ -236,7 +236,6 @@ TEST(HostileNumbers, CommandLineNumbersAreFiniteInRangeAndPlainlyWritten) {
       forest + "--radius inf",
       forest + "--radius 1,1e400",
       forest + "--radius nan",
-      forest + "--radius ' 1'",
       forest + "--radius +1",
       forest + "--radius 1x,2",
       forest + "--radius 0x10",
@@ -246,8 +245,6 @@ TEST(HostileNumbers, CommandLineNumbersAreFiniteInRangeAndPlainlyWritten) {
       forest + "--radius 1,",
       "forest --aoi 0,0,1e300,100 --lambda 0 --radius 1",
       "forest --aoi 0,0,100,100, --lambda 0 --radius 1",
-      "forest --aoi ' 0,0,100,100' --lambda 0 --radius 1",
-      "forest --aoi 0,0,100,100 --lambda ' 0.1' --radius 1",
       "forest --aoi 0,0,100,100 --lambda +0.1 --radius 1",
       "forest --aoi 0,0,100,100 --lambda 0x1p-3 --radius 1",
       "forest --aoi 0,0,100,100 --lambda infinity --radius 1",
@@ -259,8 +256,9 @@ TEST(HostileNumbers, CommandLineNumbersAreFiniteInRangeAndPlainlyWritten) {
   EXPECT_EQ(canopy(forest + "--radius 1,2.5e0").code, 0);
   EXPECT_EQ(canopy(forest + "--radius 0.5").code, 0);
 
-  // --shard: plain digits only.
-  for (const std::string shard : {"' 1/2'", "+1/2", "1/+2", "'1/ 2'", "01/2", "1/02", "-0/2",
+  // --shard: plain digits only. (Values with blanks cannot be quoted inside canopy()'s bash -c
+  // '…': option_grammar_test.cpp passes every option's blanks through execv.)
+  for (const std::string shard : {"+1/2", "1/+2", "01/2", "1/02", "-0/2",
                                   "1/2x", "0x1/2", "2/2", "1/0", "1/1000001", "1//2"}) {
     const Outcome outcome = canopy("sweep " + templates().sweep_file.string() + " --out " +
                                    (dir / "out").string() + " --shard " + shard);

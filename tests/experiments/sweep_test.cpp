@@ -183,6 +183,25 @@ TEST(Sweep, ResultsDoNotDependOnTheNumberOfThreads) {
   EXPECT_EQ(a, b);
 }
 
+// Ground robots are Box2D dynamic bodies stopped by trunks, walls and each other; their trials
+// too are the same bits at 1 and 2 threads and over 3 shards run one after another.
+TEST(Sweep, GroundRobotTrialsDoNotDependOnThreadsOrShards) {
+  const SweepSpec sweep = loadSweepText(R"({
+    "name": "robots", "scenario": "mixed_team", "trials": 2, "seed": 11,
+    "set": {"clock.duration": 6.0},
+    "axes": [{"path": "planner.occlusion_map", "values": ["dynamic", "none"]}]
+  })",
+                                        "robots.json");
+  const fs::path one = freshDir("robots1"), two = freshDir("robots2"), shards = freshDir("robots3");
+  EXPECT_EQ(runSweep(sweep, {one, 1, {}, {}}), 4);
+  EXPECT_EQ(runSweep(sweep, {two, 2, {}, {}}), 4);
+  for (int i = 0; i < 3; ++i) runSweep(sweep, {shards, 1, {}, Shard{i, 3}});
+  const auto a = trialFiles(one);
+  EXPECT_EQ(a.size(), 4u);
+  EXPECT_EQ(a, trialFiles(two));
+  EXPECT_EQ(a, trialFiles(shards));
+}
+
 TEST(Sweep, ResumingRunsOnlyTheMissingTrialsAndGivesTheSameResults) {
   const SweepSpec sweep = loadSweepText(kSweep, "small.json");
   const fs::path whole = freshDir("whole"), resumed = freshDir("resumed");

@@ -248,6 +248,23 @@ TEST(BuildScene, TheLegendAndTheViewDoNotChangeFromStepToStep) {
   EXPECT_TRUE(all<Ring>(before.world).empty());
 }
 
+// The red ring of an agent in contact has a legend entry exactly when some agent has a body.
+TEST(BuildScene, TheLegendExplainsTheContactRingWhenAnAgentHasABody) {
+  Fixture f;
+  auto labels = [&f] {
+    std::vector<std::string> out;
+    const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 534});
+    for (const Text& t : all<Text>(scene.overlay)) out.push_back(t.text);
+    return out;
+  };
+  const std::vector<std::string> without = labels();
+  EXPECT_EQ(std::find(without.begin(), without.end(), "contact"), without.end());
+  f.model.contacts = true;
+  const std::vector<std::string> with = labels();
+  EXPECT_NE(std::find(with.begin(), with.end(), "contact"), with.end());
+  EXPECT_EQ(with.size(), without.size() + 1);
+}
+
 // A view replaces the AOI as the fitted region: a 20 × 10 m box on 800 px with the default
 // 4 % margin (0.8 m each side) is 21.6 m wide, so a pixel is 21.6/800 m.
 TEST(BuildScene, TheViewIsWhatEveryFrameShows) {

@@ -232,6 +232,7 @@ TEST(DecPomdpNbo, BlockCoordinateSearchFindsCheaperJointPlansThanOneSwarm) {
   // Three UAVs, 18 variables: one swarm of 60 particles stalls far from the optimum that a swarm
   // per UAV's 6 variables reaches. Compared on the same belief over eight seeds.
   PlannerConfig swarm = config(PlannerAlgorithm::centralized);
+  swarm.joint_search = JointSearch::global_best;
   swarm.pso.max_iterations = 1000;
   PlannerConfig blocks = swarm;
   blocks.joint_search = JointSearch::block_coordinate;
@@ -299,6 +300,7 @@ TEST(DecPomdpNbo, LocalBestSearchFindsCheaperJointPlansThanTheGlobalBestSwarm) {
   // variables, the same belief over eight seeds; the ring swarm at its iteration cap against the
   // paper's swarm run to its stall rule.
   PlannerConfig global = config(PlannerAlgorithm::centralized);
+  global.joint_search = JointSearch::global_best;
   PlannerConfig local = global;
   local.joint_search = JointSearch::local_best;
   double sum_global = 0.0, sum_local = 0.0;
