@@ -59,7 +59,7 @@ class Run : public Command {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     addValue(o, "--threads", "N", threads_, integerIn(1, sim::Simulation::kMaxThreads),
              "threads that sense, track and plan the agents of each step side by side (the "
-             "same record.jsonl at any N)")
+             "same record.jsonl as one thread)")
         ->default_str("1");
     o.add_flag("--json", json_, "print summary.json on stdout instead of the short table");
     o.add_flag("--frames", frames_, "write DIR/frames/frame_NNNNNN.png");

@@ -140,6 +140,7 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
     levels = std::max(levels, level_[i] + 1);
   }
 
+  levels_ = levels;
   searches_.resize(n);
   seconds_.resize(n);
   for (int level = 0; level < levels; ++level) {

@@ -113,6 +113,10 @@ class TeamPlanner {
   const PlannerConfig& config() const { return config_; }
   /// Intention messages since the start (SMA-NBO's plans, the centralised leader's orders).
   const MessageCounts& intentionCounts() const { return links_.counts(); }
+  /// SMA-NBO: how many levels the latest epoch's agents were planned in (planSequential): 1 when
+  /// no agent's cost read a plan made earlier in the same epoch (all side by side), N when each
+  /// read its predecessor's (one after another); 0 before the first SMA epoch.
+  int levels() const { return levels_; }
 
  private:
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
@@ -143,6 +147,7 @@ class TeamPlanner {
   std::vector<int> batch_;               // the agents of one level, in order_
   std::vector<PlanSearch> searches_;
   std::vector<double> seconds_;
+  int levels_ = 0;
 };
 
 }  // namespace canopy::agents::planning
