@@ -44,7 +44,7 @@ void Team::fuse() {
   }
   fusion_.fuse(fusion_inputs_, fused_);
   const double range = config_.fusion.interest_range;
-  for (std::size_t i = 0; i < agents_.size(); ++i) {
+  forEachTask(pool_, agents_.size(), [&](std::size_t i) {
     if (std::isfinite(range)) {  // forget what lies beyond the agent's interest
       const Vec2 p = uav_states_[i].position;
       std::erase_if(fused_.targets[i], [&](const tracking::TargetTrack& t) {
@@ -55,7 +55,7 @@ void Team::fuse() {
       });
     }
     agents_[i].adoptFused(std::move(fused_.targets[i]), std::move(fused_.trees[i]));
-  }
+  });
 }
 
 std::optional<planning::TeamPlan> Team::plan(int epoch) {
@@ -77,10 +77,10 @@ std::optional<planning::TeamPlan> Team::plan(int epoch) {
 
 void Team::writeBeliefs(std::vector<AgentBelief>& out) const {
   out.resize(agents_.size());
-  for (std::size_t i = 0; i < agents_.size(); ++i) {
+  forEachTask(pool_, agents_.size(), [&](std::size_t i) {
     agents_[i].writeBelief(out[i]);
     out[i].planned_path = planned_paths_[i];
-  }
+  });
 }
 
 }  // namespace canopy::agents

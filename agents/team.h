@@ -11,6 +11,7 @@
 #include "agents/config.h"
 #include "agents/fusion/team_fusion.h"
 #include "agents/planning/team_planner.h"
+#include "core/task_pool.h"
 #include "world/tree.h"
 
 namespace canopy::agents {
@@ -35,7 +36,8 @@ class Team {
 
   /// Agent `agent`'s part of a step, for every agent before fuse(): it takes its UAV's pose now
   /// (its own navigation, taken as exact: position m, yaw rad) and runs its local JPDAF on its
-  /// scan (dt: s since the last step, 0 at the start).
+  /// scan (dt: s since the last step, 0 at the start). Touches agent `agent`'s state only:
+  /// different agents may be tracked at once, on different threads.
   void trackLocally(int agent, double dt, const Vec2& position, double yaw,
                     const sensing::Scan& scan, const sensing::Footprint& footprint);
   /// The team's fusion at the positions given to trackLocally; each agent then adopts its fused
@@ -54,6 +56,14 @@ class Team {
   /// Each agent's belief (its planned path from its latest plan), into `out` (resized to the
   /// team; its storage reused).
   void writeBeliefs(std::vector<AgentBelief>& out) const;
+
+  /// Runs the per-agent parts (the fused lists' adoption, the beliefs, the planner's independent
+  /// agents) on `pool` (nullptr: one after the other); the result is the same bits either way.
+  /// The pool must outlive the team's use of it.
+  void setPool(TaskPool* pool) {
+    pool_ = pool;
+    planner_.setPool(pool);
+  }
 
   const std::vector<Agent>& agents() const { return agents_; }
   const fusion::TeamFusion& fusion() const { return fusion_; }
@@ -74,6 +84,7 @@ class Team {
   std::vector<planning::UavState> uav_states_;  // poses from trackLocally, the rest from config
   std::vector<planning::AgentView> planning_views_;
   std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan
+  TaskPool* pool_ = nullptr;
 };
 
 }  // namespace canopy::agents

@@ -14,6 +14,7 @@
 #include "replay/replay_page.h"
 #include "sim/run.h"
 #include "sim/run_report.h"
+#include "sim/simulation.h"
 #include "spec/loader.h"
 
 namespace canopy::app {
@@ -56,6 +57,10 @@ class Run : public Command {
         ->default_str("none")
         ->allow_extra_args(false)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    addValue(o, "--threads", "N", threads_, integerIn(1, sim::Simulation::kMaxThreads),
+             "threads that sense, track and plan the agents of each step side by side (the "
+             "same record.jsonl as one thread)")
+        ->default_str("1");
     o.add_flag("--json", json_, "print summary.json on stdout instead of the short table");
     o.add_flag("--frames", frames_, "write DIR/frames/frame_NNNNNN.png");
     addValue(o, "--frame-every", "K", every_, integerIn(1, 1000000), "a frame every K steps")
@@ -89,6 +94,7 @@ class Run : public Command {
   spec::LoadOptions load_;
   bool frames_ = false, video_ = false, json_ = false, html_ = false;
   std::optional<int> every_;
+  std::optional<int> threads_;
   std::optional<double> fps_;
   std::optional<std::string> view_;
   std::optional<render::ImageSize> size_;
@@ -117,6 +123,7 @@ int Run::run() {
   sim::RunOptions options;
   options.out_dir = out_dir_;
   options.command_line = command_line_;
+  options.threads = threads_.value_or(1);
   // Without --frames nothing of the renderer is made, so no GL context is ever created.
   std::optional<render::FrameWriter> writer;
   std::optional<render::FrameObserver> frame_observer;

@@ -15,8 +15,11 @@ namespace canopy::lanes {
 
 using U4 = std::uint64_t __attribute__((vector_size(32)));  // four 64-bit words
 
-/// The state of four xoshiro256+ streams: word k of every lane in s[k].
-struct RandomLanes {
+/// The state of four xoshiro256+ streams: word k of every lane in s[k]. Aligned to 32 bytes
+/// explicitly: outside an AVX translation unit GCC gives a 32-byte vector type only 16, so a
+/// RandomLanes inside a heap object (ParticleSwarm's, in a std::vector of PlanOptimizer) could sit
+/// at an odd 16, and the AVX2 kernel's aligned loads of it (vmovdqa) fault.
+struct alignas(32) RandomLanes {
   U4 s[4];
 
   /// Four streams whose sixteen state words are the next sixteen draws of `source` (a lane whose

@@ -60,7 +60,7 @@ RunResult simulate(const spec::ScenarioSpec& spec, const RunOptions& options) {
   writeFileAtomically(options.out_dir / "manifest.json",
                       manifestJson(spec, options.command_line) + "\n");
   const auto start = std::chrono::steady_clock::now();
-  Simulation sim(spec);
+  Simulation sim(spec, options.threads);
   Recorder recorder(options.out_dir, spec);
   SummaryBuilder summary(spec);
   std::vector<StepObserver*> observers = {&recorder, &summary};

@@ -13,6 +13,7 @@ struct RunOptions {
   std::filesystem::path out_dir;         // created if missing
   std::string command_line;              // recorded in the manifest
   std::vector<StepObserver*> observers;  // after the record and summary, e.g. the frames
+  int threads = 1;  // Simulation's threads (1..Simulation::kMaxThreads): the same bits at any count
 };
 
 struct RunResult {

@@ -33,13 +33,22 @@ agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec) {
   return config;
 }
 
-Simulation::Simulation(spec::ScenarioSpec spec)
+Simulation::Simulation(spec::ScenarioSpec spec, int threads)
     : spec_(std::move(spec)),
       world_(spec_.worldDef()),
       team_(teamConfig(spec_)),
       target_labels_(spec_.targetLabels()) {
+  if (threads < 1 || threads > kMaxThreads) {
+    throw std::invalid_argument("Simulation: threads = " + std::to_string(threads) +
+                                ", expected 1.." + std::to_string(kMaxThreads));
+  }
+  if (threads > 1) {
+    pool_ = std::make_unique<TaskPool>(threads);
+    team_.setPool(pool_.get());
+  }
   const std::size_t n = spec_.uavs.size();
   for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec_.seed, "sensing", i);
+  scratch_.resize(n);
   commands_.assign(n, Vec2::Zero());
   record_.uavs.resize(n);
   record_.targets.resize(spec_.targets.size());
@@ -74,14 +83,18 @@ void Simulation::readTruth() {
   }
 }
 
-void Simulation::sense() {
-  for (std::size_t i = 0; i < record_.uavs.size(); ++i) {
+void Simulation::senseAndTrack(double dt) {
+  // UAV i's scan reads the world (const queries) and writes its own stream, scratch and record;
+  // agent i's tracker reads that scan only: the UAVs run side by side.
+  forEachTask(pool_.get(), record_.uavs.size(), [&](std::size_t i) {
     const int uav = static_cast<int>(i);
     const sensing::SensorDef& sensor = spec_.uavs[i].sensor;
-    record_.uavs[i].footprint = sensing::footprintOf(truth_, uav, sensor);
+    UavRecord& record = record_.uavs[i];
+    record.footprint = sensing::footprintOf(truth_, uav, sensor);
     sensing::sense(world_, truth_, uav, sensor, spec_.sensing, target_labels_, sensing_rng_[i],
-                   scratch_, record_.uavs[i].scan);
-  }
+                   scratch_[i], record.scan);
+    team_.trackLocally(uav, dt, record.position, record.yaw, record.scan, record.footprint);
+  });
 }
 
 void Simulation::commandScriptedUavs() {
@@ -137,11 +150,7 @@ const StepRecord& Simulation::tick() {
   if (next_step_ > 0) world_.step(spec_.dt);  // applies the commands set at the previous step
   truth_ = world_.snapshot();
   readTruth();
-  sense();
-  for (std::size_t i = 0; i < record_.uavs.size(); ++i) {
-    const UavRecord& uav = record_.uavs[i];
-    team_.trackLocally(static_cast<int>(i), dt, uav.position, uav.yaw, uav.scan, uav.footprint);
-  }
+  senseAndTrack(dt);
   team_.fuse();
   record_.plan.reset();
   if (team_.plans()) {

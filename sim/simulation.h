@@ -1,14 +1,17 @@
 #pragma once
 // The one place where a tick is wired (architecture.md, "One tick"): commands → world step →
-// truth snapshot → per UAV: footprint and scan → per agent: pose and local tracking → fusion,
+// truth snapshot → per UAV (in parallel with threads > 1): footprint, scan, pose and local
+// tracking → fusion,
 // adopted by every agent → occlusion maps → on planning epochs, the team's plan → commands for
 // the next step → the step's record. Each tick fills one StepRecord (sim/step_record.h),
 // the only thing observers see.
+#include <memory>
 #include <utility>
 #include <vector>
 
 #include "agents/team.h"
 #include "core/random.h"
+#include "core/task_pool.h"
 #include "sensing/sensor.h"
 #include "sim/step_record.h"
 #include "spec/scenario_spec.h"
@@ -22,8 +25,13 @@ agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec);
 
 class Simulation {
  public:
-  /// Keeps its own copy of the spec: a simulation built from a temporary is safe.
-  explicit Simulation(spec::ScenarioSpec spec);
+  /// Keeps its own copy of the spec: a simulation built from a temporary is safe. threads
+  /// (1..kMaxThreads, the calling thread included): how many threads sense, track and plan the
+  /// agents of a tick side by side; every record is the same bits at any count (each agent's
+  /// streams, scratch and optimiser are its own; docs/design-notes.md, "Threads inside one run").
+  /// Throws std::invalid_argument outside that range.
+  explicit Simulation(spec::ScenarioSpec spec, int threads = 1);
+  static constexpr int kMaxThreads = 256;
 
   /// Runs step k = nextStep(): for k = 0 senses the initial state, otherwise applies the
   /// commands set at step k − 1 and advances the world by dt first. Returns the step's record,
@@ -62,7 +70,7 @@ class Simulation {
 
  private:
   void readTruth();
-  void sense();
+  void senseAndTrack(double dt);
   void commandScriptedUavs();
   void commandFromPlan();
   void commandUavs();
@@ -73,7 +81,8 @@ class Simulation {
   agents::Team team_;
   std::vector<sensing::LabelId> target_labels_;
   std::vector<RandomStream> sensing_rng_;  // one "sensing" stream per UAV
-  sensing::SenseScratch scratch_;
+  std::vector<sensing::SenseScratch> scratch_;  // per UAV, so that UAVs sense on any thread
+  std::unique_ptr<TaskPool> pool_;              // threads > 1 only
   world::WorldSnapshot truth_;  // this step's, as sensing reads it
   std::vector<Vec2> commands_;  // m/s, per UAV: its planner's or path's command, before clamping
   StepRecord record_;           // this step's, refilled in place by every tick

@@ -28,25 +28,39 @@ void IntentionLinks::beginEpoch(int epoch, std::span<const UavState> uavs) {
 }
 
 void IntentionLinks::send(const IntentionMessage& message, int to) {
+  route(message.from, to, routes_);
+  post(routes_, message);
+}
+
+void IntentionLinks::route(int from, int to, std::vector<Route>& out) {
+  out.clear();
   // The first epoch whose step is at least latency_steps after this one's:
   // ⌈latency / steps_per_epoch⌉ epochs later.
   const int delay =
       (config_.latency_steps + config_.steps_per_epoch - 1) / std::max(1, config_.steps_per_epoch);
   for (int r = 0; r < agents_; ++r) {
-    if (r == message.from || (to >= 0 && r != to)) continue;
+    if (r == from || (to >= 0 && r != to)) continue;
     // As in fusion's communication graph: a link exists within range (no message otherwise);
     // a message on a link is lost with probability drop.
-    const double d2 = (positions_[r] - positions_[message.from]).squaredNorm();
+    const double d2 = (positions_[r] - positions_[from]).squaredNorm();
     if (d2 > config_.range * config_.range) continue;  // ∞ stays ∞
     ++counts_.sent;
     if (config_.drop > 0.0 && loss_[r].bernoulli(config_.drop)) {
       ++counts_.lost;
+      out.push_back({r, -1});
       continue;
     }
-    if (delay == 0) {
-      deliver(r, message);
+    out.push_back({r, epoch_ + delay});
+  }
+}
+
+void IntentionLinks::post(std::span<const Route> routes, const IntentionMessage& message) {
+  for (const Route& route : routes) {
+    if (route.arrival_epoch < 0) continue;  // lost
+    if (route.arrival_epoch == epoch_) {
+      deliver(route.receiver, message);
     } else {
-      in_flight_.push_back({r, epoch_ + delay, message});
+      in_flight_.push_back({route.receiver, route.arrival_epoch, message});
     }
   }
 }

@@ -48,8 +48,22 @@ class IntentionLinks {
 
   /// Starts planning epoch `epoch` with the UAVs where they are: delivers what is due by now.
   void beginEpoch(int epoch, std::span<const UavState> uavs);
-  /// Sends `message` to one agent `to`, or to every agent but its sender (to = −1), now.
+  /// Sends `message` to one agent `to`, or to every agent but its sender (to = −1), now:
+  /// post(route(message.from, to), message).
   void send(const IntentionMessage& message, int to = -1);
+
+  /// Where a message from `from` sent now goes (to one agent `to`, or to all but `from`): per
+  /// receiver in range, ascending, the epoch it arrives in (−1: lost). Draws the losses and counts
+  /// the messages exactly as send() does; what a message holds plays no part in where it goes, so
+  /// a planner can route this epoch's messages before it knows their plans.
+  struct Route {
+    int receiver = 0;
+    int arrival_epoch = -1;  // this epoch: delivered at once; later: in flight; −1: lost
+  };
+  void route(int from, int to, std::vector<Route>& out);
+  /// Delivers (or puts in flight) `message` along routes from route(message.from, …).
+  void post(std::span<const Route> routes, const IntentionMessage& message);
+  int epoch() const { return epoch_; }
   /// The latest plan about UAV `about` that agent `receiver` holds (epoch −1: none yet).
   const IntentionMessage& latest(int receiver, int about) const {
     return inbox_[static_cast<std::size_t>(receiver) * agents_ + about];
@@ -72,6 +86,7 @@ class IntentionLinks {
   std::vector<IntentionMessage> inbox_;  // [receiver · agents + about]
   std::vector<InFlight> in_flight_;      // in the order sent
   MessageCounts counts_;
+  std::vector<Route> routes_;  // send()'s scratch
 };
 
 }  // namespace canopy::agents::planning

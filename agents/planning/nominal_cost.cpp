@@ -21,7 +21,36 @@ namespace {
 constexpr double kReachSlack = 1e-6;  // m, rounding margin of the reachability test
 constexpr int kMaxFreeAgents = 64;    // one bit per free UAV in a reach mask
 
+// Cost scope "reach" (docs/design-notes.md): a UAV's footprint holds points within
+// reach(i) = T·v_max·τ + circumradius of its start over the horizon (speeds are clamped to
+// v_max), T = H·S samples τ = Δ/S apart.
+double reachOf(const CostSettings& s, const UavState& u) {
+  const int T = s.horizon * s.substeps;
+  const double tau = s.period / s.substeps;
+  return T * u.v_max * tau + sensing::circumradius(u.footprint);
+}
+
+// Whether p lies within reach(f) + margin of some free UAV f.
+bool nearFree(const PlanningProblem& problem, std::span<const int> free_agents, const Vec2& p,
+              double margin) {
+  for (const int f : free_agents) {
+    if ((p - problem.uavs[f].position).norm() <=
+        reachOf(problem.settings, problem.uavs[f]) + margin + kReachSlack)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+bool NominalCost::readsPlanOf(const PlanningProblem& problem, std::span<const int> free_agents,
+                              int uav) {
+  // A fixed UAV farther than reach(f) + reach(uav) from every free UAV f holds no nominal
+  // position a free UAV can reach (prepare() skips it).
+  return problem.settings.scope == CostScope::team ||
+         nearFree(problem, free_agents, problem.uavs[uav].position,
+                  reachOf(problem.settings, problem.uavs[uav]));
+}
 
 CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   CostSettings s;
@@ -96,22 +125,10 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     free_.push_back(moverOf(problem.uavs[i]));
   }
 
-  // Cost scope "reach" (docs/design-notes.md): a UAV's footprint holds points within
-  // reach(i) = T·v_max·τ + circumradius of its start over the horizon (speeds are clamped to
-  // v_max), so a fixed UAV farther than reach(f) + reach(i) from every free UAV f holds no nominal
-  // position a free UAV can reach, and a track whose nominal positions all lie beyond reach(f)
-  // plays no part in the free UAVs' choice (its stage costs do not depend on them).
+  // Cost scope "reach": a fixed UAV out of every free UAV's reach plays no part
+  // (readsPlanOf), and a track whose nominal positions all lie beyond reach(f) plays no part in
+  // the free UAVs' choice (its stage costs do not depend on them).
   const bool reach_scope = s.scope == CostScope::reach;
-  auto reachOf = [&](const UavState& u) {
-    return T * u.v_max * tau + sensing::circumradius(u.footprint);
-  };
-  auto nearFree = [&](const Vec2& p, double margin) {
-    for (const int f : free_agents) {
-      if ((p - problem.uavs[f].position).norm() <= reachOf(problem.uavs[f]) + margin + kReachSlack)
-        return true;
-    }
-    return false;
-  };
 
   // The fixed UAVs' paths and footprints over the horizon.
   n_uavs_ = n_uavs;
@@ -127,7 +144,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       penalty_uavs_.push_back(i);
       continue;
     }
-    if (reach_scope && !nearFree(problem.uavs[i].position, reachOf(problem.uavs[i]))) continue;
+    if (!readsPlanOf(problem, free_agents, i)) continue;
     penalty_uavs_.push_back(i);
     fixed.push_back(i);
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
@@ -154,7 +171,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     Vec4 x = problem.targets[j].x;
     // |z_{j,t} − p_{f,0}| ≥ |ξ_j − p_{f,0}| − T·τ·|v_j|: beyond every free UAV's reach, the track
     // is out of scope (its start_ stays T, its cost 0).
-    if (reach_scope && !nearFree(x.head<2>(), T * tau * x.tail<2>().norm())) continue;
+    if (reach_scope && !nearFree(problem, free_agents, x.head<2>(), T * tau * x.tail<2>().norm()))
+      continue;
     const Mat4& P0 = problem.targets[j].P;
     // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
     SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));

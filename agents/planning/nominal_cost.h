@@ -87,6 +87,12 @@ class NominalCost {
   /// action, an empty plan hovers), the entries of free UAVs are ignored.
   void prepare(const PlanningProblem& problem, std::span<const int> free_agents,
                std::span<const Plan> assumed);
+  /// Whether the cost reads assumed[uav] of a UAV that is not free, i.e. whether its plan can
+  /// change J: always in team scope; in reach scope only when it starts within reach(f) +
+  /// reach(uav) of some free UAV f (prepare() skips the others). The planner's threads plan
+  /// agents whose costs do not read each other's new plans side by side (team_planner.h).
+  static bool readsPlanOf(const PlanningProblem& problem, std::span<const int> free_agents,
+                          int uav);
 
   /// actions: a_{f,m} for each free UAV f (in prepare's order) and m = 1..H, agent-major
   /// (size = free count · H), m/s. Returns J (m², or mixed units with full_trace).

@@ -1,5 +1,6 @@
 #include "agents/planning/team_planner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +44,7 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
     links_ = IntentionLinks(link_config_, n, seed_);
     last_joint_.assign(n, {});
     last_joint_epoch_.assign(n, -1);
+    optimizers_.resize(n);
     order_ = config_.order;
     if (order_.empty()) {
       order_.resize(n);
@@ -72,7 +74,11 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
       planSequential(out, uavs, views);
       break;
     case PlannerAlgorithm::dec_pomdp:
-      for (const int i : order_) planJoint(out, i, uavs, views[i]);
+      // Each agent searches on its own belief, optimiser and the epoch's shared stream (a copy
+      // of its own): the agents are independent, so they run side by side; a tool observing the
+      // joint problems sees them one after the other, in order.
+      forEachTask(joint_observer_ ? nullptr : pool_, order_.size(),
+                  [&](std::size_t k) { planJoint(out, order_[k], uavs, views[order_[k]]); });
       break;
     case PlannerAlgorithm::centralized:
       planJoint(out, order_.front(), uavs, views[order_.front()]);
@@ -83,42 +89,102 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
 
 void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
                                  std::span<const AgentView> views) {
+  // The paper's loop, agent i in `order` at rank r_i, gives agent i for every other UAV j the
+  // latest plan of j that has reached it: j's new plan when r_j < r_i and the links delivered it at
+  // once ("fresh"), else what it held when the epoch began. Where a message goes does not depend
+  // on its plan, so every route is drawn first, in the order the loop sends (the same draws).
+  // Agent i's search then waits only for the fresh plans its cost reads
+  // (NominalCost::readsPlanOf): level(i) = 1 + max level(j) over those, 0 without any. The agents
+  // of one level run side by side, each on its own optimiser and stream, on exactly the inputs
+  // the loop gives them; messages, reports and deliveries follow in `order`.
   const int n = static_cast<int>(uavs.size());
   const int H = settings_.horizon;
-  std::vector<Plan> joint(n);
-  std::vector<int> joint_epoch(n, -1);
+  routes_.resize(n);
+  for (const int i : order_) links_.route(i, -1, routes_[i]);
+  rank_.resize(n);
+  for (int r = 0; r < n; ++r) rank_[order_[r]] = r;
+  fresh_.assign(static_cast<std::size_t>(n) * n, 0);  // [i·n + j]
+  for (int j = 0; j < n; ++j) {
+    for (const IntentionLinks::Route& route : routes_[j]) {
+      if (route.arrival_epoch == out.epoch && rank_[j] < rank_[route.receiver])
+        fresh_[static_cast<std::size_t>(route.receiver) * n + j] = 1;
+    }
+  }
+  auto fresh = [&](int i, int j) { return fresh_[static_cast<std::size_t>(i) * n + j] != 0; };
+  auto freshPlan = [&](int j) {
+    return shiftedPlan(searches_[j].plans.front(), actionsSince(out.epoch, out.epoch), H);
+  };
+
+  joints_.resize(n);
+  joint_epochs_.resize(n);
+  level_.assign(n, 0);
+  int levels = 0;
   for (const int i : order_) {
-    // Agent i's picture of the team: its own latest plan, and for every other UAV the latest plan
-    // that has reached it (this epoch's, from the agents before it, when the links delivered it
-    // at once), each shifted by the time elapsed.
+    std::vector<Plan>& joint = joints_[i];
+    joint.resize(n);
+    joint_epochs_[i].assign(n, -1);
+    const int self[] = {i};
+    const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
     for (int j = 0; j < n; ++j) {
+      if (fresh(i, j)) {
+        joint[j] = Plan{};  // filled once j has planned
+        joint_epochs_[i][j] = out.epoch;
+        if (NominalCost::readsPlanOf(problem, self, j)) level_[i] = std::max(level_[i], level_[j] + 1);
+        continue;
+      }
       const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
       joint[j] =
           m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
-      joint_epoch[j] = m.epoch;
+      joint_epochs_[i][j] = m.epoch;
     }
-    const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
-    const std::span<const Plan> warm =
-        own_[i].epoch < 0 ? std::span<const Plan>() : std::span<const Plan>(&joint[i], 1);
-    const int self[] = {i};
-    const Clock::time_point start = Clock::now();
-    PlanSearch search = optimizer_.optimise(problem, config_.pso, self, joint, warm, rng_[i]);
-    const double seconds = secondsSince(start);
+    levels = std::max(levels, level_[i] + 1);
+  }
 
+  levels_ = levels;
+  searches_.resize(n);
+  seconds_.resize(n);
+  for (int level = 0; level < levels; ++level) {
+    batch_.clear();
+    for (const int i : order_) {
+      if (level_[i] != level) continue;
+      batch_.push_back(i);
+      for (int j = 0; j < n; ++j) {
+        if (fresh(i, j) && level_[j] < level) joints_[i][j] = freshPlan(j);
+      }
+    }
+    forEachTask(pool_, batch_.size(), [&](std::size_t k) {
+      const int i = batch_[k];
+      const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
+      const std::span<const Plan> warm = own_[i].epoch < 0
+                                             ? std::span<const Plan>()
+                                             : std::span<const Plan>(&joints_[i][i], 1);
+      const int self[] = {i};
+      const Clock::time_point start = Clock::now();
+      searches_[i] = optimizers_[i].optimise(problem, config_.pso, self, joints_[i], warm, rng_[i]);
+      seconds_[i] = secondsSince(start);
+    });
+  }
+
+  for (const int i : order_) {
+    std::vector<Plan>& joint = joints_[i];
+    for (int j = 0; j < n; ++j) {
+      if (fresh(i, j)) joint[j] = freshPlan(j);  // as the loop's picture held it
+    }
+    const PlanSearch& search = searches_[i];
     joint[i] = search.plans.front();
-    joint_epoch[i] = out.epoch;
+    joint_epochs_[i][i] = out.epoch;
     out.plans[i] = joint[i];
     out.reports[i] = AgentPlanReport{i,
                                      joint[i],
                                      joint,
-                                     joint_epoch,
+                                     joint_epochs_[i],
                                      search.cost,
-                                     seconds,
+                                     seconds_[i],
                                      search.iterations,
                                      search.evaluations};
     out.messages.push_back(IntentionMessage{i, i, out.epoch, joint[i]});
     own_[i] = out.messages.back();
-    links_.send(out.messages.back());
+    links_.post(routes_[i], out.messages.back());
   }
 }
 
@@ -210,7 +276,7 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
       config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
   if (joint_observer_) joint_observer_(out.epoch, planner, problem, warm);
   const Clock::time_point start = Clock::now();
-  PlanSearch search = searchJointPlan(optimizer_, problem, config_, order_, warm, rng);
+  PlanSearch search = searchJointPlan(optimizers_[planner], problem, config_, order_, warm, rng);
   const double seconds = secondsSince(start);
   last_joint_[planner] = search.plans;
   last_joint_epoch_[planner] = out.epoch;

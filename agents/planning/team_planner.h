@@ -16,6 +16,7 @@
 #include "agents/planning/plan_optimizer.h"
 #include "agents/planning/uav_state.h"
 #include "core/random.h"
+#include "core/task_pool.h"
 
 namespace canopy::agents::planning {
 
@@ -103,9 +104,19 @@ class TeamPlanner {
   /// shifted.
   TeamPlan plan(int epoch, std::span<const UavState> uavs, std::span<const AgentView> views);
 
+  /// Plans independent agents side by side on `pool` (nullptr: one after the other), with the
+  /// same bits: SMA-NBO agents whose costs do not read each other's new plans (a level at a
+  /// time, planSequential), Dec-POMDP agents all at once. The pool must outlive the planner's
+  /// use of it.
+  void setPool(TaskPool* pool) { pool_ = pool; }
+
   const PlannerConfig& config() const { return config_; }
   /// Intention messages since the start (SMA-NBO's plans, the centralised leader's orders).
   const MessageCounts& intentionCounts() const { return links_.counts(); }
+  /// SMA-NBO: how many levels the latest epoch's agents were planned in (planSequential): 1 when
+  /// no agent's cost read a plan made earlier in the same epoch (all side by side), N when each
+  /// read its predecessor's (one after another); 0 before the first SMA epoch.
+  int levels() const { return levels_; }
 
  private:
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
@@ -123,8 +134,20 @@ class TeamPlanner {
   std::vector<IntentionMessage> own_;          // per agent: its own latest plan (epoch −1: none)
   std::vector<std::vector<Plan>> last_joint_;  // per agent: its previous joint plan (or empty)
   std::vector<int> last_joint_epoch_;          // per agent: the epoch of last_joint_
-  PlanOptimizer optimizer_;
+  std::vector<PlanOptimizer> optimizers_;     // per agent: its own buffers, whichever thread runs it
   JointProblemObserver joint_observer_;
+  TaskPool* pool_ = nullptr;
+  // planSequential's per-epoch scratch, by agent.
+  std::vector<std::vector<IntentionLinks::Route>> routes_;  // where its message goes
+  std::vector<int> rank_;                                   // its place in order_
+  std::vector<char> fresh_;              // [i·n + j]: j's new plan reaches i before i plans
+  std::vector<std::vector<Plan>> joints_;  // its picture of the team
+  std::vector<std::vector<int>> joint_epochs_;
+  std::vector<int> level_;               // 1 + the highest level of the fresh plans it reads
+  std::vector<int> batch_;               // the agents of one level, in order_
+  std::vector<PlanSearch> searches_;
+  std::vector<double> seconds_;
+  int levels_ = 0;
 };
 
 }  // namespace canopy::agents::planning

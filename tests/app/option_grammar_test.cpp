@@ -10,6 +10,8 @@
 
 #include <array>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -101,6 +103,7 @@ std::vector<OptionCase> optionCases(const fs::path& dir) {
   const std::vector<std::string> sweep = {"sweep", missing, "--out", (dir / "sweep").string()};
   return {
       {run, "--seed", "7"},
+      {run, "--threads", "2"},
       {run, "--frame-every", "2"},
       {run, "--size", "800x600"},
       {run, "--fps", "12.5"},
@@ -148,8 +151,44 @@ TEST(OptionGrammar, EveryValueOutsideItsOptionsGrammarIsRefusedNamingTheOption) 
       ++refused;
     }
   }
-  EXPECT_GT(refused, 24 * 17);  // every option × every form, not a loop that ran empty
+  EXPECT_GT(refused, 25 * 17);  // every option × every form, not a loop that ran empty
   EXPECT_FALSE(fs::exists(dir / "sweep"));
+  fs::remove_all(dir);
+}
+
+// --threads takes 1..256 (sim::Simulation::kMaxThreads): 0, negative, past the limit and
+// non-numbers are refused before anything runs, with exit 2 and a message naming --threads and
+// the range.
+TEST(OptionGrammar, ThreadCountsOutsideOneTo256AreRefused) {
+  const fs::path dir = fs::temp_directory_path() / "canopy_threads_option";
+  fs::remove_all(dir);
+  for (const std::string bad : {"0", "-1", "257", "99999", "abc", "2.5", "1e2"}) {
+    const Outcome outcome = canopy({"run", "demo", "--out", dir.string(), "--threads", bad});
+    EXPECT_EQ(outcome.code, 2) << bad << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("--threads: expected"), std::string::npos)
+        << bad << ": " << outcome.output;
+    EXPECT_NE(outcome.output.find("256"), std::string::npos) << bad << ": " << outcome.output;
+    EXPECT_FALSE(fs::exists(dir)) << bad;
+  }
+}
+
+// The option reaches the simulation: a short run at --threads 1 and 2 writes the same record.jsonl
+// (and both finish: exit 0).
+TEST(OptionGrammar, RunAtTwoThreadsWritesTheSameRecordAsAtOne) {
+  const fs::path dir = fs::temp_directory_path() / "canopy_threads_run";
+  fs::remove_all(dir);
+  std::string records[2];
+  for (const int threads : {1, 2}) {
+    const fs::path out = dir / std::to_string(threads);
+    const Outcome outcome =
+        canopy({"run", "mixed_team", "--set", "clock.duration=4", "--out", out.string(),
+                "--threads", std::to_string(threads)});
+    ASSERT_EQ(outcome.code, 0) << outcome.output;
+    std::ifstream in(out / "record.jsonl", std::ios::binary);
+    records[threads - 1].assign(std::istreambuf_iterator<char>(in), {});
+  }
+  EXPECT_GT(records[0].size(), 1000u);
+  EXPECT_TRUE(records[0] == records[1]) << records[0].size() << " vs " << records[1].size();
   fs::remove_all(dir);
 }
 
