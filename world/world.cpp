@@ -186,6 +186,11 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
     b2BodyDef body;
     body.type = b2_dynamicBody;
     body.fixedRotation = true;  // the heading is the command's, never the contacts'
+    // An agent with a body is a bullet: Box2D's continuous collision then stops two agents at
+    // their time of impact within a sub-step, as it stops a robot at a trunk or wall. Without it
+    // two dynamic bodies touch only once they overlap at the end of a sub-step, by up to the
+    // sub-step's closing distance (half a radius), and are pushed apart over the next ones.
+    body.bullet = agent.radius > 0.0;
     body.position = toB2(agent.start);
     body.angle = static_cast<float>(agent.yaw);
     b2Body* b = w.CreateBody(&body);

@@ -33,8 +33,9 @@ class World {
   /// them. Sub-steps Box2D so that no body exceeds Box2D's per-step motion limits and no two
   /// agents that collide and could meet close by more than half the smaller radius in one
   /// sub-step (so none passes through another); continuous collision stops a robot at a trunk or
-  /// wall at the time of impact. Each sub-step drives every agent at its command again (the
-  /// solver removes only the part into what it touches).
+  /// wall, and two agents with bodies (bullets) at each other, at the time of impact. Each
+  /// sub-step drives every agent at its command again (the solver removes only the part into
+  /// what it touches).
   void step(double dt);
 
   WorldSnapshot snapshot() const;

@@ -133,6 +133,99 @@ TEST(Contacts, UavsCommandedAtEachOtherStopAtTheirSeparation) {
   EXPECT_EQ(snap.uavs[1].contacts, (std::vector<BodyRef>{{BodyKind::uav, 0}}));
 }
 
+UavDef uavWithBody(const Vec2& start, double radius) {
+  UavDef u{start, 0.0, YawMode::fixed, 5.0};
+  u.radius = radius;
+  return u;
+}
+
+// The closest two bodies' centres came at the end of any step, and the step it was.
+struct Closest {
+  double distance = 1e9;  // m
+  int step = -1;
+};
+
+TEST(Contacts, UavsMeetingInsideAStepNeverOverlap) {
+  // Two UAVs of r = 1 m, 10.3 m apart, commanded at each other at 2 m/s: their surfaces close at
+  // 4 m/s from 8.3 m and meet after 2.075 s, inside step 11 (2.0–2.2 s) and inside one of its
+  // sub-steps (closing 0.8 m per step, half a radius per sub-step: 2 sub-steps). They stop there:
+  // centres 2r apart at x = ∓(5.15 − 2·2.075) = ∓1.0, at every later step.
+  WorldDef def = emptyWorld();
+  def.uavs.push_back(uavWithBody(Vec2(-5.15, 0), 1.0));
+  def.uavs.push_back(uavWithBody(Vec2(5.15, 0), 1.0));
+  World world(def);
+  Closest closest;
+  int first_contact = -1;
+  for (int k = 1; k <= 25; ++k) {
+    world.commandUav(0, Vec2(2, 0));
+    world.commandUav(1, Vec2(-2, 0));
+    world.step(0.2);
+    const WorldSnapshot snap = world.snapshot();
+    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
+    if (d < closest.distance) closest = {d, k};
+    if (first_contact < 0 && !snap.uavs[0].contacts.empty()) first_contact = k;
+  }
+  EXPECT_EQ(first_contact, 11);
+  EXPECT_GE(closest.distance, 2.0 - kSlop - kTol) << "at step " << closest.step;
+  const WorldSnapshot snap = world.snapshot();
+  EXPECT_NEAR(snap.uavs[0].position.x(), -1.0, kSlop + kTol);
+  EXPECT_NEAR(snap.uavs[1].position.x(), 1.0, kSlop + kTol);
+  EXPECT_NEAR(snap.uavs[0].position.y(), 0.0, 1e-6);
+}
+
+TEST(Contacts, RobotsMeetingInsideAStepNeverOverlap) {
+  // The same for two ground robots (r = 0.5 m) facing each other, 5.15 m apart, driven at 2 m/s
+  // along their headings (no turning): surfaces close at 4 m/s from 4.15 m and meet after
+  // 1.0375 s, inside step 6 (1.0–1.2 s) and inside one of its 4 sub-steps; they stop with
+  // centres 1 m apart at x = ∓(2.575 − 2·1.0375) = ∓0.5.
+  WorldDef def = emptyWorld();
+  def.uavs.push_back(robot(Vec2(-2.575, 0), 0.0));
+  def.uavs.push_back(robot(Vec2(2.575, 0), M_PI));
+  World world(def);
+  Closest closest;
+  int first_contact = -1;
+  for (int k = 1; k <= 15; ++k) {
+    world.commandUav(0, Vec2(2, 0));
+    world.commandUav(1, Vec2(-2, 0));
+    world.step(0.2);
+    const WorldSnapshot snap = world.snapshot();
+    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
+    if (d < closest.distance) closest = {d, k};
+    if (first_contact < 0 && !snap.uavs[0].contacts.empty()) first_contact = k;
+  }
+  EXPECT_EQ(first_contact, 6);
+  EXPECT_GE(closest.distance, 1.0 - kSlop - kTol) << "at step " << closest.step;
+  const WorldSnapshot snap = world.snapshot();
+  EXPECT_NEAR(snap.uavs[0].position.x(), -0.5, kSlop + kTol);
+  EXPECT_NEAR(snap.uavs[1].position.x(), 0.5, kSlop + kTol);
+}
+
+TEST(Contacts, AUavDrivenIntoAHoveringOnePushesItAtHalfItsSpeed) {
+  // A (r = 1 m) at x = −5.1 driven at 2 m/s at B (r = 1 m) hovering at 0: A's surface meets B's
+  // after (5.1 − 2)/2 = 1.55 s, inside step 8. From then on each sub-step the frictionless,
+  // inelastic contact between equal masses leaves both at (2 + 0)/2 = 1 m/s: at t = 4 s, B is
+  // at 1·(4 − 1.55) = 2.45 m and A 2 m behind it.
+  WorldDef def = emptyWorld();
+  def.uavs.push_back(uavWithBody(Vec2(-5.1, 0), 1.0));
+  def.uavs.push_back(uavWithBody(Vec2(0, 0), 1.0));
+  World world(def);
+  Closest closest;
+  for (int k = 1; k <= 20; ++k) {
+    world.commandUav(0, Vec2(2, 0));
+    world.commandUav(1, Vec2(0, 0));
+    world.step(0.2);
+    const WorldSnapshot snap = world.snapshot();
+    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
+    if (d < closest.distance) closest = {d, k};
+  }
+  EXPECT_GE(closest.distance, 2.0 - kSlop - kTol) << "at step " << closest.step;
+  const WorldSnapshot snap = world.snapshot();
+  EXPECT_NEAR(snap.uavs[1].position.x(), 2.45, kSlop + kTol);
+  EXPECT_NEAR(snap.uavs[0].position.x(), 0.45, 2 * (kSlop + kTol));
+  EXPECT_NEAR(snap.uavs[0].velocity.x(), 1.0, kTol / 0.2);
+  EXPECT_NEAR(snap.uavs[1].velocity.x(), 1.0, kTol / 0.2);
+}
+
 TEST(Contacts, UavsFlyOverWallsAndRobotsAndTargetsTouchNothing) {
   WorldDef def = emptyWorld();
   def.uavs.push_back({Vec2(0, 1), 0.0, YawMode::fixed, 5.0});  // a UAV across the wall
