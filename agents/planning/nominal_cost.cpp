@@ -6,6 +6,7 @@
 #include "agents/planning/nominal_cost.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -41,15 +42,59 @@ bool nearFree(const PlanningProblem& problem, std::span<const int> free_agents, 
   return false;
 }
 
+// Whether an agent keeps clear (a body the world collides, docs/design-notes.md): every ground
+// robot (the planner keeps even one of radius 0 clear by c) and every UAV with a radius. A body
+// keeps clear of the bodies of its own class only (world.cpp's collision filter).
+bool keepsClear(const UavState& u) {
+  return u.kind == world::AgentKind::ground || u.radius > 0.0;
+}
+bool sameClass(const UavState& a, const UavState& b) {
+  return (a.kind == world::AgentKind::ground) == (b.kind == world::AgentKind::ground);
+}
+
+// Whether fixed agent i can come within r_f + r_i + c of a free agent f that keeps clear of it
+// over the horizon: each moves at most T·τ·v_max from its start (speeds are clamped), so not
+// when |p_i − p_f| > T·τ·(v_f + v_i) + r_f + r_i + c.
+bool mayTouch(const PlanningProblem& problem, std::span<const int> free_agents, int i) {
+  const CostSettings& s = problem.settings;
+  const UavState& fixed = problem.uavs[i];
+  if (!s.keep_clear || !keepsClear(fixed)) return false;
+  const double travel = s.period * s.horizon;  // T·τ = H·Δ
+  for (const int f : free_agents) {
+    const UavState& free = problem.uavs[f];
+    if (!keepsClear(free) || !sameClass(free, fixed)) continue;
+    const double room = travel * (free.v_max + fixed.v_max) + free.radius + fixed.radius +
+                        s.clearance + kReachSlack;
+    if ((fixed.position - free.position).norm() <= room) return true;
+  }
+  return false;
+}
+
+// Whether the information cost of the free agents reads fixed agent i's plan: always in team
+// scope; in reach scope when i starts within reach(f) + reach(i) of some free agent f.
+bool informs(const PlanningProblem& problem, std::span<const int> free_agents, int i) {
+  return problem.settings.scope == CostScope::team ||
+         nearFree(problem, free_agents, problem.uavs[i].position,
+                  reachOf(problem.settings, problem.uavs[i]));
+}
+
+// Closest approach of two agents that move straight over one interval, from a relative position
+// a to b: min over s ∈ [0, 1] of |a + s·(b − a)|.
+double closestApproach(const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double s = length2 > 0.0 ? std::clamp(-a.dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + s * ab).norm();
+}
+
 }  // namespace
 
 bool NominalCost::readsPlanOf(const PlanningProblem& problem, std::span<const int> free_agents,
                               int uav) {
   // A fixed UAV farther than reach(f) + reach(uav) from every free UAV f holds no nominal
-  // position a free UAV can reach (prepare() skips it).
-  return problem.settings.scope == CostScope::team ||
-         nearFree(problem, free_agents, problem.uavs[uav].position,
-                  reachOf(problem.settings, problem.uavs[uav]));
+  // position a free UAV can reach, and one that cannot come within the separation of a free
+  // body charges no clearance (prepare() skips it).
+  return informs(problem, free_agents, uav) || mayTouch(problem, free_agents, uav);
 }
 
 CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
@@ -144,15 +189,17 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       penalty_uavs_.push_back(i);
       continue;
     }
-    if (!readsPlanOf(problem, free_agents, i)) continue;
-    penalty_uavs_.push_back(i);
-    fixed.push_back(i);
+    const bool in_scope = informs(problem, free_agents, i);
+    if (!in_scope && !mayTouch(problem, free_agents, i)) continue;
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
     fixed_movers[i] = moverOf(problem.uavs[i]);
     fly(fixed_movers[i], actions, [&](int t, const Vec2& p, const Vec2& heading) {
       fixed_pos[i * T + t] = p;
       fixed_heading[i * T + t] = heading;
     });
+    if (!in_scope) continue;  // flown for the clearance charge only (prepareClearance)
+    penalty_uavs_.push_back(i);
+    fixed.push_back(i);
     for (int lane = 0; lane < kLanes; ++lane)
       final_position_[lane * n_uavs + i] = fixed_pos[i * T + T - 1];
   }
@@ -245,38 +292,42 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }
   }
-  prepareClearance(problem, is_free, fixed_pos);
+  prepareClearance(problem, free_agents, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
   charged_.assign(penalty_uavs_.size(), 0.0);
 }
 
-void NominalCost::prepareClearance(const PlanningProblem& problem, const std::vector<char>& is_free,
+void NominalCost::prepareClearance(const PlanningProblem& problem,
+                                   std::span<const int> free_agents,
+                                   const std::vector<char>& is_free,
                                    const std::vector<Vec2>& fixed_pos) {
   const int T = horizon_ * substeps_;
   clearance_ = problem.settings.clearance;
-  free_robots_.clear();
-  fixed_robots_.clear();
+  free_keepers_.clear();
+  fixed_bodies_.clear();
   solids_near_.assign(free_.size(), {});
   if (!problem.settings.keep_clear) return;
   for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
-    if (!free_[f].ground) continue;
-    free_robots_.push_back(f);
-    if (problem.map == nullptr) continue;
+    if (!keepsClear(problem.uavs[free_agents[f]])) continue;
+    free_keepers_.push_back(f);
+    const Mover& agent = free_[f];
+    if (!agent.ground || problem.map == nullptr) continue;  // UAVs fly above trunks and walls
     // The solids it could come within r + c of: |p − p₀| ≤ v_max·H·Δ along the horizon.
-    const Mover& robot = free_[f];
-    const double reach = robot.v_max * horizon_ * period_ + robot.radius + clearance_;
+    const double reach = agent.v_max * horizon_ * period_ + agent.radius + clearance_;
     for (const world::TreeDef& tree : problem.map->trees()) {
-      if (world::solidDistance(tree, robot.position) <= reach) solids_near_[f].push_back(&tree);
+      if (world::solidDistance(tree, agent.position) <= reach) solids_near_[f].push_back(&tree);
     }
   }
-  if (free_robots_.empty()) return;
+  if (free_keepers_.empty()) return;
   for (int i = 0; i < n_uavs_; ++i) {
-    if (is_free[i] || problem.uavs[i].kind != world::AgentKind::ground) continue;
-    fixed_robots_.push_back(
-        {problem.uavs[i].radius,
-         std::vector<Vec2>(fixed_pos.begin() + static_cast<std::ptrdiff_t>(i) * T,
-                           fixed_pos.begin() + static_cast<std::ptrdiff_t>(i + 1) * T)});
+    // prepare() flew every fixed agent that may touch a free one; no other can be charged.
+    if (is_free[i] || !mayTouch(problem, free_agents, i)) continue;
+    Teammate mate{problem.uavs[i].radius, problem.uavs[i].kind == world::AgentKind::ground,
+                  {problem.uavs[i].position}};
+    mate.path.insert(mate.path.end(), fixed_pos.begin() + static_cast<std::ptrdiff_t>(i) * T,
+                     fixed_pos.begin() + static_cast<std::ptrdiff_t>(i + 1) * T);
+    fixed_bodies_.push_back(std::move(mate));
   }
 }
 
@@ -288,24 +339,30 @@ double NominalCost::clearancePenalty(int lane) const {
   auto charge = [&](double room, double distance) {
     if (distance < room) penalty += kForbidden + kPerMetre * (room - distance);
   };
-  for (std::size_t a = 0; a < free_robots_.size(); ++a) {
-    const int f = free_robots_[a];
-    const Mover& robot = free_[f];
-    const PoseLanes* poses = &free_pose_[static_cast<std::size_t>(f) * T];
-    Vec2 from = robot.position;
+  for (std::size_t a = 0; a < free_keepers_.size(); ++a) {
+    const int f = free_keepers_[a];
+    const Mover& agent = free_[f];
+    auto poseOf = [&](int g, int t) {  // free agent g at sample t, its start at t = −1
+      if (t < 0) return free_[g].position;
+      const PoseLanes& pose = free_pose_[static_cast<std::size_t>(g) * T + t];
+      return Vec2(pose.x[lane], pose.y[lane]);
+    };
     for (int t = 0; t < T; ++t) {
-      const Vec2 to(poses[t].x[lane], poses[t].y[lane]);
-      for (const world::TreeDef* solid : solids_near_[f])
-        charge(robot.radius + clearance_, world::solidDistance(*solid, from, to));
-      for (const Teammate& mate : fixed_robots_)
-        charge(robot.radius + mate.radius + clearance_, (to - mate.path[t]).norm());
-      for (std::size_t b = a + 1; b < free_robots_.size(); ++b) {
-        const int g = free_robots_[b];
-        const PoseLanes& other = free_pose_[static_cast<std::size_t>(g) * T + t];
-        charge(robot.radius + free_[g].radius + clearance_,
-               (to - Vec2(other.x[lane], other.y[lane])).norm());
+      const Vec2 from = poseOf(f, t - 1);
+      const Vec2 to = poseOf(f, t);
+      for (const world::TreeDef* solid : solids_near_[f])  // none for a UAV
+        charge(agent.radius + clearance_, world::solidDistance(*solid, from, to));
+      for (const Teammate& mate : fixed_bodies_) {
+        if (mate.ground != agent.ground) continue;
+        charge(agent.radius + mate.radius + clearance_,
+               closestApproach(from - mate.path[t], to - mate.path[t + 1]));
       }
-      from = to;
+      for (std::size_t b = a + 1; b < free_keepers_.size(); ++b) {
+        const int g = free_keepers_[b];
+        if (free_[g].ground != agent.ground) continue;
+        charge(agent.radius + free_[g].radius + clearance_,
+               closestApproach(from - poseOf(g, t - 1), to - poseOf(g, t)));
+      }
     }
   }
   return penalty;

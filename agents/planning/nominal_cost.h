@@ -74,12 +74,15 @@ struct PlanningProblem {
 /// Plans that keep clear (docs/design-notes.md): a free ground robot f of radius r_f is charged,
 /// for each sample t, the segment σ_t from its pose at the sample before to its pose at t (the
 /// unicycle drives straight between samples), each solid part s of the map (a wall's polygon, a
-/// trunk's disc) and each other robot g's intended position q_{g,t},
+/// trunk's disc) and each other robot g, which moves straight from q_{g,t−1} to its intended q_{g,t}
+/// over the same interval, so that their closest approach on it is
+/// δ_{fg,t} = min_{s∈[0,1]} |(1 − s)·(p_{f,t−1} − q_{g,t−1}) + s·(p_{f,t} − q_{g,t})|:
 ///   K₀ + K₁·(r_f + c − d(σ_t, s))          when d(σ_t, s) < r_f + c,
-///   K₀ + K₁·(r_f + r_g + c − |p_{f,t} − q_{g,t}|)  when that distance < r_f + r_g + c,
+///   K₀ + K₁·(r_f + r_g + c − δ_{fg,t})     when δ_{fg,t} < r_f + r_g + c,
 /// with K₀ = 10⁶ m² and K₁ = 10⁶ m²/m: more than any plan's information cost, so a plan that
 /// comes that close to a known solid is never chosen over one that does not, and deeper is worse.
-/// UAVs are not charged (they fly above all of it; the world keeps them apart).
+/// A UAV with a body (radius r_f > 0) is charged the second term for each other UAV with a body
+/// (they fly above every solid and every robot); UAVs of radius 0 are not charged.
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
@@ -88,8 +91,9 @@ class NominalCost {
   void prepare(const PlanningProblem& problem, std::span<const int> free_agents,
                std::span<const Plan> assumed);
   /// Whether the cost reads assumed[uav] of a UAV that is not free, i.e. whether its plan can
-  /// change J: always in team scope; in reach scope only when it starts within reach(f) +
-  /// reach(uav) of some free UAV f (prepare() skips the others). The planner's threads plan
+  /// change J: always in team scope; in reach scope when it starts within reach(f) + reach(uav)
+  /// of some free UAV f, or when it is a body that may come within the separation of a free
+  /// body of its class (prepare() skips the others). The planner's threads plan
   /// agents whose costs do not read each other's new plans side by side (team_planner.h).
   static bool readsPlanOf(const PlanningProblem& problem, std::span<const int> free_agents,
                           int uav);
@@ -150,10 +154,11 @@ class NominalCost {
   inline void evaluateBody(std::span<const Vec2> actions, std::span<double> costs);
   // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
   double addTerminalPenalty(int lane, double J);
-  // prepare()'s part for the clearance charge: the solids near each free robot, the fixed robots'
-  // intended positions (fixed_pos: every UAV's T samples, filled for the fixed ones).
-  void prepareClearance(const PlanningProblem& problem, const std::vector<char>& is_free,
-                        const std::vector<Vec2>& fixed_pos);
+  // prepare()'s part for the clearance charge: the solids near each free robot, the intended
+  // positions of the fixed bodies that may touch a free one (fixed_pos: every UAV's T samples,
+  // filled for the fixed agents prepare() flew: those in the cost's scope and those bodies).
+  void prepareClearance(const PlanningProblem& problem, std::span<const int> free_agents,
+                        const std::vector<char>& is_free, const std::vector<Vec2>& fixed_pos);
   // The clearance charge of the candidate in `lane` (free_pose_ holds its flown poses).
   double clearancePenalty(int lane) const;
 
@@ -171,16 +176,18 @@ class NominalCost {
   std::vector<int> free_index_;        // UAV index of each free UAV
   int n_uavs_ = 0;
   // Clearance: per free agent, the map's solid parts within its reach over the horizon (empty
-  // for a UAV); the other robots' intended positions, T per robot; and which free agents are
-  // robots.
+  // for a UAV); the fixed bodies' intended positions, T per body; and which free agents keep
+  // clear. A body keeps clear of the bodies of its own class: ground robots (all of them) of
+  // each other and of solids, UAVs with a radius of each other (world.cpp's collision filter).
   double clearance_ = 0.2;                                       // m, c
   std::vector<std::vector<const world::TreeDef*>> solids_near_;  // [f]
   struct Teammate {
     double radius;           // m
-    std::vector<Vec2> path;  // m, at the T samples
+    bool ground;             // its class: a ground robot, or a UAV with a body
+    std::vector<Vec2> path;  // m, its start, then its positions at the T samples
   };
-  std::vector<Teammate> fixed_robots_;  // the fixed ground robots
-  std::vector<int> free_robots_;        // the free ground robots (f)
+  std::vector<Teammate> fixed_bodies_;  // the fixed agents that keep clear
+  std::vector<int> free_keepers_;       // the free agents that keep clear (f)
 
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j

@@ -137,7 +137,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
     }
     for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
       costs[first + lane] = addTerminalPenalty(lane, J[lane]);
-      if (!free_robots_.empty()) costs[first + lane] += clearancePenalty(lane);
+      if (!free_keepers_.empty()) costs[first + lane] += clearancePenalty(lane);
     }
   }
 }

@@ -5,6 +5,7 @@
 // validate's check of scripted paths is here too (spec/solid_paths.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "sim/simulation.h"
@@ -123,6 +124,53 @@ TEST(Clearance, MixedTeamWithTheAPrioriMapHasNoContactsOver40Seeds) {
     }
   }
   EXPECT_EQ(contacts, 0);
+}
+
+// Two UAVs with bodies (r = 1 m each) close on one person from either side: the world stops them
+// at their time of impact, and their plans charge every interval on which they would come within
+// 2r + c = 2.2 m of each other (closest approach between samples included), so over 20 seeds
+// they never touch and their centres stay at least 2r apart. The control, UAVs without bodies,
+// shows that the chase does bring them within 2 m.
+std::string twoUavsOnOnePerson(double radius) {
+  const std::string r = std::to_string(radius);
+  return R"({
+    "name": "two_uavs", "aoi": [-30, -30, 30, 30], "clock": {"dt": 0.2, "duration": 20},
+    "uavs": [{"name": "west", "start": [-12, 0], "v_max": 5, "radius": )" + r + R"(,
+              "fov": {"radius": 4}},
+             {"name": "east", "start": [12, 0], "v_max": 5, "radius": )" + r + R"(,
+              "fov": {"radius": 4}}],
+    "targets": [{"name": "P", "path": {"waypoints": [{"t": 0, "p": [0, -3]},
+                                                   {"t": 20, "p": [0, 3]}]}}],
+    "tracking": {"preseed": true},
+    "planner": {"algorithm": "sma", "horizon": 3}
+  })";
+}
+
+struct Closeness {
+  long contacts = 0;      // contacts begun, both UAVs
+  double closest = 1e9;  // m, between the centres at any step
+};
+
+Closeness closeIn(double radius, int seeds) {
+  Closeness out;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    spec::LoadOptions options;
+    options.overrides = {"seed=" + std::to_string(seed)};
+    Simulation sim(spec::loadScenarioText(twoUavsOnOnePerson(radius), "two_uavs.json", options));
+    while (!sim.done()) {
+      const StepRecord& step = sim.tick();
+      for (const UavRecord& uav : step.uavs) out.contacts += uav.contacts_begun;
+      out.closest = std::min(out.closest, (step.uavs[0].position - step.uavs[1].position).norm());
+    }
+  }
+  return out;
+}
+
+TEST(Clearance, TwoUavsWithBodiesOnOnePersonNeverTouchOver20Seeds) {
+  const Closeness bodies = closeIn(1.0, 20);
+  EXPECT_EQ(bodies.contacts, 0);
+  EXPECT_GE(bodies.closest, 2.0);
+  EXPECT_LT(closeIn(0.0, 5).closest, 2.0);  // the control: without bodies they come closer
 }
 
 }  // namespace
