@@ -156,9 +156,10 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"planner.terminal_penalty", "", "add w × the distance to the tracks at the horizon's end"},
       {"planner.terminal_penalty_weight", "", "w of the terminal penalty"},
       {"planner.clearance", "m",
-       "ground robots: a nominal pose closer than radius + clearance to a trunk or wall of the "
-       "agent's map, or than the sum of the radii + clearance to another robot's intended pose "
-       "at the same sample, is charged a penalty that forbids it (docs/design-notes.md)"},
+       "ground robots: a nominal path closer than radius + clearance to a trunk or wall of the "
+       "agent's map, or than the sum of the radii + clearance to another robot's intended path "
+       "(UAVs with a radius: to another such UAV's), is charged a penalty that forbids it "
+       "(docs/design-notes.md)"},
       {"planner.cost_scope", "",
        "team (the paper's cost: every track, every UAV) or reach (only the tracks a free UAV can "
        "reach within the horizon and the teammates that can reach them; an approximation of the "
