@@ -112,6 +112,12 @@ std::string toSvg(const Figure& figure) {
   return svg.str();
 }
 
+void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill) {
+  f.shapes.emplace_back(std::in_place_type<FilledPolygon>,
+                        std::vector<Vec2>{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)},
+                        fill);
+}
+
 Colour seriesColour(int index) {
   static const Colour kColours[] = {{31, 119, 180}, {214, 39, 40},   {44, 160, 44},
                                     {255, 127, 14}, {148, 103, 189}, {23, 190, 207},

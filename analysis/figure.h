@@ -59,6 +59,12 @@ struct Figure {
 /// The figure as an SVG document.
 std::string toSvg(const Figure& figure);
 
+/// The ink of axes, ticks and text.
+inline constexpr Colour kInk{30, 30, 30};
+
+/// Adds the axis-aligned rectangle [x0, x1] × [y0, y1] filled with `fill`.
+void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill);
+
 /// A qualitative colour for series or states (repeats after 8).
 Colour seriesColour(int index);
 

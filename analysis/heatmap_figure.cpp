@@ -9,13 +9,8 @@
 namespace canopy::analysis {
 namespace {
 
-constexpr Colour kInk{30, 30, 30};
 constexpr Colour kWhite{255, 255, 255};
 constexpr Colour kMissing{225, 225, 225};
-
-void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill) {
-  f.shapes.push_back(FilledPolygon{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}, fill});
-}
 
 std::string fixed2(double x) {
   char text[32];

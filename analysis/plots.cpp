@@ -8,7 +8,6 @@
 namespace canopy::analysis {
 namespace {
 
-constexpr Colour kInk{30, 30, 30};
 constexpr Colour kGrid{200, 200, 200};
 constexpr Colour kShade{170, 170, 170, 0.45};
 
@@ -16,10 +15,6 @@ std::string percent(double fraction) {
   char text[16];
   std::snprintf(text, sizeof text, "%.0f%%", 100.0 * fraction);
   return text;
-}
-
-void addRect(Figure& f, double x0, double y0, double x1, double y1, Colour fill) {
-  f.shapes.push_back(FilledPolygon{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}, fill});
 }
 
 // A band from the vertical edge (x0, [a0, b0]) to (x1, [a1, b1]) along a smoothstep, as convex

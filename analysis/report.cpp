@@ -19,11 +19,6 @@ std::string pct(double x) {
   std::snprintf(text, sizeof text, "%.1f %%", 100.0 * x);
   return text;
 }
-std::string num(double x, const char* format = "%.2f") {
-  char text[32];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
-}
 
 }  // namespace
 

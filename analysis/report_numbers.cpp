@@ -5,6 +5,12 @@
 
 namespace canopy::analysis {
 
+std::string num(double x, const char* format) {
+  char text[32];
+  std::snprintf(text, sizeof text, format, x);
+  return text;
+}
+
 std::string percentWithInterval(const Estimate& e) {
   char text[64];
   if (!e.ci.bounded()) {  // one trial, or fewer than kMinTrialsForPoint agreeing ones

@@ -12,6 +12,9 @@ namespace canopy::analysis {
 /// The paper ran 40 trials per configuration; fewer are flagged in the report.
 constexpr int kPaperTrials = 40;
 
+/// x printed with a printf `format` for one double ("0.73").
+std::string num(double x, const char* format = "%.2f");
+
 /// "72.5 % [57.2, 83.9]": a proportion in percent with its interval in percent ("… [too few
 /// trials: 2]" when there is none).
 std::string percentWithInterval(const Estimate& e);

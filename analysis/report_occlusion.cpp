@@ -8,12 +8,6 @@
 namespace canopy::analysis {
 namespace {
 
-std::string num(double x, const char* format = "%.2f") {
-  char text[32];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
-}
-
 std::string decisionsOf(const ConfigStatistics& s) {
   const std::string period = axisText(s, "planner.replan_period");
   return period.empty() ? "1" : num(std::strtod(period.c_str(), nullptr), "%g");

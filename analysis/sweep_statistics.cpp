@@ -5,11 +5,6 @@
 #include <tuple>
 
 namespace canopy::analysis {
-namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-}  // namespace
 
 double ConfigStatistics::stateFraction(const std::string& state, int c) const {
   const auto it = std::find(states.begin(), states.end(), state);
@@ -142,9 +137,10 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
       stats.coverage_ci[t][k] = boundedMeanInterval(coverage[t][k], 0.0, std::max(stats.uavs, 1));
     }
     stats.ospa[k] = ospa[k].mean();
-    stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, kInf);
+    const double unbounded = std::numeric_limits<double>::infinity();
+    stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, unbounded);
     stats.trace[k] = trace[k].mean();
-    stats.trace_ci[k] = clipped(meanInterval(trace[k]), 0.0, kInf);
+    stats.trace_ci[k] = clipped(meanInterval(trace[k]), 0.0, unbounded);
   }
   std::sort(stats.changes.begin(), stats.changes.end(),
             [](const ChangeCount& a, const ChangeCount& b) {

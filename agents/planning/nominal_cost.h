@@ -74,8 +74,8 @@ struct PlanningProblem {
 /// Plans that keep clear (docs/design-notes.md): a free ground robot f of radius r_f is charged,
 /// for each sample t, the segment σ_t from its pose at the sample before to its pose at t (the
 /// unicycle drives straight between samples), each solid part s of the map (a wall's polygon, a
-/// trunk's disc) and each other robot g, which moves straight from q_{g,t−1} to its intended q_{g,t}
-/// over the same interval, so that their closest approach on it is
+/// trunk's disc) and each other robot g, which moves straight from q_{g,t−1} to its intended
+/// q_{g,t} over the same interval, so that their closest approach on it is
 /// δ_{fg,t} = min_{s∈[0,1]} |(1 − s)·(p_{f,t−1} − q_{g,t−1}) + s·(p_{f,t} − q_{g,t})|:
 ///   K₀ + K₁·(r_f + c − d(σ_t, s))          when d(σ_t, s) < r_f + c,
 ///   K₀ + K₁·(r_f + r_g + c − δ_{fg,t})     when δ_{fg,t} < r_f + r_g + c,
