@@ -145,6 +145,26 @@ struct Closest {
   int step = -1;
 };
 
+// Agents 0 and 1 commanded at each other along x at 2 m/s for `steps` steps of 0.2 s: the
+// closest their centres came and the first step agent 0 touched something.
+struct HeadOn {
+  Closest closest;
+  int first_contact = -1;
+};
+HeadOn driveHeadOn(World& world, int steps) {
+  HeadOn out;
+  for (int k = 1; k <= steps; ++k) {
+    world.commandUav(0, Vec2(2, 0));
+    world.commandUav(1, Vec2(-2, 0));
+    world.step(0.2);
+    const WorldSnapshot snap = world.snapshot();
+    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
+    if (d < out.closest.distance) out.closest = {d, k};
+    if (out.first_contact < 0 && !snap.uavs[0].contacts.empty()) out.first_contact = k;
+  }
+  return out;
+}
+
 TEST(Contacts, UavsMeetingInsideAStepNeverOverlap) {
   // Two UAVs of r = 1 m, 10.3 m apart, commanded at each other at 2 m/s: their surfaces close at
   // 4 m/s from 8.3 m and meet after 2.075 s, inside step 11 (2.0–2.2 s) and inside one of its
@@ -154,19 +174,9 @@ TEST(Contacts, UavsMeetingInsideAStepNeverOverlap) {
   def.uavs.push_back(uavWithBody(Vec2(-5.15, 0), 1.0));
   def.uavs.push_back(uavWithBody(Vec2(5.15, 0), 1.0));
   World world(def);
-  Closest closest;
-  int first_contact = -1;
-  for (int k = 1; k <= 25; ++k) {
-    world.commandUav(0, Vec2(2, 0));
-    world.commandUav(1, Vec2(-2, 0));
-    world.step(0.2);
-    const WorldSnapshot snap = world.snapshot();
-    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
-    if (d < closest.distance) closest = {d, k};
-    if (first_contact < 0 && !snap.uavs[0].contacts.empty()) first_contact = k;
-  }
-  EXPECT_EQ(first_contact, 11);
-  EXPECT_GE(closest.distance, 2.0 - kSlop - kTol) << "at step " << closest.step;
+  const HeadOn run = driveHeadOn(world, 25);
+  EXPECT_EQ(run.first_contact, 11);
+  EXPECT_GE(run.closest.distance, 2.0 - kSlop - kTol) << "at step " << run.closest.step;
   const WorldSnapshot snap = world.snapshot();
   EXPECT_NEAR(snap.uavs[0].position.x(), -1.0, kSlop + kTol);
   EXPECT_NEAR(snap.uavs[1].position.x(), 1.0, kSlop + kTol);
@@ -182,19 +192,9 @@ TEST(Contacts, RobotsMeetingInsideAStepNeverOverlap) {
   def.uavs.push_back(robot(Vec2(-2.575, 0), 0.0));
   def.uavs.push_back(robot(Vec2(2.575, 0), M_PI));
   World world(def);
-  Closest closest;
-  int first_contact = -1;
-  for (int k = 1; k <= 15; ++k) {
-    world.commandUav(0, Vec2(2, 0));
-    world.commandUav(1, Vec2(-2, 0));
-    world.step(0.2);
-    const WorldSnapshot snap = world.snapshot();
-    const double d = (snap.uavs[1].position - snap.uavs[0].position).norm();
-    if (d < closest.distance) closest = {d, k};
-    if (first_contact < 0 && !snap.uavs[0].contacts.empty()) first_contact = k;
-  }
-  EXPECT_EQ(first_contact, 6);
-  EXPECT_GE(closest.distance, 1.0 - kSlop - kTol) << "at step " << closest.step;
+  const HeadOn run = driveHeadOn(world, 15);
+  EXPECT_EQ(run.first_contact, 6);
+  EXPECT_GE(run.closest.distance, 1.0 - kSlop - kTol) << "at step " << run.closest.step;
   const WorldSnapshot snap = world.snapshot();
   EXPECT_NEAR(snap.uavs[0].position.x(), -0.5, kSlop + kTol);
   EXPECT_NEAR(snap.uavs[1].position.x(), 0.5, kSlop + kTol);
