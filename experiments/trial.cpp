@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <limits>
+#include <string>
 #include <nlohmann/json.hpp>
 
 #include "core/printable.h"
@@ -13,6 +16,30 @@ namespace canopy::experiments {
 namespace {
 using Json = nlohmann::json;
 constexpr int kMaxMaskTargets = 64;
+
+// Every number in `value` (a number or nested arrays of them) is an integer within [lo, hi],
+// lo ≤ 0: get<T>() of a float past T's range (a seed of 3·10¹⁹, read as a double) is undefined
+// behaviour, and of a larger integer it wraps.
+void requireIntegers(const Json& value, std::int64_t lo, std::uint64_t hi, const std::string& file,
+                     const std::string& field) {
+  if (value.is_array()) {
+    for (const Json& element : value) requireIntegers(element, lo, hi, file, field);
+    return;
+  }
+  if (!value.is_number()) return;  // get<T>() names the wrong type
+  bool in_range = false;
+  if (value.is_number_unsigned()) {
+    in_range = value.get<std::uint64_t>() <= hi;
+  } else if (value.is_number_integer()) {
+    const std::int64_t v = value.get<std::int64_t>();
+    in_range = v >= lo && (v < 0 || static_cast<std::uint64_t>(v) <= hi);
+  }
+  if (!in_range) {
+    throw spec::ScenarioError(file, field,
+                              "not a trial result: expected a whole number from " +
+                                  std::to_string(lo) + " to " + std::to_string(hi));
+  }
+}
 }  // namespace
 
 TrialCollector::TrialCollector(const spec::ScenarioSpec& spec) {
@@ -104,6 +131,16 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
   TrialResult trial;
   try {
     const Json j = spec::parseBoundedJson(text);
+    constexpr std::uint64_t kIntMax = std::numeric_limits<int>::max();
+    constexpr std::uint64_t kU64Max = std::numeric_limits<std::uint64_t>::max();
+    for (const char* field : {"uavs", "targets", "trees"}) {
+      if (j.contains(field)) requireIntegers(j.at(field), 0, kIntMax, file, field);
+    }
+    if (j.contains("tree_first_seen"))
+      requireIntegers(j.at("tree_first_seen"), -1, kIntMax, file, "tree_first_seen");
+    for (const char* field : {"seed", "visible", "in_footprint", "occluded"}) {
+      if (j.contains(field)) requireIntegers(j.at(field), 0, kU64Max, file, field);
+    }
     trial.scenario = j.at("scenario").get<std::string>();
     trial.config_id = j.at("config_id").get<std::string>();
     trial.seed = j.at("seed").get<std::uint64_t>();
