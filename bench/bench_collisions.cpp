@@ -5,7 +5,8 @@
 //
 //   BM_ForestStep16Robots/0:  16 ground robots without bodies (radius 0): no trunks are built,
 //                             nothing collides; the world as it stepped before issue 27.
-//   BM_ForestStep16Robots/1:  the same robots with bodies (radius 0.5 m) among 10⁴ trunks.
+//   BM_ForestStep16Robots/1:  the same robots with bodies (radius 0.5 m) among 10⁴ trunks, of
+//                             which the stepped world holds those near a robot (stepped_solids).
 //   BM_MixedTeamCost/R/C:     SMA-NBO cost evaluations for mixed_team's robot R (2: rover1 in the
 //                             street, 3: rover2 in the park) at its first planning epoch, a-priori
 //                             map, the other agents held to hovering; C = 0 without the clearance
@@ -61,6 +62,7 @@ void BM_ForestStep16Robots(benchmark::State& state) {
   }
   state.counters["trees"] = static_cast<double>(world.trees().size());
   state.counters["robot_steps_in_contact"] = static_cast<double>(steps_in_contact);
+  state.counters["stepped_solids"] = world.steppedSolidCount();  // at the end
 }
 BENCHMARK(BM_ForestStep16Robots)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 

@@ -10,6 +10,7 @@
 
 #include "core/angles.h"
 #include "core/progress.h"
+#include "world/near_solids.h"
 #include "world/unicycle.h"
 
 namespace canopy::world {
@@ -147,6 +148,25 @@ std::optional<int> crownContaining(const b2World& crowns, const std::vector<Tree
   return callback.hit;
 }
 
+// Tree k's solid part as a fixture of the static body `solids`: a wall's polygon or a trunk's disc.
+b2Fixture* createSolid(b2Body& solids, const TreeDef& tree, int k) {
+  if (isWall(tree)) {
+    std::vector<b2Vec2> vertices;
+    for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
+    b2PolygonShape polygon;
+    polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+    const b2FixtureDef fixture =
+        solidFixture(&polygon, BodyKind::wall, k, kSolidCategory, kGroundCategory);
+    return solids.CreateFixture(&fixture);
+  }
+  b2CircleShape trunk;
+  trunk.m_p = toB2(tree.centre);
+  trunk.m_radius = static_cast<float>(tree.trunk_radius);
+  const b2FixtureDef fixture =
+      solidFixture(&trunk, BodyKind::trunk, k, kSolidCategory, kGroundCategory);
+  return solids.CreateFixture(&fixture);
+}
+
 }  // namespace
 
 struct World::Box2d {
@@ -158,11 +178,19 @@ struct World::Box2d {
   std::vector<b2Body*> uavs;
   std::vector<b2Body*> targets;
   b2Body* forest = nullptr;  // one static body holding every tree as a fixture
-  b2Body* solids = nullptr;  // one static body holding every trunk and wall, with ground robots
+  // The trunks and walls near some ground robot with a body, as fixtures of one static body, and
+  // which those are: the stepped world holds no other, so its broad phase grows with the robots'
+  // surroundings and not with the forest (docs/design-notes.md, "Only solids near a robot are
+  // stepped").
+  b2Body* solids = nullptr;
+  std::optional<NearSolids> near_solids;
+  std::vector<b2Fixture*> solid_fixture;  // per tree: its solid part in `world`, or null
+  std::vector<int> solids_added, solids_removed;
   // step()'s per-agent scratch, kept to reuse its memory: the command each sub-step drives at,
   // the turn rate (rad/s), the position at the step's start (m), what it touched.
   std::vector<b2Vec2> velocity;
   std::vector<float> omega;
+  std::vector<int> bodied;  // the agents with a body, by x
   std::vector<Vec2> start;
   std::vector<std::vector<BodyRef>> touched;
 };
@@ -251,30 +279,14 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(std::make_unique<Box2d>()
     }
   }
 
-  // Trunks and walls, only when a ground robot with a body can touch them (UAVs fly above them).
+  // Trunks and walls, only when a ground robot with a body can touch them (UAVs fly above them);
+  // step() brings each into the world when a robot comes near it.
   if (any_ground) {
     b2BodyDef solids_def;
     solids_def.type = b2_staticBody;
     b2_->solids = w.CreateBody(&solids_def);
-    for (int k = 0; k < static_cast<int>(def_.trees.size()); ++k) {
-      const TreeDef& tree = def_.trees[k];
-      if (isWall(tree)) {
-        std::vector<b2Vec2> vertices;
-        for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
-        b2PolygonShape polygon;
-        polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
-        const b2FixtureDef fixture =
-            solidFixture(&polygon, BodyKind::wall, k, kSolidCategory, kGroundCategory);
-        b2_->solids->CreateFixture(&fixture);
-      } else if (tree.trunk_radius > 0.0) {
-        b2CircleShape trunk;
-        trunk.m_p = toB2(tree.centre);
-        trunk.m_radius = static_cast<float>(tree.trunk_radius);
-        const b2FixtureDef fixture =
-            solidFixture(&trunk, BodyKind::trunk, k, kSolidCategory, kGroundCategory);
-        b2_->solids->CreateFixture(&fixture);
-      }
-    }
+    b2_->near_solids.emplace(def_.trees);
+    b2_->solid_fixture.assign(def_.trees.size(), nullptr);
   }
 
   commands_.assign(def_.uavs.size(), Vec2::Zero());
@@ -292,6 +304,43 @@ void World::commandUav(int uav, const Vec2& velocity) {
   const double v_max = def_.uavs[uav].v_max;
   const double speed = velocity.norm();
   commands_[uav] = speed > v_max ? Vec2(velocity * (v_max / speed)) : velocity;  // |v| ≤ v_max
+}
+
+void World::keepSolidsNear(double dt) {
+  // No body moves more than twice the fastest robot's command in one step: a robot pushed by
+  // another of equal mass moves at most at the pusher's speed, the solver's corrections add
+  // millimetres (tests/world/contact_test.cpp).
+  double v_max = 0.0;  // m/s
+  for (const UavDef& agent : def_.uavs)
+    if (agent.kind == AgentKind::ground && agent.radius > 0.0) v_max = std::max(v_max, agent.v_max);
+  const double travel = 2.0 * v_max * dt;  // m
+  std::vector<int>& added = b2_->solids_added;
+  std::vector<int>& removed = b2_->solids_removed;
+  added.clear();
+  removed.clear();
+  for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
+    const UavDef& agent = def_.uavs[i];
+    if (agent.kind != AgentKind::ground || !(agent.radius > 0.0)) continue;
+    b2_->near_solids->update(static_cast<int>(i), fromB2(b2_->uavs[i]->GetPosition()),
+                             agent.radius, travel, added, removed);
+  }
+  // A solid one robot left and another reached in the same call stays where it is.
+  for (const int k : removed) {
+    b2Fixture*& fixture = b2_->solid_fixture[k];
+    if (fixture != nullptr && !b2_->near_solids->holds(k)) {
+      b2_->solids->DestroyFixture(fixture);
+      fixture = nullptr;
+    }
+  }
+  for (const int k : added) {
+    b2Fixture*& fixture = b2_->solid_fixture[k];
+    if (fixture == nullptr && b2_->near_solids->holds(k))
+      fixture = createSolid(*b2_->solids, def_.trees[k], k);
+  }
+}
+
+int World::steppedSolidCount() const {
+  return b2_->near_solids ? b2_->near_solids->heldCount() : 0;
 }
 
 void World::step(double dt) {
@@ -341,17 +390,36 @@ void World::step(double dt) {
     max_translation = std::max(max_translation, v.norm() * dt);
     max_rotation = std::max(max_rotation, std::abs(w) * dt);
   }
+  if (b2_->near_solids) keepSolidsNear(dt);
   // Two agents that collide with each other (two robots, or two UAVs with bodies) and could meet
   // during the step: sub-steps short enough that neither passes through the other. Agents far
   // apart keep the sub-steps they had (a robot meeting a trunk or wall is stopped at the time of
   // impact by continuous collision, whatever the sub-step).
+  // Only pairs closer along x than the widest reach are tested: the agents with bodies sorted by
+  // x, each against those after it within that distance (O(n log n) for a spread-out team).
+  std::vector<int>& bodied = b2_->bodied;
+  bodied.clear();
+  double widest = b2_aabbExtension;  // m: no two agents farther apart than this can meet
+  double fastest = 0.0, largest = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(def_.uavs[i].radius > 0.0)) continue;  // no body
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (def_.uavs[j].kind != def_.uavs[i].kind || !(def_.uavs[j].radius > 0.0)) continue;
+    bodied.push_back(static_cast<int>(i));
+    fastest = std::max(fastest, uav_velocity_[i].norm());
+    largest = std::max(largest, def_.uavs[i].radius);
+  }
+  widest += 2.0 * (largest + fastest * dt);
+  std::sort(bodied.begin(), bodied.end(), [&](int i, int j) {
+    return start[i].x() < start[j].x() || (start[i].x() == start[j].x() && i < j);
+  });
+  for (std::size_t a = 0; a < bodied.size(); ++a) {
+    const int i = bodied[a];
+    for (std::size_t b = a + 1; b < bodied.size(); ++b) {
+      const int j = bodied[b];
+      if (start[j].x() - start[i].x() >= widest) break;
+      if (def_.uavs[j].kind != def_.uavs[i].kind) continue;
       const double closing = (uav_velocity_[i].norm() + uav_velocity_[j].norm()) * dt;  // m
-      const double reach = def_.uavs[i].radius + def_.uavs[j].radius + closing;
-      if ((start[i] - start[j]).norm() >= reach + b2_aabbExtension) continue;
+      const double reach = def_.uavs[i].radius + def_.uavs[j].radius + closing + b2_aabbExtension;
+      if ((start[i] - start[j]).squaredNorm() >= reach * reach) continue;
       const double smaller = std::min(def_.uavs[i].radius, def_.uavs[j].radius);
       substeps =
           std::max(substeps, static_cast<int>(std::ceil(closing / (kMaxSubstepRadii * smaller))));

@@ -47,6 +47,10 @@ class World {
   /// Bodies whose Box2D fixture bounds overlap box (a superset: callers test exact geometry);
   /// crowns, not solid parts. Appends to out, in a deterministic order.
   void queryAabb(const Aabb& box, std::vector<BodyRef>& out) const;
+  /// How many trunks and walls the stepped Box2D world holds now: those near a ground robot with
+  /// a body (docs/design-notes.md, "Only solids near a robot are stepped").
+  int steppedSolidCount() const;
+
   /// True when p is strictly inside some tree crown.
   bool insideOccluder(const Vec2& p) const;
   /// The tree the segment a → b enters first (nearest a), or none.
@@ -54,6 +58,9 @@ class World {
 
  private:
   struct Box2d;  // Box2D objects, hidden from the header
+  /// Before a step: brings into the stepped world the trunks and walls a ground robot may reach
+  /// during it, and takes out those none can reach any longer.
+  void keepSolidsNear(double dt);
   WorldDef def_;
   std::unique_ptr<Box2d> b2_;
   std::vector<Vec2> commands_;                  // clamped UAV velocity commands (m/s)

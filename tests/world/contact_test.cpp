@@ -244,6 +244,56 @@ TEST(Contacts, UavsFlyOverWallsAndRobotsAndTargetsTouchNothing) {
   EXPECT_NEAR(snap.uavs[1].position.x(), 0.0, 1e-6);  // the robot was not pushed by the UAV
 }
 
+TEST(Contacts, ARobotFromFarAwayStillStopsOnTheWall) {
+  // The wall is not in the stepped world while the robot is 100 m away (only solids near a robot
+  // are); it must be there by the time the robot arrives, at 2 m/s and at 30 m/s.
+  for (const double speed : {2.0, 30.0}) {
+    WorldDef def = emptyWorld();
+    def.aoi = {Vec2(-200, -100), Vec2(100, 100)};
+    UavDef r = robot(Vec2(-100, 0), 0.0);
+    r.v_max = speed;
+    def.uavs.push_back(r);
+    def.trees.push_back(wallAtX2());
+    World world(def);
+    world.commandUav(0, Vec2(speed, 0));
+    world.step(0.5);
+    EXPECT_EQ(world.steppedSolidCount(), 0) << speed;  // the wall is out of reach
+    for (int k = 0; k < static_cast<int>(2 * 110 / speed) + 4; ++k) {
+      world.commandUav(0, Vec2(speed, 0));
+      world.step(0.5);
+    }
+    const UavState s = world.snapshot().uavs[0];
+    EXPECT_NEAR(s.position.x() + 0.5, 2.0, kSlop + kTol) << speed;
+    EXPECT_EQ(world.steppedSolidCount(), 1) << speed;
+  }
+}
+
+TEST(Contacts, AmongAThousandTrunksOnlyThoseNearTheRobotAreStepped) {
+  // A trunk every 10 m on a 32 × 32 grid; the robot drives 60 m along y = 5 (between rows).
+  WorldDef def = emptyWorld();
+  def.aoi = {Vec2(0, 0), Vec2(320, 320)};
+  for (int i = 0; i < 32; ++i)
+    for (int j = 0; j < 32; ++j) {
+      TreeDef tree = TreeDef::disc(Vec2(10.0 * i, 10.0 * j), 2.0);
+      tree.trunk_radius = 0.3;
+      def.trees.push_back(tree);
+    }
+  def.uavs.push_back(robot(Vec2(100, 5), 0.0));
+  World world(def);
+  for (int k = 0; k < 150; ++k) {
+    world.commandUav(0, Vec2(2, 0));
+    world.step(0.2);
+    // The neighbourhood is a box 2 · (0.5 + 8 + 1) = 19 m wide around a point within 8 m of the
+    // robot along its line: it meets the trunks (0.6 m wide) of 1 or 2 columns, 10 m apart, and
+    // of the rows y = 0 and 10 only (y from −4.5 to 14.5).
+    EXPECT_LE(world.steppedSolidCount(), 4) << "step " << k;
+    EXPECT_GE(world.steppedSolidCount(), 2) << "step " << k;
+  }
+  // Between the rows, 4.7 m from each trunk's rim: it touched nothing and drove 60 m.
+  EXPECT_NEAR(world.snapshot().uavs[0].position.x(), 160.0, 1e-3);
+  EXPECT_TRUE(world.snapshot().uavs[0].contacts.empty());
+}
+
 TEST(Contacts, SameCommandsSameBits) {
   auto run = [] {
     WorldDef def = emptyWorld();
