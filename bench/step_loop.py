@@ -9,7 +9,9 @@ One untimed warm-up run comes first; callgrind slopes (runs N2 − N1) cancel it
 canopy.VectorEnv(N, SCENARIO) (planner off unless --keep-planner) stepped STEPS times with zero
 actions (autoresets included) on one thread and on one thread per core, PAIRS alternating pairs
 of timings: prints the env-steps per second of each (median and best of the pairs) and the
-median of the pair ratios.
+median of the pair ratios. Each round also times one thread pinned to each core in turn: the
+threads' rate over the sum of those is the share of the machine they use, which holds when the
+cores differ in speed (a virtual machine's may: one core 1.65× slower than the other, measured).
 
     PYTHONPATH=... /usr/bin/python3 bench/step_loop.py --vector-once N SCENARIO STEPS THREADS
 
@@ -71,27 +73,46 @@ def env_loop(name, runs, seed):
 
 
 def vector(n, name, steps, pairs, keep_planner=False):
+    import os
+
     import numpy as np
 
     envs = {label: canopy.VectorEnv(n, name, threads=threads, keep_planner=keep_planner)
             for label, threads in (("1 thread", 1), ("threads", None))}
     zero = np.zeros(envs["threads"].action_space.shape)
+    cores = sorted(os.sched_getaffinity(0))
     rates = {label: [] for label in envs}
+    on_core = {c: [] for c in cores}  # one thread, pinned to core c
+
+    def rate(env):
+        env.reset(seed=0)
+        env.step(zero)  # warm-up step: first-touch of the buffers
+        t0 = time.perf_counter()
+        for _ in range(steps):
+            env.step(zero)
+        return n * steps / (time.perf_counter() - t0)
+
     for _ in range(pairs):
         for label, env in envs.items():
-            env.reset(seed=0)
-            env.step(zero)  # warm-up step: first-touch of the buffers
-            t0 = time.perf_counter()
-            for _ in range(steps):
-                env.step(zero)
-            rates[label].append(n * steps / (time.perf_counter() - t0))
+            rates[label].append(rate(env))
+        for c in cores:
+            os.sched_setaffinity(0, {c})
+            on_core[c].append(rate(envs["1 thread"]))
+        os.sched_setaffinity(0, cores)
     ratios = [b / a for a, b in zip(rates["1 thread"], rates["threads"])]
+    # Against the sum of what one thread does on each core: the share of the cores' capacity the
+    # threads use, which does not depend on the cores being equally fast.
+    efficiency = [t / sum(on_core[c][k] for c in cores) for k, t in enumerate(rates["threads"])]
     print(f"VectorEnv({n}, {name!r}): {steps} steps x {pairs} pairs; "
           f"threads = {envs['threads'].threads}")
     for label, r in rates.items():
         print(f"  {label:9}: env-steps/s median {statistics.median(r):9.0f}, best {max(r):9.0f}")
+    for c, r in on_core.items():
+        print(f"  on core {c} : env-steps/s median {statistics.median(r):9.0f}, best {max(r):9.0f}")
     print(f"  speed-up: median of pair ratios {statistics.median(ratios):.3f}, "
           f"best/best {max(rates['threads']) / max(rates['1 thread']):.3f}")
+    print(f"  threads' rate / sum of one thread's rate on each core: median "
+          f"{statistics.median(efficiency):.3f} (× {len(cores)} = the speed-up on equal cores)")
 
 
 if __name__ == "__main__":
