@@ -7,9 +7,15 @@
 Gymnasium's vector conventions (``num_envs``, ``single_observation_space`` /
 ``single_action_space`` per environment, ``observation_space`` / ``action_space`` batched), with
 the agents as the second axis: rewards, terminations and truncations are (n, n_agents) arrays.
-An environment whose episode ends is reset in the same call (autoreset, as Gymnasium ≤ 0.29
-and SuperSuit): its row of the returned observations is then the new episode's first one, and
-``infos["final_observation"]`` (masked by ``infos["_final_observation"]``) holds its last one.
+An environment whose episode ends is reset in the same call (same-step autoreset, as Gymnasium
+≤ 0.29, SuperSuit and Gymnasium 1.x's ``AutoresetMode.SAME_STEP``): its row of the returned
+observations is then the new episode's first one, and its last one is in the infos under both
+generations' names: ``infos["final_observation"]`` (the batch, masked by
+``infos["_final_observation"]``, Gymnasium ≤ 0.29) and ``infos["final_obs"]`` (an object array
+holding that environment's observation where the mask ``infos["_final_obs"]`` is set, None
+elsewhere) with ``infos["final_info"]`` / ``infos["_final_info"]`` (Gymnasium 1.x).
+``metadata["autoreset_mode"]`` is ``gymnasium.vector.AutoresetMode.SAME_STEP`` where that exists,
+else its value ``"SameStep"``.
 
 Environment i behaves exactly as ``TrackingEnv`` with the same arguments reset with seed
 ``seed + i`` (or ``seed[i]``), and after an episode ends with ``reset()``: the same observations
@@ -21,6 +27,12 @@ import numpy as np
 from . import _canopy
 from .env import TrackingEnv
 from .spaces import box
+
+try:  # Gymnasium 1.x names its autoreset modes; older versions and its absence get the value
+    from gymnasium.vector import AutoresetMode as _AutoresetMode
+    _SAME_STEP = _AutoresetMode.SAME_STEP
+except ImportError:
+    _SAME_STEP = "SameStep"
 
 
 class VectorEnv:
@@ -43,7 +55,7 @@ class VectorEnv:
         self.possible_agents = list(env.possible_agents)
         self.agents = list(env.possible_agents)
         self.max_cycles = env.max_cycles
-        self.metadata = dict(env.metadata, autoreset_mode="same-step")
+        self.metadata = dict(env.metadata, autoreset_mode=_SAME_STEP)
         self._core = _canopy._VectorCore(env.scenario, self.num_envs, env._observer,
                                          env.max_cycles, 0 if threads is None else int(threads))
         self.threads = self._core.threads
@@ -94,7 +106,8 @@ class VectorEnv:
         """actions: (n, n_agents, 2) velocities (m/s). Returns observations (n, n_agents, size)
         float32, rewards (n, n_agents) float64, terminations and truncations (n, n_agents) bool
         and infos: "step" (n,) the step each environment reached, and for environments whose
-        episode ended (and was reset) "_final_observation" (n,) bool, "final_observation" and
+        episode ended (and was reset) "_final_observation" (n,) bool, "final_observation",
+        "final_obs" / "_final_obs" and "final_info" / "_final_info" (Gymnasium 1.x's names) and
         "seed" (the new episodes' seeds)."""
         if not self._started:
             raise RuntimeError("VectorEnv.step: call reset() first")
@@ -108,6 +121,12 @@ class VectorEnv:
         if ended.any():
             infos["final_observation"] = observations
             infos["_final_observation"] = ended
+            final_obs = np.full(self.num_envs, None, dtype=object)
+            for i in np.flatnonzero(ended):
+                final_obs[i] = observations[i]
+            infos["final_obs"], infos["_final_obs"] = final_obs, ended
+            infos["final_info"] = {"step": steps, "_step": ended}
+            infos["_final_info"] = ended
             which = np.flatnonzero(ended)
             new_seeds = [self._next_seed(int(i)) for i in which]
             core.reset([int(i) for i in which], new_seeds)

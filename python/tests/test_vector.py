@@ -36,6 +36,8 @@ def test_eight_envs_equal_eight_single_envs_bit_for_bit(threads):
                 assert obs[i, j].tobytes() == expected[i][a].tobytes(), (k, i, a)
         actions = _actions(rng, n, len(agents))
         obs, rew, term, trunc, infos = vec.step(actions)
+        if "final_obs" in infos:  # None exactly where the mask is clear
+            assert [o is None for o in infos["final_obs"]] == [not m for m in infos["_final_obs"]]
         expected = []
         for i, env in enumerate(singles):  # one after another, on this thread
             o, r, t, tr, _ = env.step({a: actions[i, j] for j, a in enumerate(agents)})
@@ -45,6 +47,10 @@ def test_eight_envs_equal_eight_single_envs_bit_for_bit(threads):
                 for j, a in enumerate(agents):
                     assert infos["final_observation"][i, j].tobytes() == o[a].tobytes()
                 assert infos["_final_observation"][i]
+                # Gymnasium 1.x's names for the same
+                assert infos["_final_obs"][i] and infos["_final_info"][i]
+                assert infos["final_obs"][i].tobytes() == infos["final_observation"][i].tobytes()
+                assert infos["final_info"]["step"][i] == infos["step"][i]
                 o, info = env.reset()  # the seed drawn as VectorEnv draws it
                 assert info[agents[0]]["seed"] == infos["seed"][i]
                 ended += 1
@@ -58,6 +64,8 @@ def test_shapes_spaces_and_dtypes():
     assert vec.num_envs == len(vec) == 3 and vec.possible_agents == ["UAV1", "UAV2"]
     assert vec.single_observation_space.shape == (2, size)
     assert vec.observation_space.shape == (3, 2, size) and vec.action_space.shape == (3, 2, 2)
+    mode = vec.metadata["autoreset_mode"]  # gymnasium.vector.AutoresetMode.SAME_STEP, or its value
+    assert getattr(mode, "value", mode) == "SameStep"
     obs, _ = vec.reset(seed=0)
     assert obs.dtype == np.float32 and vec.observation_space.contains(obs)
     obs, rew, term, trunc, infos = vec.step(vec.action_space.sample())
