@@ -292,10 +292,31 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }
   }
+  preparePenalty(is_free);
   prepareClearance(problem, free_agents, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
+  charged_uavs_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
   charged_.assign(penalty_uavs_.size(), 0.0);
+}
+
+void NominalCost::preparePenalty(const std::vector<char>& is_free) {
+  const int T = horizon_ * substeps_;
+  penalty_tracks_.clear();
+  for (const int j : scope_tracks_)
+    if (!occluded_[static_cast<std::size_t>(j) * T + T - 1]) penalty_tracks_.push_back(j);
+  const std::size_t n_charged = penalty_uavs_.size();
+  penalty_free_.resize(n_charged);
+  for (std::size_t k = 0; k < n_charged; ++k) penalty_free_[k] = is_free[penalty_uavs_[k]];
+  // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
+  terminal_distance_.assign(start_.size() * n_charged, 0.0);
+  for (const int j : penalty_tracks_) {
+    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
+    for (std::size_t k = 0; k < n_charged; ++k) {
+      if (penalty_free_[k]) continue;
+      terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
+    }
+  }
 }
 
 void NominalCost::prepareClearance(const PlanningProblem& problem,

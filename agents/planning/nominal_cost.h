@@ -154,6 +154,9 @@ class NominalCost {
   inline void evaluateBody(std::span<const Vec2> actions, std::span<double> costs);
   // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
   double addTerminalPenalty(int lane, double J);
+  // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
+  // free, and the fixed UAVs' distances to each track at m = H.
+  void preparePenalty(const std::vector<char>& is_free);
   // prepare()'s part for the clearance charge: the solids near each free robot, the intended
   // positions of the fixed bodies that may touch a free one (fixed_pos: every UAV's T samples,
   // filled for the fixed agents prepare() flew: those in the cost's scope and those bodies).
@@ -204,6 +207,10 @@ class NominalCost {
   std::vector<int> reachable_;      // the tracks with start_ < H·S, in order
   std::vector<int> scope_tracks_;   // the tracks J sums over: all (team) or reachable_ (reach)
   std::vector<int> penalty_uavs_;   // the UAVs the terminal penalty charges, by index
+  std::vector<char> penalty_free_;  // per entry of penalty_uavs_: a free UAV
+  std::vector<int> penalty_tracks_;  // the tracks of scope_tracks_ not occluded at m = H
+  // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
+  std::vector<double> terminal_distance_;
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
   std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
@@ -212,7 +219,8 @@ class NominalCost {
   std::vector<double> trace_final_;   // m², tr(P_{j,H}[pos]), 4 lanes at [4j]
   std::vector<std::int64_t> in_view_final_;  // some footprint holds z_{j,H}: −1/0, 4 lanes at [4j]
   std::vector<int> uncovered_;               // terminal-penalty candidates, then their order
-  std::vector<double> charged_;              // m, D_i, per entry of penalty_uavs_
+  std::vector<double> charged_;              // m, D_i, per entry of penalty_uavs_ (0 between calls)
+  std::vector<int> charged_uavs_;            // the entry each uncovered track was charged to
 };
 
 /// The cost of a complete joint plan (one plan per UAV) — prepares and evaluates once. For tests,
