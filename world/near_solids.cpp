@@ -13,8 +13,8 @@ constexpr std::int64_t kMaxCellsPerSolid = 64;
 constexpr double kCellLimit = 1 << 30;
 
 std::int64_t cellOf(double x) {
-  return static_cast<std::int64_t>(std::floor(std::clamp(x / NearSolids::kCell, -kCellLimit,
-                                                         kCellLimit)));
+  return static_cast<std::int64_t>(
+      std::floor(std::clamp(x / NearSolids::kCell, -kCellLimit, kCellLimit)));
 }
 
 std::uint64_t cellKey(std::int64_t column, std::int64_t row) {

@@ -53,9 +53,9 @@ class NearSolids {
   /// cells once per cell.
   void query(const Aabb& box, std::vector<int>& out) const;
 
-  std::vector<Aabb> bounds_;        // per tree: its solid part's bounds (unused when it has none)
-  std::vector<CellEntry> grid_;     // (cell, tree) for every cell a solid's bounds meet, sorted
-  std::vector<int> large_;          // solids over kMaxCellsPerSolid cells, tested one by one
+  std::vector<Aabb> bounds_;         // per tree: its solid part's bounds (unused when it has none)
+  std::vector<CellEntry> grid_;      // (cell, tree) for every cell a solid's bounds meet, sorted
+  std::vector<int> large_;           // solids over kMaxCellsPerSolid cells, tested one by one
   std::vector<Neighbourhood> near_;  // per robot index
   std::vector<int> users_;           // per tree: neighbourhoods that hold it
   std::vector<int> scratch_;

@@ -35,9 +35,9 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
     double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
     // The UAVs the penalty charges (team scope: every UAV, by index, the paper's loop).
     for (std::size_t k = 0; k < n_charged; ++k) {
-      const double distance = penalty_free_[k]
-                                  ? (final_position[penalty_uavs_[k]] - z).norm()  // |p_{i,H} − z_{j,H}|
-                                  : fixed_distance[k];
+      // |p_{i,H} − z_{j,H}|
+      const double distance =
+          penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
       if (charged_[k] + distance < best_total) {
         best = k;
         best_total = charged_[k] + distance;

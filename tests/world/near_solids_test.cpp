@@ -31,7 +31,8 @@ std::vector<TreeDef> forest() {
   trees.push_back(crown_only);
   // A wall 600 m long (over 64 cells of 8 m: kept out of the grid) and a short one.
   trees.push_back(TreeDef::polygon({Vec2(-200, 50), Vec2(400, 50), Vec2(400, 51), Vec2(-200, 51)}));
-  trees.push_back(TreeDef::polygon({Vec2(150, 150), Vec2(160, 150), Vec2(160, 152), Vec2(150, 152)}));
+  trees.push_back(
+      TreeDef::polygon({Vec2(150, 150), Vec2(160, 150), Vec2(160, 152), Vec2(150, 152)}));
   return trees;
 }
 
@@ -43,7 +44,7 @@ TEST(NearSolids, EverySolidARobotCanTouchDuringTheStepIsHeld) {
   const double radius = 0.5, travel = 0.8;  // m
   std::vector<Vec2> p = {Vec2(10, 10), Vec2(190, 20), Vec2(100, 180)};
   std::vector<double> heading = {0.3, 2.0, 4.0};  // rad
-  std::set<int> held;  // what the added/removed lists say
+  std::set<int> held;                             // what the added/removed lists say
   int recentred = 0;
   for (int step = 0; step < 2000; ++step) {
     for (int i = 0; i < kRobots; ++i) {
