@@ -1,28 +1,13 @@
 #include "spec/solid_paths.h"
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <cstdint>
-#include <limits>
 #include <sstream>
-#include <utility>
 #include <vector>
 
 #include "core/progress.h"
+#include "world/solid_index.h"
 
 namespace canopy::spec {
 namespace {
-
-// A bounding box grown point by point (empty until the first).
-struct Box {
-  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
-  Vec2 hi = Vec2::Constant(-std::numeric_limits<double>::infinity());
-  void expand(const Vec2& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-};
 
 // A leg of a target's path as a segment, with the words that name it.
 struct Leg {
@@ -49,105 +34,24 @@ std::vector<Leg> legsOf(const world::Path& path, double duration) {
   return legs;
 }
 
-// The solid trees (trunks and walls) in a uniform grid of their bounding boxes, so that a leg is
-// tested against the trees near it, not every tree: the work is (legs × cells a leg's box meets)
-// at most, and never more than legs × solids (a leg whose box meets more cells than there are
-// solids is tested against every solid).
-class SolidIndex {
- public:
-  explicit SolidIndex(const std::vector<world::TreeDef>& trees) {
-    Box all;
-    for (int k = 0; k < static_cast<int>(trees.size()); ++k) {
-      if (!world::isWall(trees[k]) && !(trees[k].trunk_radius > 0.0)) continue;
-      solids_.push_back(k);
-      boxes_.push_back(boxOf(trees[k]));
-      all.expand(boxes_.back().lo);
-      all.expand(boxes_.back().hi);
-    }
-    if (solids_.empty()) return;
-    // About one solid per cell on average.
-    const Vec2 extent = all.hi - all.lo;
-    cell_ = std::max(1.0, std::sqrt(extent.x() * extent.y() / static_cast<double>(solids_.size())));
-    ProgressCounter progress("indexing trunks and walls", static_cast<double>(solids_.size()));
-    for (std::size_t s = 0; s < solids_.size(); ++s) {
-      progress.add();
-      const auto [i0, j0, i1, j1] = cellsOf(boxes_[s]);
-      if ((i1 - i0 + 1) * (j1 - j0 + 1) > kMaxCellsPerSolid) {
-        wide_.push_back(solids_[s]);  // a long wall: tested against every leg
-        continue;
-      }
-      for (long long i = i0; i <= i1; ++i)
-        for (long long j = j0; j <= j1; ++j) cells_.emplace_back(key(i, j), solids_[s]);
-    }
-    // One sorted array rather than a hash map of lists: 10⁶ trunks are one allocation, not 10⁶.
-    std::sort(cells_.begin(), cells_.end());
-  }
-
-  // The indices (in spec.trees, ascending) of the solids whose box may meet the segment a → b.
-  std::vector<int> near(const Vec2& a, const Vec2& b) const {
-    if (solids_.empty()) return {};
-    Box box;
-    box.expand(a);
-    box.expand(b);
-    const auto [i0, j0, i1, j1] = cellsOf(box);
-    if (static_cast<double>(i1 - i0 + 1) * static_cast<double>(j1 - j0 + 1) >
-        static_cast<double>(solids_.size()))
-      return solids_;
-    std::vector<int> found = wide_;
-    for (long long i = i0; i <= i1; ++i)
-      for (long long j = j0; j <= j1; ++j)
-        for (auto it = std::lower_bound(cells_.begin(), cells_.end(), CellEntry{key(i, j), -1});
-             it != cells_.end() && it->first == key(i, j); ++it)
-          found.push_back(it->second);
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
-    return found;
-  }
-
- private:
-  static constexpr long long kMaxCellsPerSolid = 1024;
-
-  static Box boxOf(const world::TreeDef& tree) {
-    Box box;
-    if (world::isWall(tree)) {
-      for (const Vec2& v : tree.vertices) box.expand(v);
-    } else {
-      box.expand(tree.centre - Vec2(tree.trunk_radius, tree.trunk_radius));
-      box.expand(tree.centre + Vec2(tree.trunk_radius, tree.trunk_radius));
-    }
-    return box;
-  }
-  std::array<long long, 4> cellsOf(const Box& box) const {
-    return {static_cast<long long>(std::floor(box.lo.x() / cell_)),
-            static_cast<long long>(std::floor(box.lo.y() / cell_)),
-            static_cast<long long>(std::floor(box.hi.x() / cell_)),
-            static_cast<long long>(std::floor(box.hi.y() / cell_))};
-  }
-  static std::uint64_t key(long long i, long long j) {
-    return (static_cast<std::uint64_t>(i) << 32) ^ static_cast<std::uint32_t>(j);
-  }
-
-  std::vector<int> solids_;  // indices in spec.trees, ascending
-  std::vector<Box> boxes_;   // per solid
-  std::vector<int> wide_;    // solids spanning more than kMaxCellsPerSolid cells
-  double cell_ = 1.0;        // m
-  using CellEntry = std::pair<std::uint64_t, int>;  // (cell key, solid), sorted
-  std::vector<CellEntry> cells_;
-};
-
 }  // namespace
 
 std::vector<SolidCrossing> solidCrossings(const ScenarioSpec& spec) {
   std::vector<SolidCrossing> out;
-  const SolidIndex index(spec.trees);
+  const world::SolidIndex index(spec.trees);
+  std::vector<int> near;
   ProgressCounter progress("checking target paths", static_cast<double>(spec.targets.size()), 1024);
   for (int t = 0; t < static_cast<int>(spec.targets.size()); ++t) {
     progress.add();
     const std::vector<Leg> legs = legsOf(spec.targets[t].path, spec.duration);
     for (int leg = 0; leg < static_cast<int>(legs.size()); ++leg) {
-      for (const int k : index.near(legs[leg].a, legs[leg].b)) {
+      const Vec2& a = legs[leg].a;
+      const Vec2& b = legs[leg].b;
+      near.clear();
+      index.near(Aabb{a.cwiseMin(b), a.cwiseMax(b)}, near);
+      for (const int k : near) {
         const world::TreeDef& tree = spec.trees[k];
-        if (world::solidDistance(tree, legs[leg].a, legs[leg].b) > 0.0) continue;
+        if (world::solidDistance(tree, a, b) > 0.0) continue;
         std::ostringstream text;
         text << "target \"" << spec.targets[t].name << "\": its path " << legs[leg].words
              << " runs into " << (world::isWall(tree) ? "wall " : "the trunk of tree ") << k

@@ -3,18 +3,17 @@
 // with a body could reach before it is next looked at, not the forest's every trunk
 // (docs/design-notes.md, "Only solids near a robot are stepped"). Internal to world/: World
 // creates and destroys the fixtures this names.
-#include <cstdint>
 #include <vector>
 
 #include "core/types.h"
+#include "world/solid_index.h"
 #include "world/tree.h"
 
 namespace canopy::world {
 
 class NearSolids {
  public:
-  /// Indexes the solid part of every tree that has one (a wall, or a trunk of positive radius)
-  /// in a grid of kCell-metre cells.
+  /// Indexes the solid part of every tree that has one (a wall, or a trunk of positive radius).
   explicit NearSolids(const std::vector<TreeDef>& trees);
 
   /// Called before each step for robot `robot` (radius m) at p, when no body can move more than
@@ -35,8 +34,6 @@ class NearSolids {
   static constexpr double kMinSkin = 8.0;
   /// m: the fixtures' coordinates are floats, 1 m coarse at the largest a scenario may use.
   static constexpr double kFloatMargin = 1.0;
-  /// The grid's cell side, m.
-  static constexpr double kCell = 8.0;
 
  private:
   struct Neighbourhood {
@@ -45,17 +42,7 @@ class NearSolids {
     double skin = 0.0;           // m
     std::vector<int> solids;     // tree indices, increasing
   };
-  struct CellEntry {
-    std::uint64_t cell;  // cellKey(column, row)
-    int tree;
-  };
-  /// Appends every solid whose bounds meet box, in no particular order, a solid spanning several
-  /// cells once per cell.
-  void query(const Aabb& box, std::vector<int>& out) const;
-
-  std::vector<Aabb> bounds_;         // per tree: its solid part's bounds (unused when it has none)
-  std::vector<CellEntry> grid_;      // (cell, tree) for every cell a solid's bounds meet, sorted
-  std::vector<int> large_;           // solids over kMaxCellsPerSolid cells, tested one by one
+  SolidIndex index_;
   std::vector<Neighbourhood> near_;  // per robot index
   std::vector<int> users_;           // per tree: neighbourhoods that hold it
   std::vector<int> scratch_;
