@@ -148,13 +148,19 @@ std::optional<int> crownContaining(const b2World& crowns, const std::vector<Tree
   return callback.hit;
 }
 
+// A polygon tree's vertices as Box2D's shape (box2dProblem() has checked that Box2D takes them).
+b2PolygonShape polygonOf(const TreeDef& tree) {
+  std::vector<b2Vec2> vertices;
+  for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
+  b2PolygonShape polygon;
+  polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+  return polygon;
+}
+
 // Tree k's solid part as a fixture of the static body `solids`: a wall's polygon or a trunk's disc.
 b2Fixture* createSolid(b2Body& solids, const TreeDef& tree, int k) {
   if (isWall(tree)) {
-    std::vector<b2Vec2> vertices;
-    for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
-    b2PolygonShape polygon;
-    polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+    const b2PolygonShape polygon = polygonOf(tree);
     const b2FixtureDef fixture =
         solidFixture(&polygon, BodyKind::wall, k, kSolidCategory, kGroundCategory);
     return solids.CreateFixture(&fixture);
@@ -184,6 +190,7 @@ struct World::Box2d {
   // stepped").
   b2Body* solids = nullptr;
   std::optional<NearSolids> near_solids;
+  double ground_v_max = 0.0;  // m/s, the fastest ground robot with a body
   std::vector<b2Fixture*> solid_fixture;  // per tree: its solid part in `world`, or null
   std::vector<int> solids_added, solids_removed;
   // step()'s per-agent scratch, kept to reuse its memory: the command each sub-step drives at,
@@ -212,7 +219,10 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(new Box2d) {
   for (int i = 0; i < static_cast<int>(def_.uavs.size()); ++i) {
     const UavDef& agent = def_.uavs[i];
     const bool ground = agent.kind == AgentKind::ground;
-    any_ground = any_ground || (ground && agent.radius > 0.0);
+    if (ground && agent.radius > 0.0) {
+      any_ground = true;
+      b2_->ground_v_max = std::max(b2_->ground_v_max, agent.v_max);
+    }
     b2BodyDef body;
     body.type = b2_dynamicBody;
     body.fixedRotation = true;  // the heading is the command's, never the contacts'
@@ -272,10 +282,7 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(new Box2d) {
       const b2FixtureDef fixture = nonCollidingFixture(&circle, BodyKind::tree, k);
       b2_->forest->CreateFixture(&fixture);
     } else {
-      std::vector<b2Vec2> vertices;
-      for (const Vec2& v : tree.vertices) vertices.push_back(toB2(v));
-      b2PolygonShape polygon;
-      polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
+      const b2PolygonShape polygon = polygonOf(tree);
       const b2FixtureDef fixture = nonCollidingFixture(&polygon, BodyKind::tree, k);
       b2_->forest->CreateFixture(&fixture);
     }
@@ -312,10 +319,7 @@ void World::keepSolidsNear(double dt) {
   // No body moves more than twice the fastest robot's command in one step: a robot pushed by
   // another of equal mass moves at most at the pusher's speed, the solver's corrections add
   // millimetres (tests/world/contact_test.cpp).
-  double v_max = 0.0;  // m/s
-  for (const UavDef& agent : def_.uavs)
-    if (agent.kind == AgentKind::ground && agent.radius > 0.0) v_max = std::max(v_max, agent.v_max);
-  const double travel = 2.0 * v_max * dt;  // m
+  const double travel = 2.0 * b2_->ground_v_max * dt;  // m
   std::vector<int>& added = b2_->solids_added;
   std::vector<int>& removed = b2_->solids_removed;
   added.clear();

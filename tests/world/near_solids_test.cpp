@@ -84,10 +84,15 @@ TEST(NearSolids, EverySolidARobotCanTouchDuringTheStepIsHeld) {
   EXPECT_LT(near.heldCount(), 120);
 }
 
+// One tree at the origin: a crown of radius 2 m, a trunk of 0.5 m.
+TreeDef trunkAtOrigin() {
+  TreeDef tree = TreeDef::disc(Vec2(0, 0), 2.0);
+  tree.trunk_radius = 0.5;
+  return tree;
+}
+
 TEST(NearSolids, ASharedSolidStaysUntilTheLastRobotLeaves) {
-  TreeDef trunk = TreeDef::disc(Vec2(0, 0), 2.0);
-  trunk.trunk_radius = 0.5;
-  const std::vector<TreeDef> trees = {trunk};
+  const std::vector<TreeDef> trees = {trunkAtOrigin()};
   NearSolids near(trees);
   std::vector<int> added, removed;
   near.update(0, Vec2(3, 0), 0.5, 1.0, added, removed);
@@ -106,9 +111,7 @@ TEST(NearSolids, ASharedSolidStaysUntilTheLastRobotLeaves) {
 }
 
 TEST(NearSolids, AFastRobotLooksAsFarAsItCanGo) {
-  TreeDef trunk = TreeDef::disc(Vec2(0, 0), 2.0);
-  trunk.trunk_radius = 0.5;
-  const std::vector<TreeDef> trees = {trunk};
+  const std::vector<TreeDef> trees = {trunkAtOrigin()};
   NearSolids near(trees);
   std::vector<int> added, removed;
   // 40 m from the trunk, able to move 35 m in the step: skin 2 · 35 = 70 m reaches it.
