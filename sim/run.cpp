@@ -3,12 +3,14 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "core/output_file.h"
 #include "core/random.h"
 #include "core/text_file.h"
 #include "core/version.h"
+#include "sim/observer_thread.h"
 #include "sim/recorder.h"
 #include "sim/simulation.h"
 #include "sim/summary.h"
@@ -64,8 +66,16 @@ RunResult simulate(const spec::ScenarioSpec& spec, const RunOptions& options) {
   Recorder recorder(options.out_dir, spec);
   SummaryBuilder summary(spec);
   std::vector<StepObserver*> observers = {&recorder, &summary};
+  // With threads to spare, the record and summary are written one step behind, on their own
+  // thread (the caller's observers, frames among them, stay on this one).
+  std::optional<ObserverThread> behind;
+  if (options.threads > 1) {
+    behind.emplace(observers);
+    observers = {&*behind};
+  }
   observers.insert(observers.end(), options.observers.begin(), options.observers.end());
   runToEnd(sim, observers);
+  if (behind) behind->finish();
   recorder.commit();
   RunResult result;
   result.steps = summary.steps();

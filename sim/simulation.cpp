@@ -75,12 +75,14 @@ void Simulation::readTruth() {
     uav.contacts = truth_.uavs[i].contacts;
     uav.contacts_begun = truth_.uavs[i].contacts_begun;
   }
-  for (std::size_t t = 0; t < record_.targets.size(); ++t) {
+  // Whether a target is under a crown is a const query of the forest: the targets side by side,
+  // each writing its own record (a point query among 10⁵ crowns takes a few µs).
+  forEachTask(pool_.get(), record_.targets.size(), [&](std::size_t t) {
     TargetRecord& target = record_.targets[t];
     target.position = truth_.targets[t].position;
     target.velocity = truth_.targets[t].velocity;
     target.occluded = world_.insideOccluder(target.position);
-  }
+  });
 }
 
 void Simulation::senseAndTrack(double dt) {

@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
+#include "sim/observer_thread.h"
 #include "sim/recorder.h"
 #include "sim/run.h"
 #include "sim/simulation.h"
@@ -125,6 +129,82 @@ TEST(StepObserver, AFailingObserverStopsTheRunAndLeavesNoResult) {
   options.observers = {&thrower, &after};
   EXPECT_THROW(runScenario(spec, options), std::runtime_error);
   EXPECT_EQ(after.steps, (std::vector<int>{0, 1, 2}));  // step 3 never reached it
+  EXPECT_FALSE(fs::exists(dir / "record.jsonl"));
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+  fs::remove_all(dir);
+}
+
+// ObserverThread (`run --threads N`, N ≥ 2): observers one step behind on a thread of their own.
+
+TEST(ObserverThread, ObserversBehindSeeTheSameRecordsInTheSameOrder) {
+  spec::LoadOptions load;
+  load.overrides = {"clock.duration=3"};
+  const spec::ScenarioSpec spec = spec::loadScenario("trajectory_handover", load);
+  Simulation sim(spec);
+  Copier here, behind_first, behind_last;
+  ObserverThread behind({&behind_first, &behind_last});
+  StepObserver* const observers[] = {&behind, &here};
+  runToEnd(sim, observers);
+  behind.finish();
+  ASSERT_EQ(static_cast<int>(here.records.size()), spec.steps() + 1);
+  ASSERT_EQ(behind_first.records.size(), here.records.size());
+  ASSERT_EQ(behind_last.records.size(), here.records.size());
+  for (std::size_t k = 0; k < here.records.size(); ++k) {
+    EXPECT_EQ(behind_first.records[k].step, static_cast<int>(k));
+    // The copy handed over is the record of that tick, to the last bit of its line (plans on
+    // epochs included), though the simulation had already moved on when it was read.
+    const std::string line = recordLine(spec.labels, here.records[k]);
+    EXPECT_EQ(recordLine(spec.labels, behind_first.records[k]), line) << "step " << k;
+    EXPECT_EQ(recordLine(spec.labels, behind_last.records[k]), line) << "step " << k;
+  }
+}
+
+TEST(ObserverThread, AFailingObserverStopsTheRunAndNoLaterStepIsObserved) {
+  const spec::ScenarioSpec spec = demo();
+  Simulation sim(spec);
+  Thrower thrower(3);
+  Probe after, here;
+  ObserverThread behind({&thrower, &after});
+  StepObserver* const observers[] = {&behind, &here};
+  EXPECT_THROW(runToEnd(sim, observers), std::runtime_error);
+  EXPECT_EQ(after.steps, (std::vector<int>{0, 1, 2}));  // step 3 never reached it
+  // The caller learns of it when it hands over the next step (4), not later: it has ticked at
+  // most one step past the failure.
+  ASSERT_FALSE(here.steps.empty());
+  EXPECT_LE(here.steps.back(), 4);
+  EXPECT_GE(here.steps.back(), 3);
+  EXPECT_THROW(behind.finish(), std::runtime_error);  // and finish() says so too
+}
+
+TEST(ObserverThread, RunScenarioOnTwoThreadsWritesWhatOneThreadWrites) {
+  const spec::ScenarioSpec spec = demo();
+  std::string record[2];
+  for (const int threads : {1, 2}) {
+    const fs::path dir = fs::temp_directory_path() / ("canopy_observer_thread_" + std::to_string(threads));
+    fs::remove_all(dir);
+    RunOptions options;
+    options.out_dir = dir;
+    options.threads = threads;
+    const RunResult result = runScenario(spec, options);
+    EXPECT_EQ(result.steps, spec.steps() + 1);
+    std::ifstream in(dir / "record.jsonl");
+    record[threads - 1].assign(std::istreambuf_iterator<char>(in), {});
+    fs::remove_all(dir);
+  }
+  EXPECT_GT(record[0].size(), 1000u);
+  EXPECT_TRUE(record[0] == record[1]);
+}
+
+TEST(ObserverThread, AFailingRecordOnTwoThreadsLeavesNoResult) {
+  const spec::ScenarioSpec spec = demo();
+  const fs::path dir = fs::temp_directory_path() / "canopy_observer_thread_throw";
+  fs::remove_all(dir);
+  Thrower thrower(3);  // on the caller's thread: the run stops while the record is written behind
+  RunOptions options;
+  options.out_dir = dir;
+  options.threads = 2;
+  options.observers = {&thrower};
+  EXPECT_THROW(runScenario(spec, options), std::runtime_error);
   EXPECT_FALSE(fs::exists(dir / "record.jsonl"));
   EXPECT_FALSE(fs::exists(dir / "summary.json"));
   fs::remove_all(dir);
