@@ -63,6 +63,7 @@ class Team {
   void setPool(TaskPool* pool) {
     pool_ = pool;
     planner_.setPool(pool);
+    fusion_.setPool(pool);
   }
 
   const std::vector<Agent>& agents() const { return agents_; }

@@ -15,6 +15,20 @@ struct FusionDiagnostics {
   long adoptions = 0;           // tracks copied to a neighbour that lacked them
   long rekeys = 0;              // clusters given a fresh key because another one kept theirs
   long numerical_failures = 0;  // covariances or fused information not positive definite
+
+  FusionDiagnostics& operator+=(const FusionDiagnostics& o) {
+    steps += o.steps;
+    messages += o.messages;
+    lost_messages += o.lost_messages;
+    late_messages += o.late_messages;
+    remembered_matches += o.remembered_matches;
+    new_matches += o.new_matches;
+    refused_matches += o.refused_matches;
+    adoptions += o.adoptions;
+    rekeys += o.rekeys;
+    numerical_failures += o.numerical_failures;
+    return *this;
+  }
 };
 
 }  // namespace canopy::agents::fusion

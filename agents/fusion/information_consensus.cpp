@@ -49,12 +49,12 @@ double fromLogOdds(double l) {
 }  // namespace
 
 template <int N>
-void InformationConsensus<N>::run(std::span<TrackList> lists, const Clusters& clusters,
-                                  const CommGraph& graph, const FusionConfig& config,
+void InformationConsensus<N>::run(std::span<TrackList> lists, const Clusters& clusters, int first,
+                                  int last, const CommGraph& graph, const FusionConfig& config,
                                   FusionDiagnostics& diagnostics) {
   slot_of_.assign(static_cast<std::size_t>(graph.agents()), -1);
   const int rounds = config.rounds > 0 ? config.rounds : 0;
-  for (int c = 0; c < clusters.size(); ++c) {
+  for (int c = first; c < last; ++c) {
     const std::span<const ClusterMember> members = clusters.of(c);
     if (members.size() < 2) continue;  // nothing to fuse with
     usable_.assign(members.size(), 1);

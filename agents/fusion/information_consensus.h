@@ -50,7 +50,13 @@ class InformationConsensus {
   /// Overwrites the posterior of every member of every cluster with two or more members. Uses
   /// the losses drawn on `graph` (round r of consensus is exchange r).
   void run(std::span<TrackList> lists, const Clusters& clusters, const CommGraph& graph,
-           const FusionConfig& config, FusionDiagnostics& diagnostics);
+           const FusionConfig& config, FusionDiagnostics& diagnostics) {
+    run(lists, clusters, 0, clusters.size(), graph, config, diagnostics);
+  }
+  /// The same for clusters [first, last) only. Clusters share no track, so two objects may run
+  /// disjoint ranges of one step's clusters at once, each counting into its own diagnostics.
+  void run(std::span<TrackList> lists, const Clusters& clusters, int first, int last,
+           const CommGraph& graph, const FusionConfig& config, FusionDiagnostics& diagnostics);
 
  private:
   using Mat = Eigen::Matrix<double, N, N>;

@@ -17,6 +17,35 @@ TeamFusion::TeamFusion(const FusionConfig& config, int agents, std::uint64_t see
     loss_streams_.emplace_back(seed, "fusion.loss", static_cast<std::uint64_t>(i));
   }
   positions_.resize(static_cast<std::size_t>(agents_));
+  setPool(nullptr);
+}
+
+void TeamFusion::setPool(TaskPool* pool) {
+  pool_ = pool;
+  const std::size_t parts = pool != nullptr ? static_cast<std::size_t>(pool->threads()) : 1;
+  target_consensus_.resize(parts);
+  tree_consensus_.resize(parts);
+  part_diagnostics_.resize(parts);
+}
+
+template <int N>
+void TeamFusion::agree(std::vector<InformationConsensus<N>>& parts,
+                       std::span<std::vector<tracking::Track<N>>> lists, const Clusters& clusters) {
+  // Part p takes the clusters whose first member lies in [p·M/P, (p+1)·M/P), M members in all.
+  const std::size_t count = parts.size();
+  const auto members = static_cast<long>(clusters.members.size());
+  auto boundary = [&](std::size_t p) {
+    if (p == count) return clusters.size();
+    const long member = members * static_cast<long>(p) / static_cast<long>(count);
+    const auto start = clusters.start.begin();
+    return static_cast<int>(std::lower_bound(start, start + clusters.size(), member) - start);
+  };
+  forEachTask(pool_, count, [&](std::size_t p) {
+    part_diagnostics_[p] = {};
+    parts[p].run(lists, clusters, boundary(p), boundary(p + 1), graph_, config_,
+                 part_diagnostics_[p]);
+  });
+  for (const FusionDiagnostics& part : part_diagnostics_) diagnostics_ += part;
 }
 
 void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
@@ -49,10 +78,10 @@ void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
 void TeamFusion::associateAndAgree(FusedTracks& fused) {
   target_association_.associate(fused.targets, graph_, config_.association_gate, mint_,
                                 target_clusters_, diagnostics_);
-  target_consensus_.run(fused.targets, target_clusters_, graph_, config_, diagnostics_);
+  agree<4>(target_consensus_, fused.targets, target_clusters_);
   tree_association_.associate(fused.trees, graph_, config_.association_gate, mint_, tree_clusters_,
                               diagnostics_);
-  tree_consensus_.run(fused.trees, tree_clusters_, graph_, config_, diagnostics_);
+  agree<3>(tree_consensus_, fused.trees, tree_clusters_);
   shareOutlines(fused.trees, tree_clusters_, graph_, outline_scratch_);
 }
 

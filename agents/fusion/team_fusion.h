@@ -14,6 +14,7 @@
 #include "agents/fusion/track_association.h"
 #include "agents/tracking/track.h"
 #include "core/random.h"
+#include "core/task_pool.h"
 #include "core/types.h"
 
 namespace canopy::agents::fusion {
@@ -87,6 +88,9 @@ class TeamFusion {
   /// a mismatch is a programming error and aborts).
   void fuse(std::span<const AgentTracks> agents, FusedTracks& fused);
 
+  /// Threads for the consensus: clusters are fused in as many parts as the pool has threads
+  /// (nullptr: one part, on the caller's thread). The result does not depend on it.
+  void setPool(TaskPool* pool);
   /// Totals since construction.
   const FusionDiagnostics& diagnostics() const { return diagnostics_; }
   /// The graph of the last step (neighbours, weights, losses), for recording and tests.
@@ -96,6 +100,11 @@ class TeamFusion {
  private:
   // Steps 2–3 (association, consensus, outlines) on `fused`, every agent's lists at once.
   void associateAndAgree(FusedTracks& fused);
+  // Consensus on one kind of track, its clusters split into parts.size() runs of about equal
+  // membership, the parts side by side.
+  template <int N>
+  void agree(std::vector<InformationConsensus<N>>& parts,
+             std::span<std::vector<tracking::Track<N>>> lists, const Clusters& clusters);
   // fuse() with comm_latency > 0 (point 4 above).
   void fuseLate(std::span<const AgentTracks> agents, FusedTracks& fused);
 
@@ -110,8 +119,10 @@ class TeamFusion {
   std::vector<Vec2> positions_;
   TrackAssociation<4> target_association_;
   TrackAssociation<3> tree_association_;
-  InformationConsensus<4> target_consensus_;
-  InformationConsensus<3> tree_consensus_;
+  TaskPool* pool_ = nullptr;
+  std::vector<InformationConsensus<4>> target_consensus_;  // one per part
+  std::vector<InformationConsensus<3>> tree_consensus_;
+  std::vector<FusionDiagnostics> part_diagnostics_;
   Clusters target_clusters_;
   Clusters tree_clusters_;
   std::vector<tracking::TreeOutline> outline_scratch_;

@@ -96,5 +96,73 @@ TEST(TeamFusion, ClosedLoopKeepsItsInvariantsAndAConnectedTeamAgrees) {
   }
 }
 
+// With a pool the clusters' consensus runs in parts side by side (TeamFusion::setPool); the
+// fused lists and counters must be those of one part, bit for bit, for every method. The team is
+// large enough (12 agents, 30 targets, 40 trees) that every part holds clusters.
+template <int N>
+void expectSameTracks(const std::vector<std::vector<tracking::Track<N>>>& a,
+                      const std::vector<std::vector<tracking::Track<N>>>& b, int step) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].size(), b[i].size()) << "agent " << i << ", step " << step;
+    for (std::size_t k = 0; k < a[i].size(); ++k) {
+      EXPECT_EQ(a[i][k].key, b[i][k].key);
+      EXPECT_EQ(a[i][k].posterior.x, b[i][k].posterior.x) << "agent " << i << ", step " << step;
+      EXPECT_EQ(a[i][k].posterior.P, b[i][k].posterior.P) << "agent " << i << ", step " << step;
+      EXPECT_EQ(a[i][k].existence, b[i][k].existence);
+      EXPECT_EQ(a[i][k].status, b[i][k].status);
+    }
+  }
+}
+
+TEST(TeamFusion, ConsensusInPartsOnAPoolGivesTheSameListsBitForBit) {
+  const int n = 12;
+  for (const FusionMethod method :
+       {FusionMethod::ci, FusionMethod::hcmci, FusionMethod::observer_average}) {
+    Team alone(n), pooled(n);
+    RandomStream layout(5, "test.parts.layout");
+    std::vector<Vec2> targets, velocities, trees;
+    for (int t = 0; t < 30; ++t) {
+      targets.emplace_back(layout.uniform(0.0, 480.0), layout.uniform(10.0, 50.0));
+      velocities.emplace_back(layout.uniform(-2.0, 2.0), layout.uniform(-0.5, 0.5));
+    }
+    for (int k = 0; k < 40; ++k)
+      trees.emplace_back(layout.uniform(0.0, 480.0), layout.uniform(10.0, 50.0));
+    for (int i = 0; i < n; ++i) {
+      alone.positions[i] = pooled.positions[i] = Vec2(20.0 + 40.0 * i, 30.0);  // a path graph
+    }
+    FusionConfig config;
+    config.method = method;
+    config.rounds = 3;
+    config.comm_range = 50.0;
+    config.comm_drop = 0.2;
+    TeamFusion one(config, n, 9), parts(config, n, 9);
+    TaskPool pool(3);
+    parts.setPool(&pool);
+    std::vector<RandomStream> sensing;
+    for (int i = 0; i < n; ++i) sensing.emplace_back(9, "test.parts.sensing", i);
+    std::vector<int> serials(n, 0);
+    for (int step = 0; step < 40; ++step) {
+      for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += test::kToyDt * velocities[t];
+      for (int i = 0; i < n; ++i) {
+        // One measurement per agent and step, copied to both teams' lists before fusion.
+        trackLocally(alone.targets[i], alone.positions[i], targets, sensing[i], i, serials[i]);
+        trackLocally(alone.trees[i], alone.positions[i], trees, sensing[i], i, serials[i]);
+        pooled.targets[i] = alone.targets[i];
+        pooled.trees[i] = alone.trees[i];
+      }
+      alone.fuse(one);
+      pooled.fuse(parts);
+      expectSameTracks(alone.targets, pooled.targets, step);
+      expectSameTracks(alone.trees, pooled.trees, step);
+      if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(one.diagnostics().adoptions, 0);
+    EXPECT_EQ(one.diagnostics().messages, parts.diagnostics().messages);
+    EXPECT_EQ(one.diagnostics().numerical_failures, parts.diagnostics().numerical_failures);
+    EXPECT_EQ(one.diagnostics().new_matches, parts.diagnostics().new_matches);
+  }
+}
+
 }  // namespace
 }  // namespace canopy::agents::fusion
