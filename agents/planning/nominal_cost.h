@@ -143,6 +143,9 @@ class NominalCost {
   // fly() for a ground robot: each action as the world's unicycle moves it.
   template <class Sink>
   void driveUnicycle(const Mover& robot, std::span<const Vec2> actions, Sink&& sink) const;
+  // fly() of a UAV that is not a ground robot for four plans at once, lane l flying plans[l]
+  // (H actions each), into poses[t] for the H·S samples t; each lane gets fly()'s bits.
+  void flyLanes(const Mover& uav, const Vec2* const (&plans)[kLanes], PoseLanes* poses) const;
   // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovarianceLanes.
   template <class Cov>
   [[gnu::always_inline]] auto stageTrace(const Cov& P) const {

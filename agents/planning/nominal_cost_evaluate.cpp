@@ -61,14 +61,24 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
     }
     for (std::size_t f = 0; f < free_.size(); ++f) {
       PoseLanes* poses = &free_pose_[f * T];
+      const Vec2* plans[kLanes];
       for (int lane = 0; lane < kLanes; ++lane) {
-        const auto plan = actions.subspan(candidate[lane] * per_candidate + f * H, H);
-        fly(free_[f], plan, [&](int t, const Vec2& p, const Vec2& heading) {
-          poses[t].x[lane] = p.x();
-          poses[t].y[lane] = p.y();
-          poses[t].c[lane] = heading.x();
-          poses[t].s[lane] = heading.y();
-        });
+        plans[lane] = actions.data() + candidate[lane] * per_candidate + f * H;
+      }
+      if (free_[f].ground) {  // the unicycle, one lane after another
+        for (int lane = 0; lane < kLanes; ++lane) {
+          fly(free_[f], {plans[lane], static_cast<std::size_t>(H)},
+              [&](int t, const Vec2& p, const Vec2& heading) {
+                poses[t].x[lane] = p.x();
+                poses[t].y[lane] = p.y();
+                poses[t].c[lane] = heading.x();
+                poses[t].s[lane] = heading.y();
+              });
+        }
+      } else {
+        flyLanes(free_[f], plans, poses);
+      }
+      for (int lane = 0; lane < kLanes; ++lane) {
         final_position_[lane * n_uavs_ + free_index_[f]] =
             Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
       }

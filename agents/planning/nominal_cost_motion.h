@@ -8,6 +8,7 @@
 #include <span>
 
 #include "agents/planning/nominal_cost.h"
+#include "core/lanes.h"
 #include "world/unicycle.h"
 
 namespace canopy::agents::planning {
@@ -41,6 +42,44 @@ template <class Sink>
     for (int sample = 0; sample < substeps_; ++sample) {
       p += step;  // p at t_{m−1} + s·τ; at the last sample p_{i,m} = p_{i,m−1} + a_{i,m}·Δ
       sink(t++, p, Vec2(c, s));
+    }
+  }
+}
+
+[[gnu::always_inline]] inline void NominalCost::flyLanes(const Mover& uav,
+                                                         const Vec2* const (&plans)[kLanes],
+                                                         PoseLanes* poses) const {
+  // fly()'s operations in the same order, each on four lanes; its branches become selects.
+  using lanes::V4;
+  using lanes::M4;
+  constexpr double kHoverSpeedSquared = 1e-12;  // as fly()
+  V4 px = lanes::broadcast(uav.position.x()), py = lanes::broadcast(uav.position.y());
+  V4 c = lanes::broadcast(uav.cos_yaw), s = lanes::broadcast(uav.sin_yaw);
+  const double v_max_sq = uav.v_max * uav.v_max;
+  const double tau = period_ / substeps_;  // s, between samples
+  int t = 0;
+  for (int m = 0; m < horizon_; ++m) {
+    V4 ax = {plans[0][m].x(), plans[1][m].x(), plans[2][m].x(), plans[3][m].x()};
+    V4 ay = {plans[0][m].y(), plans[1][m].y(), plans[2][m].y(), plans[3][m].y()};
+    V4 speed_sq = ax * ax + ay * ay;
+    const M4 clamped = speed_sq > v_max_sq;  // the world clamps |a| to v_max
+    if (lanes::anyLane(clamped)) {
+      const V4 factor = uav.v_max / lanes::sqrt(speed_sq);
+      ax = clamped ? ax * factor : ax;
+      ay = clamped ? ay * factor : ay;
+      speed_sq = clamped ? lanes::broadcast(v_max_sq) : speed_sq;
+    }
+    if (uav.yaw_follows) {  // ψ = atan2(a_y, a_x) where the UAV moves, kept where it hovers
+      const M4 moving = speed_sq > kHoverSpeedSquared;
+      const V4 speed = lanes::sqrt(speed_sq);
+      c = moving ? ax / speed : c;
+      s = moving ? ay / speed : s;
+    }
+    const V4 step_x = ax * tau, step_y = ay * tau;  // m per sample
+    for (int sample = 0; sample < substeps_; ++sample, ++t) {
+      px += step_x;
+      py += step_y;
+      poses[t] = {px, py, c, s};
     }
   }
 }

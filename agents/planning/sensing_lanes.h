@@ -13,8 +13,10 @@
 
 namespace canopy::agents::planning {
 
-/// Four poses of a UAV: ground points (x, y) in m and headings (cos ψ, sin ψ).
-struct PoseLanes {
+/// Four poses of a UAV: ground points (x, y) in m and headings (cos ψ, sin ψ). Aligned to 32
+/// bytes in every translation unit (outside an AVX one GCC aligns V4 to 16 only), so that the
+/// AVX2 cost's aligned stores into NominalCost's vector of them hold (flyLanes).
+struct alignas(32) PoseLanes {
   V4 x, y, c, s;
 };
 
