@@ -64,13 +64,7 @@ std::uint64_t closedLoopHash(FusionMethod method) {
   Team team(kAgents);
   for (int i = 0; i < kAgents; ++i) team.positions[i] = Vec2(20.0 + 40.0 * i, 30.0);
   RandomStream layout(5, "test.fusion_golden.layout");
-  std::vector<Vec2> targets, velocities, trees;
-  for (int t = 0; t < 8; ++t) {
-    targets.emplace_back(layout.uniform(0.0, 200.0), layout.uniform(10.0, 50.0));
-    velocities.emplace_back(layout.uniform(-2.0, 2.0), layout.uniform(-0.5, 0.5));
-  }
-  for (int t = 0; t < 10; ++t)
-    trees.emplace_back(layout.uniform(0.0, 200.0), layout.uniform(10.0, 50.0));
+  test::ToyScene scene = test::toyScene(layout, 8, 10, 200.0);
   std::vector<RandomStream> sensing;
   std::vector<int> serials(kAgents, 0);
   for (int i = 0; i < kAgents; ++i) sensing.emplace_back(5, "test.fusion_golden.sensing", i);
@@ -83,10 +77,10 @@ std::uint64_t closedLoopHash(FusionMethod method) {
   TeamFusion fusion(config, kAgents, 5);
   std::string bytes;
   for (int step = 0; step < 60; ++step) {
-    for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += test::kToyDt * velocities[t];
+    scene.advance();
     for (int i = 0; i < kAgents; ++i) {
-      trackLocally(team.targets[i], team.positions[i], targets, sensing[i], i, serials[i]);
-      trackLocally(team.trees[i], team.positions[i], trees, sensing[i], i, serials[i]);
+      trackLocally(team.targets[i], team.positions[i], scene.targets, sensing[i], i, serials[i]);
+      trackLocally(team.trees[i], team.positions[i], scene.trees, sensing[i], i, serials[i]);
     }
     team.fuse(fusion);
     for (int i = 0; i < kAgents; ++i) {

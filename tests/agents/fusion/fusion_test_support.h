@@ -56,6 +56,27 @@ constexpr double kToyDt = 0.2;
 constexpr double kToyFootprint = 35.0;
 constexpr double kToyMeasurementVar = 0.5;
 
+/// A toy scene on a strip `length` m long, y in [10, 50] m: walkers at constant velocities
+/// (|v_x| ≤ 2, |v_y| ≤ 0.5 m/s), then static trees, drawn in that order from `layout`.
+struct ToyScene {
+  std::vector<Vec2> targets, velocities, trees;
+  /// The walkers one toy step (kToyDt) on.
+  void advance() {
+    for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += kToyDt * velocities[t];
+  }
+};
+
+inline ToyScene toyScene(RandomStream& layout, int targets, int trees, double length) {
+  ToyScene scene;
+  for (int t = 0; t < targets; ++t) {
+    scene.targets.emplace_back(layout.uniform(0.0, length), layout.uniform(10.0, 50.0));
+    scene.velocities.emplace_back(layout.uniform(-2.0, 2.0), layout.uniform(-0.5, 0.5));
+  }
+  for (int k = 0; k < trees; ++k)
+    scene.trees.emplace_back(layout.uniform(0.0, length), layout.uniform(10.0, 50.0));
+  return scene;
+}
+
 /// Targets: NCV prediction over kToyDt (paper eq. 4), σ_a = 1 m/s². Trees: static.
 template <int N>
 Gaussian<N> toyPredict(const Gaussian<N>& g) {

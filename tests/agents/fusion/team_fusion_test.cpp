@@ -39,11 +39,7 @@ TEST(TeamFusion, ClosedLoopKeepsItsInvariantsAndAConnectedTeamAgrees) {
   Team team(n);
   for (int i = 0; i < n; ++i) team.positions[i] = Vec2(20.0 + 40.0 * i, 30.0);  // a path graph
   RandomStream motion(3, "test.closed_loop.motion");
-  std::vector<Vec2> targets, velocities;
-  for (int t = 0; t < 8; ++t) {
-    targets.emplace_back(motion.uniform(0.0, 240.0), motion.uniform(10.0, 50.0));
-    velocities.emplace_back(motion.uniform(-2.0, 2.0), motion.uniform(-0.5, 0.5));
-  }
+  test::ToyScene scene = test::toyScene(motion, 8, 0, 240.0);
   std::vector<RandomStream> sensing;
   std::vector<int> serials(n, 0);
   for (int i = 0; i < n; ++i) sensing.emplace_back(3, "test.closed_loop.sensing", i);
@@ -53,9 +49,9 @@ TEST(TeamFusion, ClosedLoopKeepsItsInvariantsAndAConnectedTeamAgrees) {
   config.comm_drop = 0.2;
   TeamFusion fusion(config, n, 3);
   for (int step = 0; step < 100; ++step) {
-    for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += test::kToyDt * velocities[t];
+    scene.advance();
     for (int i = 0; i < n; ++i) {
-      trackLocally(team.targets[i], team.positions[i], targets, sensing[i], i, serials[i]);
+      trackLocally(team.targets[i], team.positions[i], scene.targets, sensing[i], i, serials[i]);
     }
     team.fuse(fusion);
     expectInvariants(team, step);
@@ -121,13 +117,7 @@ TEST(TeamFusion, ConsensusInPartsOnAPoolGivesTheSameListsBitForBit) {
        {FusionMethod::ci, FusionMethod::hcmci, FusionMethod::observer_average}) {
     Team alone(n), pooled(n);
     RandomStream layout(5, "test.parts.layout");
-    std::vector<Vec2> targets, velocities, trees;
-    for (int t = 0; t < 30; ++t) {
-      targets.emplace_back(layout.uniform(0.0, 480.0), layout.uniform(10.0, 50.0));
-      velocities.emplace_back(layout.uniform(-2.0, 2.0), layout.uniform(-0.5, 0.5));
-    }
-    for (int k = 0; k < 40; ++k)
-      trees.emplace_back(layout.uniform(0.0, 480.0), layout.uniform(10.0, 50.0));
+    test::ToyScene scene = test::toyScene(layout, 30, 40, 480.0);
     for (int i = 0; i < n; ++i) {
       alone.positions[i] = pooled.positions[i] = Vec2(20.0 + 40.0 * i, 30.0);  // a path graph
     }
@@ -143,11 +133,12 @@ TEST(TeamFusion, ConsensusInPartsOnAPoolGivesTheSameListsBitForBit) {
     for (int i = 0; i < n; ++i) sensing.emplace_back(9, "test.parts.sensing", i);
     std::vector<int> serials(n, 0);
     for (int step = 0; step < 40; ++step) {
-      for (std::size_t t = 0; t < targets.size(); ++t) targets[t] += test::kToyDt * velocities[t];
+      scene.advance();
       for (int i = 0; i < n; ++i) {
-        // One measurement per agent and step, copied to both teams' lists before fusion.
-        trackLocally(alone.targets[i], alone.positions[i], targets, sensing[i], i, serials[i]);
-        trackLocally(alone.trees[i], alone.positions[i], trees, sensing[i], i, serials[i]);
+        // Each agent's local tracking, copied to both teams' lists before fusion.
+        trackLocally(alone.targets[i], alone.positions[i], scene.targets, sensing[i], i,
+                     serials[i]);
+        trackLocally(alone.trees[i], alone.positions[i], scene.trees, sensing[i], i, serials[i]);
         pooled.targets[i] = alone.targets[i];
         pooled.trees[i] = alone.trees[i];
       }
