@@ -3,6 +3,7 @@
 // of estimates (Schuhmacher, Vo & Vo 2008), the tracking-quality metric of summary.json, and the
 // assignment it shares with GOSPA (metrics/gospa.h).
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "agents/fusion/hungarian.h"
@@ -14,6 +15,13 @@ namespace canopy::metrics {
 ///   min_π Σ_{i≤m} min(c, |x_i − y_π(i)|)^p.
 /// OSPA and GOSPA with α = 2 are both read off one solve (with α = 2 an assignment beyond c costs
 /// c^p, the same as leaving both points unassigned, so the cut-off assignment is GOSPA's too).
+///
+/// Solved exactly by parts: the assignment's cost is c^p·m − Σ_pairs (c^p − d^p) over the pairs
+/// closer than c, so it is a maximum-weight matching on the graph of those pairs, and a matching
+/// is optimal when it is optimal on each connected component of that graph. Each component is
+/// one Hungarian problem (its smaller side as rows), found through a grid of cells of side c. A
+/// team of agents spread over a city has many small components: the work grows with the people
+/// and tracks near each other, not with the square of everyone.
 class CutoffAssignment {
  public:
   CutoffAssignment(double cutoff = 50.0, double order = 2.0) : c_(cutoff), p_(order) {}
@@ -34,6 +42,14 @@ class CutoffAssignment {
   };
   Parts parts() const;
 
+  /// The pairs of the last solve closer than c (truth index, estimate index, d^p), by truth index.
+  struct Pair {
+    int truth = 0;
+    int estimate = 0;
+    double cost = 0.0;  // d^p
+  };
+  std::span<const Pair> pairs() const { return pairs_; }
+
  private:
   double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
 
@@ -41,8 +57,9 @@ class CutoffAssignment {
   int m_ = 0, n_ = 0;
   bool truth_is_small_ = true;  // the truth is the smaller set (rows of the assignment)
   agents::fusion::Hungarian hungarian_;
-  std::vector<double> cost_;  // row-major m × n, reused
-  std::span<const int> assignment_;
+  std::vector<double> cost_;  // one component's row-major costs, reused
+  std::vector<std::pair<int, int>> edges_;  // (small, large) closer than c
+  std::vector<Pair> pairs_;
 };
 
 /// OSPA of order p with cut-off c (m), for |X| = m ≤ n = |Y| (else swap):
