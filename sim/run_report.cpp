@@ -40,6 +40,12 @@ std::string runTable(const std::string& summary_json) {
   if (team.contains("gospa_mean_m")) text += format(", GOSPA %.3g m", number(team, "gospa_mean_m"));
   text += format(" (mean over UAVs and steps; cut-off %g m, order %g)\n",
                  number(team, "ospa_cutoff_m"), number(team, "ospa_order"));
+  if (team.contains("team_ospa_mean_m")) {
+    text += format("team OSPA %.3g m, people held %.1f %% of the time", number(team, "team_ospa_mean_m"),
+                   100.0 * number(team, "held_fraction"));
+    text += format(" (a track within %g m whose 99 %% ellipse holds it; mean over steps)\n",
+                   number(team, "held_distance_m"));
+  }
   const Json& planning = summary.at("timing").at("planning");
   if (planning.empty()) {
     text += "planning: none (scripted paths)\n";

@@ -1,6 +1,8 @@
 #include "sim/summary.h"
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 namespace canopy::sim {
@@ -11,6 +13,9 @@ SummaryBuilder::SummaryBuilder(const spec::ScenarioSpec& spec)
       uavs_(spec.uavs.size()),
       ospa_(spec.uavs.size()),
       gospa_(spec.uavs.size()),
+      interest_range_(spec.fusion.interest_range),
+      roi_ospa_(spec.uavs.size()),
+      steps_held_(spec.targets.size(), 0),
       false_tracks_(spec.uavs.size(), 0),
       plan_seconds_(spec.uavs.size()) {
   for (const spec::TargetSpec& target : spec.targets) {
@@ -74,7 +79,20 @@ void SummaryBuilder::onStep(const StepRecord& record) {
     ospa_[i].push_back(assignment_.ospa());
     gospa_[i].push_back(assignment_.gospa());
     false_tracks_[i] += assignment_.parts().false_estimates;
+    if (!std::isfinite(interest_range_)) continue;
+    // The agent's region of interest: people and tracks within interest_range of its UAV.
+    const Vec2& centre = record.uavs[i].position;
+    auto inside = [&](const Vec2& p) { return (p - centre).norm() <= interest_range_; };
+    roi_truth_.clear();
+    roi_estimates_.clear();
+    std::copy_if(truth_positions_.begin(), truth_positions_.end(), std::back_inserter(roi_truth_),
+                 inside);
+    std::copy_if(estimates_.begin(), estimates_.end(), std::back_inserter(roi_estimates_), inside);
+    assignment_.solve(roi_truth_, roi_estimates_);
+    roi_ospa_[i].push_back(assignment_.ospa());
   }
+  team_.push_back(team_metrics_.compute(truth_positions_, record.beliefs, &held_));
+  for (std::size_t t = 0; t < held_.size(); ++t) steps_held_[t] += held_[t];
   if (record.plan) {
     for (const auto& report : record.plan->reports)
       plan_seconds_[report.agent].push_back(report.seconds);
@@ -103,7 +121,8 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                        {"label", names_.target_labels[t]},
                        {"visible_fraction", tally.steps_visible / steps},
                        {"in_footprint_fraction", tally.steps_in_footprint / steps},
-                       {"mean_coverage", static_cast<double>(tally.coverage) / steps}});
+                       {"mean_coverage", static_cast<double>(tally.coverage) / steps},
+                       {"held_fraction", steps_held_[t] / steps}});
   }
   summary["targets"] = targets;
   Json uavs = Json::array();
@@ -119,6 +138,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
                 {"ospa_m", ospa_[i]},
                 {"gospa_mean_m", mean(gospa_[i])},
                 {"gospa_m", gospa_[i]},
+                {"roi_ospa_mean_m", std::isfinite(interest_range_) ? mean(roi_ospa_[i]) : mean(ospa_[i])},
                 {"false_track_steps", false_tracks_[i]},
                 {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps},
                 {"contacts", uavs_[i].contacts},
@@ -162,6 +182,28 @@ std::string SummaryBuilder::json(double wall_seconds) const {
       {"false_track_steps", false_track_steps},
       // Contacts begun, summed over agents (a contact between two agents counts for both).
       {"contacts", contacts}};
+  // The team's figures (sim/team_metrics.h): per step, and their means over the run.
+  std::vector<double> team_ospa, team_gospa, held_fraction;
+  std::vector<int> team_estimates;
+  const double people = std::max<std::size_t>(1, targets_.size());
+  for (const TeamFigures& f : team_) {
+    team_ospa.push_back(f.ospa);
+    team_gospa.push_back(f.gospa);
+    held_fraction.push_back(targets_.empty() ? 1.0 : f.held / people);
+    team_estimates.push_back(f.estimates);
+  }
+  summary["team"]["team_ospa_mean_m"] = mean(team_ospa);
+  summary["team"]["team_gospa_mean_m"] = mean(team_gospa);
+  summary["team"]["held_fraction"] = mean(held_fraction);
+  summary["team"]["held_at_end"] = team_.empty() ? 0 : team_.back().held;
+  summary["team"]["held_distance_m"] = kHeldDistance;
+  summary["team"]["held_gate_chi2"] = kHeldGate;
+  summary["team"]["interest_range_m"] =
+      std::isfinite(interest_range_) ? Json(interest_range_) : Json(nullptr);
+  summary["team_by_step"] = {{"ospa_m", team_ospa},
+                             {"gospa_m", team_gospa},
+                             {"held_fraction", held_fraction},
+                             {"estimates", team_estimates}};
   if (steps_ > 0) {
     const agents::fusion::FusionDiagnostics& d = fusion_at_end_;
     summary["fusion_diagnostics"] = {{"messages", d.messages},

@@ -7,6 +7,7 @@
 #include "agents/fusion/fusion_diagnostics.h"
 #include "agents/planning/intention_links.h"
 #include "metrics/ospa.h"
+#include "sim/team_metrics.h"
 #include "sim/step_observer.h"
 #include "spec/scenario_spec.h"
 
@@ -40,6 +41,8 @@ class SummaryBuilder final : public StepObserver {
   /// ospa()[i][k]: OSPA (c = 50 m, p = 2) between the true target positions and agent i's
   /// confirmed track positions at step k (m).
   const std::vector<std::vector<double>>& ospa() const { return ospa_; }
+  /// Per step: the team's figures (sim/team_metrics.h).
+  const std::vector<TeamFigures>& team() const { return team_; }
 
  private:
   struct Names {
@@ -58,6 +61,15 @@ class SummaryBuilder final : public StepObserver {
   metrics::CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
   std::vector<std::vector<double>> ospa_;            // [agent][k], m
   std::vector<std::vector<double>> gospa_;           // [agent][k], m
+  // Region of interest: the people and tracks within interest_range of the agent (∞: all of
+  // them, and the figures are ospa_'s).
+  double interest_range_;
+  std::vector<std::vector<double>> roi_ospa_;  // [agent][k], m
+  std::vector<Vec2> roi_truth_, roi_estimates_;
+  TeamMetrics team_metrics_;
+  std::vector<TeamFigures> team_;      // [k]
+  std::vector<char> held_;             // scratch: per person, held this step
+  std::vector<int> steps_held_;        // [person]
   std::vector<long> false_tracks_;  // [agent]: Σ_k confirmed tracks with no target within c
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
