@@ -45,11 +45,20 @@ struct TrackingConfig {
   double birth_existence = 0.1;        // r of a track born from a measurement
   double confirm_existence = 0.9;      // confirmed once r reaches this (existence confirmation)
   double delete_existence = 0.05;      // deleted once r falls below this (existence confirmation)
-  // Duplicates (target tracks): merged after merge_scans consecutive scans in which the
-  // track-to-track distance d² = Δxᵀ (P_a + P_b)⁻¹ Δx (4-D state) is at most merge_gate (χ²₄; 7.78
-  // is its 90 % quantile). merge_scans = 0 turns merging off.
+  // Duplicates (target tracks; agents/tracking/duplicates.h): two confirmed tracks merge after
+  // merge_scans consecutive scans in which both are certain (tr(P_pos) ≤ 2·merge_distance²),
+  // their means lie within merge_distance, the track-to-track distance
+  // d² = Δxᵀ (P_a + P_b)⁻¹ Δx (4-D state) is at most merge_gate (χ²₄; 7.78 is its 90 % quantile),
+  // and the own scan's strongest measurement of both is the same one. merge_scans = 0: never.
   double merge_gate = 7.78;
   int merge_scans = 3;
+  double merge_distance = 2.0;  // m
+  // Known people (pre-seeded tracks; agents/tracking/known_people.h) are never deleted: unseen, a
+  // track becomes lost (tr(P_pos) > delete_trace) and its velocity's σ stays within walk_speed,
+  // its position's within the area's (a uniform spread over it), its mean inside the area.
+  double walk_speed = 2.0;  // m/s
+  // Not a scenario field: the scenario's area of interest (the loader's aoi), the bound above.
+  Aabb area{Vec2(-1e6, -1e6), Vec2(1e6, 1e6)};
 };
 
 enum class FusionMethod { ci, hcmci, observer_average };

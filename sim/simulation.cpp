@@ -10,6 +10,7 @@ namespace canopy::sim {
 agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec) {
   agents::TeamConfig config;
   config.tracking = spec.tracking;
+  config.tracking.area = spec.aoi;  // bounds a lost known person (agents/tracking/known_people.h)
   config.fusion = spec.fusion;
   config.planner = spec.planner;
   for (const spec::UavSpec& uav : spec.uavs) {

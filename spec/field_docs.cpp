@@ -127,7 +127,14 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"tracking.merge_gate", "",
        "χ²₄ gate on the track-to-track distance Δxᵀ(P_a + P_b)⁻¹Δx of two duplicates"},
       {"tracking.merge_scans", "",
-       "duplicates merged after this many consecutive scans within merge_gate (0: never)"},
+       "duplicates merged after this many consecutive scans that pass the duplicate test (0: "
+       "never)"},
+      {"tracking.merge_distance", "m",
+       "duplicates: both confirmed with tr(P_pos) ≤ 2·this², means within this, updated by one "
+       "detection of the own scan"},
+      {"tracking.walk_speed", "m/s",
+       "a known (pre-seeded) person's speed at most: bounds the velocity of a lost track, which "
+       "is never deleted"},
       {"fusion", "", "consensus fusion between agents"},
       {"fusion.method", "", "ci, hcmci or observer_average"},
       {"fusion.rounds", "", "L consensus rounds per step"},

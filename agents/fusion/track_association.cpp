@@ -327,6 +327,7 @@ void TrackAssociation<N>::writeOut(std::span<TrackList> lists, Clusters& cluster
     copy.expected_misses = 0;
     copy.detected = false;
     copy.merge_streak = 0;  // its partner was a track of the source's list
+    copy.strongest_detection = -1;  // the source's scan, not this agent's
     TrackList& list = lists[adoption.agent];
     list.push_back(copy);
     clusters.members[order_[adoption.cluster]++] = {adoption.agent,

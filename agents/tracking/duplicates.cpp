@@ -26,19 +26,27 @@ double trackDistance(const TargetGaussian& a, const TargetGaussian& b) {
   return llt.matrixL().solve(dx).squaredNorm();  // d² = Δxᵀ S⁻¹ Δx = |L⁻¹ Δx|²
 }
 
-int DuplicateMerger::merge(std::vector<TargetTrack>& tracks, double gate, int scans) {
+int DuplicateMerger::merge(std::vector<TargetTrack>& tracks, double gate, int scans,
+                           double distance) {
   if (scans <= 0) return 0;
   const int n = static_cast<int>(tracks.size());
   partner_.assign(n, -1);
   best_.assign(n, kInfinity);
+  const double certain_trace = 2.0 * distance * distance;  // tr(P_pos) of a certain track
+  auto candidate = [&](const TargetTrack& t) {
+    return t.status == TrackStatus::confirmed && t.strongest_detection >= 0 &&
+           t.posterior.P(0, 0) + t.posterior.P(1, 1) <= certain_trace;
+  };
   for (int a = 0; a < n; ++a) {
+    if (!candidate(tracks[a])) continue;
     const TargetGaussian& ga = tracks[a].posterior;
     for (int b = a + 1; b < n; ++b) {
-      if (tracks[b].label != tracks[a].label) continue;
+      if (tracks[b].label != tracks[a].label || !candidate(tracks[b])) continue;
+      if (tracks[b].strongest_detection != tracks[a].strongest_detection) continue;
+      if (tracks[a].key.origin == kKnownOrigin && tracks[b].key.origin == kKnownOrigin)
+        continue;  // two people the scenario names are two people
       const TargetGaussian& gb = tracks[b].posterior;
-      // d² ≥ d²_pos ≥ |Δp|² / tr(S_pos): a cheap test that rejects most pairs exactly.
-      const double trace_pos = ga.P(0, 0) + ga.P(1, 1) + gb.P(0, 0) + gb.P(1, 1);
-      if ((ga.x.head<2>() - gb.x.head<2>()).squaredNorm() > gate * trace_pos) continue;
+      if ((ga.x.head<2>() - gb.x.head<2>()).squaredNorm() > distance * distance) continue;
       const double d2 = trackDistance(ga, gb);
       if (!(d2 <= gate)) continue;
       if (d2 < best_[a]) {

@@ -216,4 +216,16 @@ int Jpdaf::likelyMeasurement(int k) const {
   return -1;
 }
 
+int Jpdaf::strongestMeasurement(int k, double floor) const {
+  int best = -1;
+  double best_beta = floor;
+  for (int p = pair_start_[k]; p < pair_start_[k + 1]; ++p) {
+    if (beta_[p] >= best_beta) {
+      best_beta = beta_[p];
+      best = pairs_[p].measurement;
+    }
+  }
+  return best;
+}
+
 }  // namespace canopy::agents::tracking

@@ -54,6 +54,10 @@ class Jpdaf {
   /// After step(): the measurement (index into obs_ids) that is more likely than not
   /// tracks[track_ids[k]]'s own (β > ½), or −1.
   int likelyMeasurement(int k) const;
+  /// After step(): the measurement (index into obs_ids) with the largest β_tj of
+  /// tracks[track_ids[k]], if that β is at least `floor`; else −1. Two tracks on one target
+  /// share its one measurement (their β add up to at most 1), so each names it here.
+  int strongestMeasurement(int k, double floor) const;
 
  private:
   struct Pair {

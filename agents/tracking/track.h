@@ -13,6 +13,9 @@ namespace canopy::agents::tracking {
 
 enum class TrackStatus { tentative, confirmed };
 
+/// The origin of the keys of pre-seeded tracks: the people the scenario says exist.
+inline constexpr int kKnownOrigin = -1;
+
 template <int N>
 struct Track {
   TrackKey key;  // global key; {-1, t} for tracks pre-seeded from the scenario
@@ -30,9 +33,12 @@ struct Track {
   double existence_prior = 1.0;
   double visibility = 1.0;  // this scan: P(visible) of the predicted position to the own camera
   // Duplicate test (Tracker::mergeDuplicates): the track that passed the test last scan and for
-  // how many consecutive scans it has.
+  // how many consecutive scans it has; and this scan's measurement (index into the own scan's
+  // observations) with the largest association probability, −1 for none or for a copy adopted
+  // from a neighbour (its measurements are not the own scan's).
   TrackKey merge_partner;
   int merge_streak = 0;
+  int strongest_detection = -1;
   // Trees only: the outline of a polygonal crown or wall, when one was measured.
   [[no_unique_address]] std::conditional_t<N == 3, TreeOutline, NoOutline> outline;
 };
@@ -47,6 +53,7 @@ struct TrackingDiagnostics {
   long births = 0;
   long deletions = 0;
   long merges = 0;  // duplicate tracks merged into another (counted in deletions too)
+  long reacquisitions = 0;  // lost known people found again by a newborn track (agents/tracking/known_people.h)
 };
 
 }  // namespace canopy::agents::tracking

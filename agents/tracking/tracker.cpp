@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "agents/tracking/existence.h"
+#include "agents/tracking/known_people.h"
 #include "agents/tracking/measurement_model.h"
 #include "agents/tracking/motion_model.h"
 
@@ -11,6 +12,8 @@ namespace {
 
 // Σ_j β_tj from which a scan counts as a hit for confirmation.
 constexpr double kHitProbability = 0.5;
+// β_tj from which measurement j counts as one that updated track t (the duplicate test).
+constexpr double kSharedProbability = 0.1;
 
 // Expected visible: the predicted position lies in the own footprint and is not hidden from the
 // own camera by the own occlusion map — for targets under a crown (from above) or behind one
@@ -70,8 +73,14 @@ void Tracker::predict(double dt) {
   const double survival = scanSurvival(config_.survival_probability, dt);  // p_S over dt
   for (TargetTrack& track : targets_) {
     track.prior = predictNcv(track.posterior, dt, config_.sigma_a);
+    track.strongest_detection = -1;
+    if (isKnown(track.key)) {  // a known person does not leave: p_S = 1, r = 1
+      boundKnownPerson(track.prior, config_.area, config_.walk_speed,
+                       isLost(track.prior, config_.delete_trace));
+      track.existence = 1.0;
+    }
     track.posterior = track.prior;
-    track.existence_prior = survival * track.existence;  // ψ = p_S r
+    track.existence_prior = isKnown(track.key) ? 1.0 : survival * track.existence;  // ψ = p_S r
     track.existence = track.existence_prior;
   }
   for (TreeTrack& track : trees_) {  // trees do not go away: p_S = 1
@@ -129,6 +138,10 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     // the target's next measurements with it but mostly loses them, so it is dropped instead of
     // confirmed as a duplicate.
     if (jpdaf_.detectionProbability(k) >= kHitProbability) ++track.hits;
+    if constexpr (N == 4) {
+      const int l = jpdaf_.strongestMeasurement(k, kSharedProbability);
+      track.strongest_detection = l >= 0 ? obs_ids_[l] : -1;
+    }
     if constexpr (N == 3) {  // a crown's outline, from the measurement most likely its own
       const int l = jpdaf_.likelyMeasurement(k);
       if (l >= 0) track.outline.observe(scan.observations[obs_ids_[l]].outline);
@@ -195,7 +208,8 @@ void Tracker::adopt(std::vector<TargetTrack>&& targets, std::vector<TreeTrack>&&
 }
 
 void Tracker::mergeDuplicates() {
-  const int merged = merger_.merge(targets_, config_.merge_gate, config_.merge_scans);
+  const int merged =
+      merger_.merge(targets_, config_.merge_gate, config_.merge_scans, config_.merge_distance);
   diagnostics_.merges += merged;
   diagnostics_.deletions += merged;
 }
@@ -210,6 +224,9 @@ void Tracker::deleteStale(std::vector<Track<N>>& tracks) {
   const auto deleted = std::erase_if(tracks, [this](const Track<N>& track) {
     const Gaussian<N>& g = track.posterior;
     if (!g.x.allFinite() || !g.P.allFinite()) return true;
+    if constexpr (N == 4) {
+      if (isKnown(track.key)) return false;  // lost, perhaps, but never forgotten
+    }
     const double trace_pos = g.P(0, 0) + g.P(1, 1);  // tr(P_pos) (m²)
     if (trace_pos > config_.delete_trace) return true;
     if (config_.confirmation == TrackConfirmation::existence &&

@@ -29,7 +29,8 @@ class Tracker {
   void preseed(int target, sensing::LabelId label, const Vec4& state);
 
   /// Every track: prior = prediction over dt (s) — NCV for targets, static for trees — and
-  /// posterior = prior.
+  /// posterior = prior. A known person's prediction is bounded (agents/tracking/known_people.h)
+  /// and its existence stays 1.
   void predict(double dt);
 
   /// The local JIPDA per label on this scan's observations (each track's P_D is P_D × its
@@ -55,8 +56,9 @@ class Tracker {
 
   /// Deletes tracks with tr(P_pos) > delete_trace (or a non-finite posterior), with existence
   /// below delete_existence (existence confirmation), and, when delete_misses > 0, tracks missed
-  /// that many consecutive scans while expected visible. Called by the agent after fusion, so it
-  /// judges the fused posteriors and existences.
+  /// that many consecutive scans while expected visible. Known people (pre-seeded keys) are never
+  /// deleted but for a non-finite posterior (agents/tracking/known_people.h). Called by the agent
+  /// after fusion, so it judges the fused posteriors and existences.
   void deleteStale();
 
   /// Merges duplicate target tracks (agents/tracking/duplicates.h): a pair whose track-to-track

@@ -89,6 +89,8 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
   t.delete_existence = reader.number("delete_existence", t.delete_existence, Bound::unit_interval);
   t.merge_gate = reader.number("merge_gate", t.merge_gate, Bound::non_negative);
   t.merge_scans = reader.integer("merge_scans", t.merge_scans, 0, 1000);
+  t.merge_distance = reader.number("merge_distance", t.merge_distance, Bound::positive);
+  t.walk_speed = reader.number("walk_speed", t.walk_speed, Bound::positive);
   reader.finish();
 }
 

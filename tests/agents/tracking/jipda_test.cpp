@@ -2,8 +2,10 @@
 // sigma points, existence under a known crown against the open, and duplicate merging.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "agents/tracking/duplicates.h"
 #include "agents/tracking/existence.h"
 #include "agents/tracking/tracker.h"
 #include "core/random.h"
@@ -17,6 +19,9 @@ using test::gaussianDensity;
 using test::targetObservation;
 
 constexpr double kDt = 0.2;  // s
+
+using test::addUnknown;
+using test::unknownTrack;
 
 const TargetTrack* find(const Tracker& tracker, TrackKey key) {
   for (const TargetTrack& t : tracker.targets()) {
@@ -36,7 +41,7 @@ double bayesAfterNothing(double psi, double p_d, double p_g) {
 TEST(Jipda, ExistenceAfterMissesMatchesBayes) {
   TrackingConfig config;
   Tracker tracker(0, config);
-  tracker.preseed(0, 1, Vec4::Zero());
+  addUnknown(tracker, {unknownTrack(0, Vec4::Zero(), Mat4::Identity())});
   const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 100.0);
   const double p_s = std::pow(config.survival_probability, kDt);  // per scan
   double r = 1.0;
@@ -62,7 +67,7 @@ TEST(Jipda, ExistenceAndStateWithOneMeasurementMatchBayes) {
   TrackingConfig config;
   config.survival_probability = 0.5;  // ψ = 0.5^0.2 ≈ 0.87: far from 1, so r⁺ moves visibly
   Tracker tracker(0, config);
-  tracker.preseed(0, 1, Vec4::Zero());
+  addUnknown(tracker, {unknownTrack(0, Vec4::Zero(), Mat4::Identity())});
   tracker.predict(kDt);
   const double r_noise = 0.5;  // m², R = r I
   const Vec2 z(0.9, -0.4);
@@ -143,15 +148,16 @@ TEST(Jipda, VisibilityByLineOfSightBehindAWall) {
 // predictions P_pp = 0.25 + 0.01 · 4² + σ_a² τ⁴ · 20 (4 · 20² − 1) / 12 = 4.67 m², so √3 σ =
 // 3.7 m < 5 m): P(visible) = 0, so only survival acts, r = p_S(1 s)^(20 τ) = 0.95⁴ = 0.8145.
 // In the open the same track is deleted at the first scan whose Bayes existence (above) falls
-// below delete_existence: the fourth (r = 0.920, 0.545, 0.121, 0.016 with the defaults).
+// below delete_existence: the fourth (r = 0.920, 0.545, 0.121, 0.016 with the defaults). Both
+// are tracks of people the scenario does not name; a known person's is never deleted (below).
 TEST(Jipda, UnseenUnderAKnownCrownKeepsExistenceUnseenInTheOpenIsDeleted) {
   TrackingConfig config;
-  config.preseed_variance = Vec4(0.25, 0.25, 0.01, 0.01);
+  const Mat4 P0 = Vec4(0.25, 0.25, 0.01, 0.01).asDiagonal();
   const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 30.0);
   const OcclusionMap crown({world::TreeDef::disc(Vec2(5.0, 5.0), 5.0)});
 
   Tracker hidden(0, config);
-  hidden.preseed(0, 1, Vec4(5.0, 5.0, 0.0, 0.0));
+  addUnknown(hidden, {unknownTrack(0, Vec4(5.0, 5.0, 0.0, 0.0), P0)});
   for (int k = 0; k < 20; ++k) {
     hidden.predict(kDt);
     hidden.update(sensing::Scan{}, footprint, crown);
@@ -170,7 +176,7 @@ TEST(Jipda, UnseenUnderAKnownCrownKeepsExistenceUnseenInTheOpenIsDeleted) {
   }
   EXPECT_EQ(expected_deletion, 4);
   Tracker open(0, config);
-  open.preseed(0, 1, Vec4(5.0, 5.0, 0.0, 0.0));
+  addUnknown(open, {unknownTrack(0, Vec4(5.0, 5.0, 0.0, 0.0), P0)});
   int deleted_at = 0;
   for (int k = 1; k <= 20 && deleted_at == 0; ++k) {
     open.predict(kDt);
@@ -180,6 +186,57 @@ TEST(Jipda, UnseenUnderAKnownCrownKeepsExistenceUnseenInTheOpenIsDeleted) {
     if (open.targets().empty()) deleted_at = k;
   }
   EXPECT_EQ(deleted_at, expected_deletion);
+}
+
+// A known (pre-seeded) person unseen in the open for 60 s: never deleted, existence 1, lost once
+// tr(P_pos) > delete_trace, and its P within the bounds of known_people.h for a 100 × 60 m area
+// and walk_speed 1.5 m/s: σ_x² ≤ 100²/12 = 833.3 m², σ_y² ≤ 60²/12 = 300 m², σ_v² ≤ 2.25 m²/s²,
+// its mean inside the area. Then a UAV flies over it: a measurement 30 m from the mean, far out
+// of an unknown track's gate, is taken by the lost track (no birth), which is held again (its
+// mean within 1 m of the person, tr(P_pos) < 1 m²) within 10 scans.
+TEST(Jipda, AKnownPersonUnseenForAMinuteIsLostNotDeletedAndReacquired) {
+  TrackingConfig config;
+  config.walk_speed = 1.5;
+  config.area = Aabb{Vec2(0.0, 0.0), Vec2(100.0, 60.0)};
+  Tracker tracker(0, config);
+  tracker.preseed(0, 1, Vec4(50.0, 30.0, 1.0, 0.5));
+  const sensing::Footprint far_away = discFootprint(Vec2(-500.0, -500.0), 10.0);
+  bool lost = false;
+  for (int k = 1; k <= 300; ++k) {  // 60 s of scans without the person in view
+    tracker.predict(kDt);
+    tracker.update(sensing::Scan{}, far_away, OcclusionMap());
+    tracker.mergeDuplicates();
+    tracker.deleteStale();
+    ASSERT_EQ(tracker.targets().size(), 1u) << "scan " << k;
+    const TargetTrack& t = tracker.targets()[0];
+    EXPECT_EQ(t.existence, 1.0);
+    EXPECT_LE(t.posterior.P(0, 0), 100.0 * 100.0 / 12.0 * (1 + 1e-12)) << "scan " << k;
+    EXPECT_LE(t.posterior.P(1, 1), 60.0 * 60.0 / 12.0 * (1 + 1e-12)) << "scan " << k;
+    EXPECT_LE(t.posterior.P(2, 2), 2.25 * (1 + 1e-12)) << "scan " << k;
+    EXPECT_LE(t.posterior.P(3, 3), 2.25 * (1 + 1e-12)) << "scan " << k;
+    EXPECT_TRUE(config.area.contains(t.posterior.x.head<2>())) << "scan " << k;
+    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat4>(t.posterior.P).eigenvalues().minCoeff(), -1e-9);
+    lost = lost || t.posterior.P(0, 0) + t.posterior.P(1, 1) > config.delete_trace;
+  }
+  EXPECT_TRUE(lost);
+  const Vec2 mean = tracker.targets()[0].posterior.x.head<2>();
+  const Vec2 person = mean + Vec2(30.0, 0.0).cwiseMin(config.area.hi - mean);
+  const Mat2 R = 0.3 * Mat2::Identity();
+  RandomStream rng(5, "jipda_test_reacquire");
+  int held_at = 0;
+  for (int k = 1; k <= 10 && held_at == 0; ++k) {
+    sensing::Scan scan;
+    scan.observations.push_back(targetObservation(person + rng.gaussian(R), R));
+    tracker.predict(kDt);
+    tracker.update(scan, discFootprint(person, 10.0), OcclusionMap());
+    tracker.mergeDuplicates();
+    tracker.deleteStale();
+    ASSERT_EQ(tracker.targets().size(), 1u) << "scan " << k << ": a birth beside the lost track";
+    const TargetGaussian& g = tracker.targets()[0].posterior;
+    if ((g.x.head<2>() - person).norm() < 1.0 && g.P(0, 0) + g.P(1, 1) < 1.0) held_at = k;
+  }
+  EXPECT_GT(held_at, 0) << "not held again within 10 scans";
+  EXPECT_EQ(tracker.diagnostics().births, 0);
 }
 
 // A target walking at (1, 0.5) m/s, measured every scan with R = 0.3 I; step() runs one scan.
@@ -201,8 +258,8 @@ TEST(Jipda, TwoTracksOnOneTargetMergeWithinFiveScans) {
   // distance passes merge_gate from the first scan, so they merge at scan merge_scans = 3.
   TrackingConfig config;
   Tracker tracker(0, config);
-  tracker.preseed(0, 1, Vec4(0.0, 0.0, 1.0, 0.5));
-  tracker.preseed(1, 1, Vec4(1.5, 0.0, 1.0, 0.5));
+  addUnknown(tracker, {unknownTrack(0, Vec4(0.0, 0.0, 1.0, 0.5), Mat4::Identity()),
+                       unknownTrack(1, Vec4(1.5, 0.0, 1.0, 0.5), Mat4::Identity())});
   const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 100.0);
   Walk walk;
   int merged_at = 0;
@@ -218,6 +275,61 @@ TEST(Jipda, TwoTracksOnOneTargetMergeWithinFiveScans) {
   EXPECT_EQ(tracker.diagnostics().merges, 1);
   EXPECT_EQ(tracker.targets()[0].status, TrackStatus::confirmed);
   EXPECT_NEAR(tracker.targets()[0].posterior.x(0), walk.truth.x(), 1.0);
+}
+
+TEST(Jipda, TwoKnownPeopleOnOneSpotAreNeverMerged) {
+  // The same two tracks as above, but both pre-seeded: the scenario says they are two people.
+  TrackingConfig config;
+  Tracker tracker(0, config);
+  tracker.preseed(0, 1, Vec4(0.0, 0.0, 1.0, 0.5));
+  tracker.preseed(1, 1, Vec4(1.5, 0.0, 1.0, 0.5));
+  const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 100.0);
+  Walk walk;
+  for (int k = 1; k <= 10; ++k) {
+    tracker.predict(kDt);
+    tracker.update(walk.next(), footprint, OcclusionMap());
+    tracker.mergeDuplicates();
+    tracker.deleteStale();
+  }
+  EXPECT_EQ(tracker.targets().size(), 2u);
+  EXPECT_EQ(tracker.diagnostics().merges, 0);
+}
+
+// Two people who walk side by side 1 m apart, unseen for 10 s (their tracks' P grows far past
+// the duplicate test's certainty), then cross under that covariance while a UAV sees them both:
+// two detections in each scan, so never one pair updated by one detection; never merged. Under
+// the old test (Mahalanobis with P_a + P_b alone) the uncertain pair would pass it.
+TEST(Jipda, TwoPeopleWhoCrossUnderLargeCovarianceAreNotMerged) {
+  TrackingConfig config;
+  Tracker tracker(0, config);
+  addUnknown(tracker, {unknownTrack(0, Vec4(0.0, 0.0, 1.0, 0.0), Mat4::Identity()),
+                       unknownTrack(1, Vec4(0.0, 1.0, 1.0, 0.0), Mat4::Identity())});
+  const sensing::Footprint nowhere = discFootprint(Vec2(-1000.0, 0.0), 5.0);
+  for (int k = 0; k < 50; ++k) {  // 10 s unseen
+    tracker.predict(kDt);
+    tracker.update(sensing::Scan{}, nowhere, OcclusionMap());
+    tracker.mergeDuplicates();
+  }
+  ASSERT_EQ(tracker.targets().size(), 2u);
+  const TargetGaussian& a = tracker.targets()[0].posterior;
+  const TargetGaussian& b = tracker.targets()[1].posterior;
+  ASSERT_GT(a.P(0, 0) + a.P(1, 1), 2.0 * config.merge_distance * config.merge_distance);
+  ASSERT_LE(trackDistance(a, b), config.merge_gate);  // the old test alone would pass them
+  RandomStream rng(9, "jipda_test_cross");
+  Vec2 p(10.0, 0.0), q(10.0, 1.0);
+  const Mat2 R = 0.3 * Mat2::Identity();
+  for (int k = 0; k < 30; ++k) {  // 6 s: p keeps east, q turns south-east and crosses p's line
+    p += kDt * Vec2(1.0, 0.0);
+    q += kDt * Vec2(1.0, -0.3);
+    sensing::Scan scan;
+    scan.observations.push_back(targetObservation(p + rng.gaussian(R), R));
+    scan.observations.push_back(targetObservation(q + rng.gaussian(R), R));
+    tracker.predict(kDt);
+    tracker.update(scan, discFootprint(p, 30.0), OcclusionMap());
+    tracker.mergeDuplicates();
+    ASSERT_EQ(tracker.targets().size(), 2u) << "scan " << k;
+  }
+  EXPECT_EQ(tracker.diagnostics().merges, 0);
 }
 
 TEST(Jipda, TwoTargetsPassingEachOtherAreNotMerged) {

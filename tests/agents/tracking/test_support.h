@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "agents/occlusion_map.h"
+#include "agents/tracking/tracker.h"
 #include "sensing/footprint.h"
 #include "sensing/observation.h"
 
@@ -42,6 +43,24 @@ inline double gaussianDensity(const Vec2& nu, const Mat2& S) {
   const double det = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
   const Mat2 S_inv = Mat2{{S(1, 1), -S(0, 1)}, {-S(1, 0), S(0, 0)}} / det;
   return std::exp(-0.5 * nu.dot(S_inv * nu)) / (2.0 * std::numbers::pi * std::sqrt(det));
+}
+
+/// A confirmed track of a person the scenario does not name (key {0, serial}, not a known
+/// person's kKnownOrigin), with existence 1 and P = P₀.
+inline TargetTrack unknownTrack(int serial, const Vec4& x, const Mat4& P) {
+  TargetTrack track;
+  track.key = {0, serial};
+  track.posterior = {x, P};
+  track.prior = track.posterior;
+  track.status = TrackStatus::confirmed;
+  return track;
+}
+
+/// Adds `tracks` after the tracker's own, as fusion would hand them over.
+inline void addUnknown(Tracker& tracker, std::vector<TargetTrack> tracks) {
+  std::vector<TreeTrack> trees;
+  tracks.insert(tracks.begin(), tracker.targets().begin(), tracker.targets().end());
+  tracker.adopt(std::move(tracks), std::move(trees));
 }
 
 }  // namespace canopy::agents::tracking::test

@@ -14,7 +14,9 @@
 namespace canopy::agents::tracking {
 namespace {
 
+using test::addUnknown;
 using test::discFootprint;
+using test::unknownTrack;
 using test::targetObservation;
 using test::treeObservation;
 
@@ -135,7 +137,7 @@ TEST(Tracker, DeletesWhenPositionTraceExceedsThreshold) {
   //   P_pp(n) = 1 + (nτ)² + σ_a² τ⁴ n (4n² − 1) / 12, and tr(P_pos) = 2 P_pp.
   TrackingConfig config = mOfN();
   Tracker tracker(0, config);
-  tracker.preseed(0, 1, Vec4::Zero());
+  addUnknown(tracker, {unknownTrack(0, Vec4::Zero(), Mat4::Identity())});  // known: never deleted
   auto trace = [&](int n) {
     return 2.0 *
            (1.0 + std::pow(n * kDt, 2) +
@@ -156,9 +158,10 @@ TEST(Tracker, ExpectedMissRuleDeletesOnlyVisibleTracks) {
   TrackingConfig config = mOfN();
   config.delete_misses = 3;
   Tracker tracker(0, config);
-  tracker.preseed(0, 1, Vec4(5.0, 5.0, 0.0, 0.0));    // in the footprint, in the open
-  tracker.preseed(1, 1, Vec4(80.0, 0.0, 0.0, 0.0));   // outside the footprint
-  tracker.preseed(2, 1, Vec4(-5.0, -5.0, 0.0, 0.0));  // in the footprint, under a known crown
+  const Mat4 P0 = Mat4::Identity();  // people the scenario does not name (known: never deleted)
+  addUnknown(tracker, {unknownTrack(0, Vec4(5.0, 5.0, 0.0, 0.0), P0),     // in the open
+                       unknownTrack(1, Vec4(80.0, 0.0, 0.0, 0.0), P0),    // outside the footprint
+                       unknownTrack(2, Vec4(-5.0, -5.0, 0.0, 0.0), P0)});  // under a known crown
   const sensing::Footprint footprint = discFootprint(Vec2::Zero(), 20.0);
   const OcclusionMap map({world::TreeDef::disc(Vec2(-5.0, -5.0), 3.0)});
   step(tracker, sensing::Scan{}, footprint, map);
@@ -167,8 +170,8 @@ TEST(Tracker, ExpectedMissRuleDeletesOnlyVisibleTracks) {
   EXPECT_EQ(tracker.targets()[0].expected_misses, 2);
   step(tracker, sensing::Scan{}, footprint, map);
   ASSERT_EQ(tracker.targets().size(), 2u);
-  EXPECT_EQ(tracker.targets()[0].key, (TrackKey{-1, 1}));
-  EXPECT_EQ(tracker.targets()[1].key, (TrackKey{-1, 2}));
+  EXPECT_EQ(tracker.targets()[0].key, (TrackKey{0, 1}));
+  EXPECT_EQ(tracker.targets()[1].key, (TrackKey{0, 2}));
   EXPECT_EQ(tracker.targets()[0].expected_misses, 0);
   EXPECT_EQ(tracker.targets()[1].expected_misses, 0);
 }
