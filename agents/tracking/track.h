@@ -53,7 +53,6 @@ struct TrackingDiagnostics {
   long births = 0;
   long deletions = 0;
   long merges = 0;  // duplicate tracks merged into another (counted in deletions too)
-  long reacquisitions = 0;  // lost known people found again by a newborn track (agents/tracking/known_people.h)
 };
 
 }  // namespace canopy::agents::tracking
