@@ -102,7 +102,14 @@ void removeStaleFrames(const std::filesystem::path& out_dir) {
 
 }  // namespace
 
+void checkRunOutputs(const std::filesystem::path& out_dir) {
+  for (const char* name : kRunFiles) checkOutputFile(out_dir / name);
+  for (const char* name : {"replay.html", "frames.mp4"}) checkOutputFile(out_dir / name);
+  checkOutputEntries(out_dir / "frames");
+}
+
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options) {
+  checkRunOutputs(options.out_dir);
   makeOutputDirectories(options.out_dir, options.out_dir);
   // The files of an earlier run would be read as this run's if this one failed part way.
   for (const char* name : kRunFiles) removeOutputFile(options.out_dir / name);
