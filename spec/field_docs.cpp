@@ -127,8 +127,8 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"tracking.confirm_existence", "",
        "existence: confirmed once existence reaches this; at least delete_existence"},
       {"tracking.delete_existence", "",
-       "existence: deleted once existence falls below this; below birth_existence (else every "
-       "newborn track is deleted at birth) and at most confirm_existence"},
+       "existence: deleted once existence falls below this; at most birth_existence (else every "
+       "newborn track is dropped at birth) and at most confirm_existence"},
       {"tracking.merge_gate", "",
        "χ²₄ gate on the track-to-track distance Δxᵀ(P_a + P_b)⁻¹Δx of two duplicates"},
       {"tracking.merge_scans", "",
