@@ -122,6 +122,11 @@ RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options)
       std::error_code ignored;
       std::filesystem::remove(options.out_dir / name, ignored);
     }
+    try {
+      removeStaleFrames(options.out_dir);  // the frames of the steps before it, too
+    } catch (const std::exception&) {
+      // the run's own error is the one to report
+    }
     throw;
   }
 }

@@ -25,7 +25,8 @@ struct RunResult {
 /// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
 /// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
 /// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
-/// from an observer) removes whatever of these it wrote, so out_dir never holds a partial record or
+/// from an observer, a state that is not finite) removes whatever of these it wrote, frames
+/// included, so out_dir never holds a partial record or
 /// a summary of a run that did not finish. checkRunOutputs runs before anything is removed.
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options);
 
