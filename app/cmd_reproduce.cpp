@@ -43,6 +43,19 @@ class Reproduce : public Command {
 
 int Reproduce::run() {
   if (out_.empty()) usageError("reproduce", "expected --out DIR");
+  // Every folder it will write into, before the first trial runs.
+  checkOutputFile(std::filesystem::path(out_) / "report.md");
+  // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
+  const std::vector<analysis::Experiment> paper = analysis::paperExperiments(trials_, seed_);
+  const std::vector<analysis::Experiment> sensitivity =
+      analysis::sensitivityStudies(std::max(1, trials_ / 2), seed_);
+  for (const auto* experiments : {&paper, &sensitivity}) {
+    for (const analysis::Experiment& experiment : *experiments) {
+      const std::filesystem::path dir = std::filesystem::path(out_) / experiment.scenario;
+      checkSweepOutputs(experiment.sweep, dir);
+      checkOutputEntries(dir / "analysis");
+    }
+  }
   const bool analyses = !mpi_ || (experiments::mpiAvailable() && experiments::mpiWorld().rank == 0);
   const auto start = std::chrono::steady_clock::now();
   std::vector<analysis::ExperimentResult> results;
@@ -62,10 +75,8 @@ int Reproduce::run() {
     }
     return done;
   };
-  results = runAll(analysis::paperExperiments(trials_, seed_));
-  // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
-  const std::vector<analysis::ExperimentResult> studies =
-      runAll(analysis::sensitivityStudies(std::max(1, trials_ / 2), seed_));
+  results = runAll(paper);
+  const std::vector<analysis::ExperimentResult> studies = runAll(sensitivity);
   if (mpi_) ran = experiments::sumOverRanks(ran);  // the trials every rank ran now
   if (!analyses) return kExitOk;
   analysis::ReportContext context;

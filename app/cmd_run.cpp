@@ -120,6 +120,7 @@ int Run::run() {
     checkOutputDir(out_dir_, "--out (default, from the scenario's name)");
   }
 
+  sim::checkRunOutputs(out_dir_);  // a device or FIFO where a file goes: refused before any work
   sim::RunOptions options;
   options.out_dir = out_dir_;
   options.command_line = command_line_;

@@ -163,7 +163,12 @@ int Forest::run() {
   const double limit = spec::workLimits(load_.budget_scale).trees;
   const double expected = def_.lambda * spec::poissonDrawRegion(def_).area();
   if (!(expected <= limit)) {
-    usageError("--lambda", spec::budgetMessage(expected, limit,
+    // The option that drives the count: λ when the region itself would hold too many; else the
+    // dilation, by min_gap or by the crowns (2 r_max), whichever is wider.
+    const double in_region = def_.lambda * def_.region.width() * def_.region.height();
+    const bool dilation = in_region <= limit;
+    const bool gap = def_.min_gap && *def_.min_gap > 2.0 * def_.radius.hi;
+    usageError(!dilation ? "--lambda" : gap ? "--min-gap" : "--radius", spec::budgetMessage(expected, limit,
                                                "trees drawn (λ × the region dilated by "
                                                "2 r_max + min_gap)"));
   }

@@ -57,12 +57,20 @@ int defaultJobs() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+void checkSweepOutputs(const experiments::SweepSpec& sweep, const std::filesystem::path& out) {
+  checkOutputEntries(out);
+  for (const experiments::SweepConfig& config : experiments::configurations(sweep)) {
+    checkOutputDirectories(out / "trials" / config.id, out);
+    checkOutputEntries(out / "trials" / config.id);
+  }
+}
+
 int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                          int jobs, const experiments::Shard& shard) {
   // runSweep makes DIR/trials/CONFIG/ as it goes and follows what is there: links planted in DIR
-  // would lead the trial files out of it. Refused before anything is written.
-  for (const experiments::SweepConfig& config : experiments::configurations(sweep))
-    checkOutputDirectories(out / "trials" / config.id, out);
+  // would lead the trial files out of it; a device, FIFO or socket in DIR is not ours to
+  // replace. Refused before anything is written.
+  checkSweepOutputs(sweep, out);
   ProgressBar bar(shard.whole() ? sweep.name
                                 : sweep.name + " shard " + std::to_string(shard.index) + "/" +
                                       std::to_string(shard.count));
@@ -76,8 +84,7 @@ int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::
     usageError("--mpi",
                "this canopy was built without MPI: install the Debian packages "
                "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
-  for (const experiments::SweepConfig& config : experiments::configurations(sweep))
-    checkOutputDirectories(out / "trials" / config.id, out);
+  checkSweepOutputs(sweep, out);
   return experiments::runSweepMpi(sweep, out, jobs);
 }
 
@@ -197,13 +204,14 @@ class Analyze : public Command {
 
 int Analyze::run() {
   if (dir_.empty()) usageError("analyze", "expected a sweep directory");
-  const analysis::SweepAnalysis result = analysis::analyseSweep(dir_, load_);
-  analysis::heatmapMetric(result, maps_);  // a bad --state fails before anything is written
   if (out_.empty()) {
     out_ = dir_ + "/analysis";
     checkOutputDir(out_, "--out (default, DIR/analysis)");
     checkOutputDirectories(out_, dir_);  // not a link planted in the sweep's directory
   }
+  checkOutputEntries(out_);  // a device, FIFO or socket where a table would go: refused first
+  const analysis::SweepAnalysis result = analysis::analyseSweep(dir_, load_);
+  analysis::heatmapMetric(result, maps_);  // a bad --state fails before anything is written
   analysis::writeTables(result, out_);
   analysis::writeFigures(result, out_, maps_);
   std::printf(

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "app/commands.h"
+#include "core/output_file.h"
 #include "core/printable.h"
 #include "replay/replay_page.h"
 
@@ -19,7 +20,7 @@ class View : public Command {
                 "timelines.") {
     CLI::App& o = options();
     o.add_option("RUN_DIR", run_dir_, "the --out directory of `canopy run`");
-    o.add_option("--out", out_, "where the page goes")
+    o.add_option("--out", out_, "where the page goes (- for the standard output)")
         ->type_name("FILE")
         ->default_str("RUN_DIR/replay.html");
   }
@@ -27,6 +28,12 @@ class View : public Command {
     if (run_dir_.empty())
       usageError("view", "expected RUN_DIR, the --out directory of `canopy run`");
     if (out_.empty()) out_ = (std::filesystem::path(run_dir_) / "replay.html").string();
+    if (out_ == "-") {  // the page on stdout (main checks that it was all written)
+      const std::string page = replay::replayPage(replay::readRunFolder(run_dir_));
+      std::fwrite(page.data(), 1, page.size(), stdout);
+      return kExitOk;
+    }
+    checkOutputFile(out_);  // a device, FIFO or directory is refused before the run is read
     const std::size_t bytes = replay::writeReplay(run_dir_, out_);
     std::printf("replay: %s (%.1f kB; open it in a browser, no server needed)\n",
                 printable(out_, 300).c_str(), static_cast<double>(bytes) / 1000.0);

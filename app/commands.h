@@ -54,6 +54,10 @@ std::unique_ptr<Command> makeList(CLI::App& canopy);
 /// `--size WxH` (px) on `command`, read into `size`.
 CLI::Option* addImageSize(CLI::App& command, std::optional<render::ImageSize>& size,
                           const std::string& meaning);
+/// Refuses (OutputRefused, exit 2) a device, FIFO or socket among the entries of the sweep's
+/// folder `out` and its configurations' trial folders, and (WriteError) a link planted on the way
+/// to them: before anything runs.
+void checkSweepOutputs(const experiments::SweepSpec& sweep, const std::filesystem::path& out);
 /// Runs a sweep (the trials `shard` owns) with a progress bar on stderr; returns the number of
 /// trials run now.
 int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesystem::path& out,

@@ -201,6 +201,9 @@ int main(int argc, char** argv) {
   } catch (const canopy::spec::ScenarioError& e) {
     report(e.what());
     return kExitUsage;
+  } catch (const canopy::OutputRefused& e) {  // an output path that is not ours: bad input
+    report(e.what());
+    return kExitUsage;
   } catch (const canopy::WriteError& e) {
     report(e.what());
     return kExitFailure;

@@ -43,7 +43,34 @@ WriteError::WriteError(const fs::path& path, const std::string& reason)
     : std::runtime_error("cannot write '" + printable(path.string(), 300) + "': " + reason),
       path_(path) {}
 
+void checkOutputFile(const fs::path& path) {
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0) return;  // absent (or unreachable: the write will say)
+  if (S_ISREG(info.st_mode) || S_ISLNK(info.st_mode)) return;
+  const char* what = S_ISDIR(info.st_mode)    ? "a directory"
+                     : S_ISFIFO(info.st_mode) ? "a FIFO"
+                     : S_ISSOCK(info.st_mode) ? "a socket"
+                     : S_ISCHR(info.st_mode)  ? "a character device"
+                     : S_ISBLK(info.st_mode)  ? "a block device"
+                                              : "not a regular file";
+  throw OutputRefused(path, std::string("exists and is ") + what +
+                                "; canopy replaces only regular files (choose another path)");
+}
+
+void checkOutputEntries(const fs::path& dir) {
+  std::error_code error;
+  if (!fs::is_directory(fs::symlink_status(dir, error))) return;
+  for (const auto& entry : fs::directory_iterator(dir, error)) {
+    const fs::file_status status = entry.symlink_status(error);
+    if (error || fs::is_regular_file(status) || fs::is_directory(status) ||
+        fs::is_symlink(status))
+      continue;
+    checkOutputFile(entry.path());
+  }
+}
+
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
+  checkOutputFile(path_);
   fd_ = openTemporary(path_, temporary_);
   buffer_.reserve(kBufferBytes);
 }
@@ -94,6 +121,13 @@ void AtomicFile::commit() {
     ::unlink(temporary_.c_str());
     temporary_.clear();
     throw WriteError(path_, systemReason(error));
+  }
+  try {
+    checkOutputFile(path_);  // again: something may have been put there while we wrote
+  } catch (...) {
+    ::unlink(temporary_.c_str());
+    temporary_.clear();
+    throw;
   }
   if (::rename(temporary_.c_str(), path_.c_str()) != 0) {
     const int error = errno;
@@ -162,6 +196,7 @@ void checkOutputDirectories(const fs::path& dir, const fs::path& root) {
 }
 
 void removeOutputFile(const fs::path& path) {
+  checkOutputFile(path);
   if (::unlink(path.c_str()) == 0 || errno == ENOENT) return;
   throw WriteError(path, "cannot remove the previous file: " + systemReason(errno));
 }

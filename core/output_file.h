@@ -20,12 +20,29 @@ class WriteError : public std::runtime_error {
   std::filesystem::path path_;
 };
 
+/// An output path that is not canopy's to replace: it exists and is neither a regular file nor a
+/// symbolic link (a device, FIFO, socket or directory). Bad input, not a failed write: the
+/// command line exits with code 2; what() names the path and what it is.
+class OutputRefused : public WriteError {
+ public:
+  using WriteError::WriteError;
+};
+
+/// Throws OutputRefused when `path` exists and is not a regular file or a symbolic link (lstat:
+/// a link is replaced, never followed). Renaming over a device node would replace the system's
+/// device (as root, `--out /dev/null`); over a FIFO or socket, another program's endpoint.
+void checkOutputFile(const std::filesystem::path& path);
+/// checkOutputFile for every entry directly inside the folder `dir` (none when it does not exist):
+/// an output folder holds files, folders and links only.
+void checkOutputEntries(const std::filesystem::path& dir);
+
 /// A file written in pieces and published whole. The bytes go to a new temporary beside `path`
 /// ("NAME.PID-N.tmp", opened with O_CREAT | O_EXCL | O_NOFOLLOW, so never through a planted link
 /// or into a file that was already there); commit() renames it over `path`, which replaces a link
 /// at `path` instead of following it. Without commit() (a failed write, an exception) the
 /// destructor removes the temporary, so no reader ever sees a partial file under `path`. Every
-/// write is checked; failures throw WriteError naming `path`.
+/// write is checked; failures throw WriteError naming `path`. `path` is checked with
+/// checkOutputFile when the temporary is made and again just before the rename (OutputRefused).
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path path);
@@ -64,8 +81,8 @@ void makeOutputDirectories(const std::filesystem::path& dir, const std::filesyst
 /// yet pass), for a command that must refuse before it writes.
 void checkOutputDirectories(const std::filesystem::path& dir, const std::filesystem::path& root);
 
-/// Removes the file `path` if it exists: a link itself, never its target. Throws WriteError when
-/// it exists and cannot be removed.
+/// Removes the file `path` if it exists: a link itself, never its target. Throws OutputRefused
+/// when it is not a regular file or a link (checkOutputFile), WriteError when it cannot be removed.
 void removeOutputFile(const std::filesystem::path& path);
 
 /// `name` as one file-name component that cannot leave the directory it is put in: ASCII letters,

@@ -2,6 +2,7 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -9,7 +10,9 @@
 #include "experiments/sweep.h"
 #include "experiments/trial.h"
 #include "render/coverage_check.h"
+#include "replay/run_folder.h"
 #include "sim/record_reader.h"
+#include "sim/run.h"
 #include "spec/error.h"
 #include "spec/json_text.h"
 #include "spec/loader.h"
@@ -157,6 +160,51 @@ bool readResultInput(std::string_view data) {
   return true;
 }
 
+bool readRecordInput(std::string_view data) {
+  const fs::path dir = sandboxDir() / "record";
+  fs::create_directories(dir);
+  writeFile(dir / "record.jsonl", data);
+  try {
+    sim::readRecordTruth(dir / "record.jsonl", demo());
+  } catch (const spec::ScenarioError&) {
+    return false;
+  }
+  return true;
+}
+
+bool readReplayInput(std::string_view data) {
+  const fs::path dir = sandboxDir() / "replay";
+  if (!fs::exists(dir / "manifest.json")) {
+    fs::create_directories(dir);
+    writeFile(dir / "manifest.json", sim::manifestJson(demo(), "fuzz") + "\n");
+  }
+  const std::size_t nul = data.find('\0');
+  const std::string_view record = data.substr(0, nul);
+  writeFile(dir / "record.jsonl", record);
+  if (nul != std::string_view::npos) {
+    writeFile(dir / "summary.json", data.substr(nul + 1));
+  } else {
+    std::size_t lines = 0;  // as sim::forEachRecordLine counts them: the non-blank ones
+    for (std::size_t at = 0; at < record.size();) {
+      const std::size_t end = std::min(record.find('\n', at), record.size());
+      if (record.substr(at, end - at).find_first_not_of(" \t\r") != std::string_view::npos) ++lines;
+      at = end + 1;
+    }
+    std::string ospa = "[";
+    for (std::size_t k = 0; k < lines; ++k) ospa += k ? ",0" : "0";
+    std::string summary = "{\"uavs\": [";
+    for (std::size_t i = 0; i < demo().uavs.size(); ++i)
+      summary += std::string(i ? ", " : "") + "{\"ospa_m\": " + ospa + "]}";
+    writeFile(dir / "summary.json", summary + "]}\n");
+  }
+  try {
+    replay::readRunFolder(dir);
+  } catch (const spec::ScenarioError&) {
+    return false;
+  }
+  return true;
+}
+
 bool pythonEditInput(std::string_view data) {
   const std::size_t newline = data.find('\n');
   const std::string path(data.substr(0, newline));
@@ -216,6 +264,8 @@ const std::vector<Target>& targets() {
                                           {"sweep_loader", &loadSweepInput},
                                           {"track_csv", &parseTrackInput},
                                           {"result_files", &readResultInput},
+                                          {"record_reader", &readRecordInput},
+                                          {"replay_reader", &readReplayInput},
                                           {"python_edits", &pythonEditInput}};
   return all;
 }

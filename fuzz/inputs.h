@@ -21,6 +21,14 @@ bool parseTrackInput(std::string_view data);
 /// fixed one, a sweep folder's sweep.json), the rest is the file's bytes (written to the
 /// sandbox for the readers that take a path).
 bool readResultInput(std::string_view data);
+/// A record.jsonl read back by the truth reader (sim::readRecordTruth) against the demo's
+/// scenario: the bytes are the file.
+bool readRecordInput(std::string_view data);
+/// A run folder read back by the replay's reader (replay::readRunFolder): the demo's manifest,
+/// the bytes up to the first NUL as record.jsonl, and after it summary.json (without a NUL, a
+/// summary with one OSPA value per non-blank line for each of the demo's UAVs, so that a good
+/// record is read to the end).
+bool readReplayInput(std::string_view data);
 /// Python's edit of a scenario (Scenario.__setitem__): the first line is a dotted path, the
 /// rest a JSON value; it is set into the demo's effective configuration as Python sets it (a
 /// missing key of an object is added, a list index must exist), and the edited configuration,

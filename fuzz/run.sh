@@ -7,7 +7,8 @@
 # build/fuzz/corpus/TARGET/, so that longer runs go on where earlier ones stopped.
 #
 #   fuzz/run.sh [SECONDS_PER_TARGET] [TARGET...]
-#     targets: scenario_loader sweep_loader track_csv result_files python_edits
+#     targets: scenario_loader sweep_loader track_csv result_files record_reader replay_reader
+#              python_edits
 #
 # Environment: CANOPY_WERROR=1 builds with warnings as errors; CANOPY_JOBS=N build jobs (2);
 # CANOPY_FUZZ_PARALLEL=N runs N targets at a time (1); CANOPY_FUZZ_FLAGS adds libFuzzer flags
@@ -19,7 +20,8 @@ build="$root/build/fuzz"
 seconds="${1:-60}"
 [ $# -gt 0 ] && shift
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(scenario_loader sweep_loader track_csv result_files python_edits)
+[ ${#targets[@]} -eq 0 ] &&
+  targets=(scenario_loader sweep_loader track_csv result_files record_reader replay_reader python_edits)
 
 werror=OFF
 [ "${CANOPY_WERROR:-0}" = 1 ] && werror=ON

@@ -1,11 +1,15 @@
 #include "replay/run_folder.h"
 
+#include <climits>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/text_file.h"
 #include "sim/record_reader.h"
 #include "spec/error.h"
 #include "spec/json_text.h"
+#include "spec/result_lines.h"
 
 namespace canopy::replay {
 namespace {
@@ -21,14 +25,6 @@ std::string readText(const fs::path& path, const std::string& what) {
                               what == "record" ? spec::kMaxResultBytes : spec::kMaxJsonBytes);
 }
 
-// Result files go through the bounded parse (depth, duplicate keys) like every JSON canopy reads.
-Json parseBounded(const std::string& text) {
-  try {
-    return spec::parseBoundedJson(text);
-  } catch (const std::exception&) {
-    return Json(Json::value_t::discarded);
-  }
-}
 
 Json parseWhole(const fs::path& path, const std::string& what) {
   Json json = spec::parseJson(readText(path, what), path.string());  // names depth, syntax
@@ -57,9 +53,12 @@ class LineReader {
     if (!value.is_number()) fail(at + "." + key, "a number");
     return value.get<double>();
   }
-  int integer(const Json& value, const std::string& at) const {
-    if (!value.is_number_integer()) fail(at, "an integer");
-    return value.get<int>();
+  // Read as 64 bits, then narrowed: 2³² + 1 is refused, not read as 1.
+  int integer(const Json& value, const std::string& at, int lo = INT_MIN, int hi = INT_MAX,
+              const std::string& expected = "an integer") const {
+    const std::optional<std::int64_t> x = spec::integerWithin(value, lo, hi);
+    if (!x) fail(at, expected);
+    return static_cast<int>(*x);
   }
   Vec2 point(const Json& value, const std::string& at) const {
     if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
@@ -91,19 +90,20 @@ class LineReader {
   std::vector<int> indices(const Json& object, const char* key, int limit,
                            const std::string& at) const {
     std::vector<int> out;
-    for (const Json& x : array(object, key, at)) {
-      if (!x.is_number_integer() || x.get<int>() < 0 || x.get<int>() >= limit)
-        fail(at + "." + key, "target indices below " + std::to_string(limit));
-      out.push_back(x.get<int>());
-    }
+    for (const Json& x : array(object, key, at))
+      out.push_back(integer(x, at + "." + key, 0, limit - 1,
+                            "target indices below " + std::to_string(limit)));
     return out;
   }
   std::string key(const Json& value, const std::string& at) const {
-    if (!value.is_array() || value.size() != 2 || !value[0].is_number_integer() ||
-        !value[1].is_number_integer())
-      fail(at, "a key [origin, serial]");
-    return std::to_string(value[0].get<long long>()) + ":" +
-           std::to_string(value[1].get<long long>());
+    constexpr std::int64_t kMin = INT64_MIN, kMax = INT64_MAX;
+    const std::optional<std::int64_t> origin =
+        value.is_array() && value.size() == 2 ? spec::integerWithin(value[0], kMin, kMax)
+                                              : std::nullopt;
+    const std::optional<std::int64_t> serial =
+        origin ? spec::integerWithin(value[1], kMin, kMax) : std::nullopt;
+    if (!serial) fail(at, "a key [origin, serial] (two 64-bit integers)");
+    return std::to_string(*origin) + ":" + std::to_string(*serial);
   }
 
  private:
@@ -166,7 +166,7 @@ RecordedPlan plan(const LineReader& r, const Json& json, int agents) {
 
 RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpec& spec) {
   RecordedStep s;
-  s.k = r.integer(r.member(json, "k", ""), "k");
+  s.k = r.integer(r.member(json, "k", ""), "k", 0, INT_MAX, "a step index from 0 to 2³¹ − 1");
   s.t = r.number(json, "t", "");
   const int agents = static_cast<int>(spec.uavs.size());
   const int targets = static_cast<int>(spec.targets.size());
@@ -217,9 +217,11 @@ std::vector<RecordedStep> readRecord(const fs::path& path, const spec::ScenarioS
   std::vector<RecordedStep> steps;
   sim::forEachRecordLine(readText(path, "record"), [&](const std::string& line, int number) {
     const LineReader r(path, number);
-    const Json json = parseBounded(line);
-    if (json.is_discarded() || !json.is_object()) r.fail("", "one JSON object per line");
-    steps.push_back(step(r, json, spec));
+    if (line.size() > spec::kMaxResultLineBytes)
+      r.fail("", "a line of at most 256 MiB (one step of `canopy run`)");
+    const std::optional<Json> json = spec::parseResultLine(line);  // std::bad_alloc: exit 1
+    if (!json || !json->is_object()) r.fail("", "one JSON object per line");
+    steps.push_back(step(r, *json, spec));
     if (steps.back().k != static_cast<int>(steps.size()) - 1)
       r.fail("k", "step " + std::to_string(steps.size() - 1) + " (one line per step, in order)");
   });

@@ -1,12 +1,16 @@
 #include "sim/record_reader.h"
 
+#include <climits>
+#include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "core/text_file.h"
 #include "spec/error.h"
 #include "spec/json_text.h"
 #include "spec/loader.h"
+#include "spec/result_lines.h"
 
 namespace canopy::sim {
 namespace {
@@ -94,18 +98,20 @@ std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
   std::vector<world::WorldSnapshot> steps;
   forEachRecordLine(readResultFile(path, "record"), [&](const std::string& line, int number) {
     const LineReader r(path, number);
-    Json json;
-    try {
-      json = spec::parseBoundedJson(line);
-    } catch (const std::exception&) {
+    if (line.size() > spec::kMaxResultLineBytes)
+      r.fail("", "a line of at most 256 MiB (one step of `canopy run`)");
+    const std::optional<Json> parsed = spec::parseResultLine(line);  // std::bad_alloc: exit 1
+    if (!parsed) {
       r.fail("", "one JSON object per line, nested at most " + std::to_string(spec::kMaxJsonDepth) +
                      " levels deep");
     }
+    const Json& json = *parsed;
     if (!json.is_object()) r.fail("", "one JSON object per line");
     world::WorldSnapshot& s = steps.emplace_back();
-    const Json& k = r.member(json, "k", "k");
-    if (!k.is_number_integer()) r.fail("k", "an integer step index");
-    s.step = k.get<int>();
+    // Read as 64 bits, then narrowed: a step index of 2³² + 1 is refused, not read as 1.
+    const std::optional<std::int64_t> k = spec::integerWithin(r.member(json, "k", "k"), 0, INT_MAX);
+    if (!k) r.fail("k", "an integer step index from 0 to 2³¹ − 1");
+    s.step = static_cast<int>(*k);
     s.time = r.number(r.member(json, "t", "t"), "t");
     const Json& uavs = r.list(json, "uavs", spec.uavs.size());
     for (std::size_t i = 0; i < uavs.size(); ++i) {

@@ -102,7 +102,14 @@ void removeStaleFrames(const std::filesystem::path& out_dir) {
 
 }  // namespace
 
+void checkRunOutputs(const std::filesystem::path& out_dir) {
+  for (const char* name : kRunFiles) checkOutputFile(out_dir / name);
+  for (const char* name : {"replay.html", "frames.mp4"}) checkOutputFile(out_dir / name);
+  checkOutputEntries(out_dir / "frames");
+}
+
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options) {
+  checkRunOutputs(options.out_dir);
   makeOutputDirectories(options.out_dir, options.out_dir);
   // The files of an earlier run would be read as this run's if this one failed part way.
   for (const char* name : kRunFiles) removeOutputFile(options.out_dir / name);
@@ -114,6 +121,11 @@ RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options)
     for (const char* name : kRunFiles) {
       std::error_code ignored;
       std::filesystem::remove(options.out_dir / name, ignored);
+    }
+    try {
+      removeStaleFrames(options.out_dir);  // the frames of the steps before it, too
+    } catch (const std::exception&) {
+      // the run's own error is the one to report
     }
     throw;
   }

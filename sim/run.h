@@ -25,9 +25,16 @@ struct RunResult {
 /// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
 /// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
 /// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
-/// from an observer) removes whatever of these it wrote, so out_dir never holds a partial record or
-/// a summary of a run that did not finish.
+/// from an observer, a state that is not finite) removes whatever of these it wrote, frames
+/// included, so out_dir never holds a partial record or
+/// a summary of a run that did not finish. checkRunOutputs runs before anything is removed.
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options);
+
+/// Refuses (OutputRefused) a run folder where a file of the run (manifest.json, record.jsonl,
+/// timings.jsonl, summary.json, replay.html, frames.mp4, frames/*) exists and is not a regular
+/// file or a link: a device, FIFO, socket or directory there is not the run's to replace.
+/// runScenario calls it first; the command line calls it before anything else is built.
+void checkRunOutputs(const std::filesystem::path& out_dir);
 
 /// manifest.json's content: version, scenario, hash of the effective config, seed, config.
 std::string manifestJson(const spec::ScenarioSpec& spec, const std::string& command_line);

@@ -1,5 +1,7 @@
 #include "sim/simulation.h"
 
+#include "sim/finite_check.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -49,6 +51,7 @@ Simulation::Simulation(spec::ScenarioSpec spec, int threads)
   }
   const std::size_t n = spec_.uavs.size();
   for (std::size_t i = 0; i < n; ++i) sensing_rng_.emplace_back(spec_.seed, "sensing", i);
+  for (const spec::UavSpec& uav : spec_.uavs) uav_names_.push_back(uav.name);
   scratch_.resize(n);
   commands_.assign(n, Vec2::Zero());
   record_.uavs.resize(n);
@@ -163,6 +166,7 @@ const StepRecord& Simulation::tick() {
   }
   commandUavs();
   readTeam();
+  checkFinite(record_, uav_names_);  // no NaN reaches an observer (sim/finite_check.h)
   ++next_step_;
   return record_;
 }

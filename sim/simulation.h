@@ -6,6 +6,7 @@
 // the next step → the step's record. Each tick fills one StepRecord (sim/step_record.h),
 // the only thing observers see.
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,7 @@ class Simulation {
   /// Runs step k = nextStep(): for k = 0 senses the initial state, otherwise applies the
   /// commands set at step k − 1 and advances the world by dt first. Returns the step's record,
   /// valid until the next tick (its storage is reused: copy it to keep it).
+  /// Throws NonFiniteState (sim/finite_check.h) when a state of the step is not finite.
   const StepRecord& tick();
   /// External command (a custom controller, a Python binding): UAV `uav` flies `velocity` (m/s)
   /// during the next step, the one the next tick() runs, instead of its planner's or scripted
@@ -84,6 +86,7 @@ class Simulation {
   std::vector<sensing::SenseScratch> scratch_;  // per UAV, so that UAVs sense on any thread
   std::unique_ptr<TaskPool> pool_;              // threads > 1 only
   world::WorldSnapshot truth_;  // this step's, as sensing reads it
+  std::vector<std::string> uav_names_;  // for the messages of checkFinite
   std::vector<Vec2> commands_;  // m/s, per UAV: its planner's or path's command, before clamping
   StepRecord record_;           // this step's, refilled in place by every tick
   int steps_per_plan_ = 1;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "agents/tracking/existence.h"
 #include "sensing/footprint.h"
 #include "spec/error.h"
 
@@ -32,7 +33,7 @@ void require(const ScenarioSpec& spec, const std::string& field, double amount, 
 WorkLimits workLimits(double scale) {
   WorkLimits limits;
   for (double* limit : {&limits.trees, &limits.world_units, &limits.record_bytes,
-                        &limits.tracking_units, &limits.fusion_units, &limits.planning_units,
+                        &limits.tracking_units, &limits.tracking_step_units, &limits.fusion_units, &limits.planning_units,
                         &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
@@ -119,6 +120,22 @@ double visibleTargetsBound(const ScenarioSpec& spec) {
   return busiest;
 }
 
+double clutterTrackScans(const ScenarioSpec& spec) {
+  const agents::TrackingConfig& t = spec.tracking;
+  const double steps = spec.steps() + 1.0;
+  if (t.confirmation == agents::TrackConfirmation::m_of_n)
+    return std::min(steps, static_cast<double>(t.confirm_window));
+  const double p_s = agents::tracking::scanSurvival(t.survival_probability, spec.dt);
+  double r = t.birth_existence;
+  double scans = 0.0;
+  while (r >= t.delete_existence && scans < steps) {  // each miss lowers r (δ > 0, ψ ≤ r)
+    r = agents::tracking::existenceAfterMiss(p_s * r, t.p_detect, t.gate_probability);
+    scans += 1.0;
+    if (!(r < 1.0)) return steps;  // δ = 0 or p_S = 1 with r = 1: it never falls
+  }
+  return scans;
+}
+
 WorkEstimate estimateWork(const ScenarioSpec& spec) {
   const double steps = spec.steps() + 1.0;
   const double uavs = static_cast<double>(spec.uavs.size());
@@ -153,6 +170,16 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
       steps * uavs *
       (measurements * measurements * (1.0 + (measurements > 1.0 ? kPropagationSweeps : 0.0)) +
        (measurements > 1.0 ? spec.tracking.max_hypotheses * std::max(1.0, depth) : 0.0));
+  // One step, every UAV (the trial's total can hide a step of many seconds): the joint events one
+  // scan may enumerate, max_hypotheses × min(m, 64) as above, and the cluster clutter makes of
+  // itself: every clutter-born track still held (clutter × clutterTrackScans) gated with every
+  // clutter measurement, through up to kPropagationSweeps sweeps of belief propagation.
+  // Measured (bench/RESULTS.md, "Work budget per step"): max_hypotheses 10⁷ with 60 clutter
+  // and 200 clutter with birth_existence 0.999 took seconds per step.
+  work.clutter_track_scans = clutterTrackScans(spec);
+  work.tracking_step_units =
+      uavs * ((measurements > 1.0 ? spec.tracking.max_hypotheses * std::max(1.0, depth) : 0.0) +
+              clutter * work.clutter_track_scans * clutter * kPropagationSweeps);
   // The expected number of agents within `range` of one of `uavs` agents spread over the AOI
   // (itself included), at most the team.
   const double area = std::max(1.0, spec.aoi.width() * spec.aoi.height());
@@ -218,6 +245,15 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
   require(spec, tracking_field, work.tracking_units, limits.tracking_units,
           "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
           "targets and trees one footprint can hold + sensing.clutter_rate)");
+  // Per step: the field named is the one whose term is larger.
+  const double enumeration_step =
+      static_cast<double>(spec.uavs.size()) * spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
+  require(spec,
+          enumeration_step >= work.tracking_step_units - enumeration_step ? "tracking.max_hypotheses"
+                                                                          : "sensing.clutter_rate",
+          work.tracking_step_units, limits.tracking_step_units,
+          "tracking units in one step (UAVs × (max_hypotheses × min(m, 64) + clutter_rate² × "
+          "scans a clutter-born track lives × 1000 propagation sweeps))");
   require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
           "fusion units per trial (steps × rounds × UAVs × neighbours in comm_range × targets)");
   require(spec, "planner.pso", work.planning_units, limits.planning_units,

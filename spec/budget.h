@@ -16,6 +16,7 @@ struct WorkLimits {
   double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
   double record_bytes = 4e9;          // estimated size of record.jsonl
   double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
+  double tracking_step_units = 5e8;   // one step, every UAV: about a second of JPDA at worst
   double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
   double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
@@ -33,6 +34,13 @@ double visibleTreesBound(const ScenarioSpec& spec);
 /// The most targets one footprint holds at any step (every target past 2·10⁶ positions to check).
 double visibleTargetsBound(const ScenarioSpec& spec);
 
+/// Scans a track born from clutter survives without a detection of its own, at most: existence
+/// confirmation drops it once r < delete_existence, r ← existenceAfterMiss(p_S r) from
+/// birth_existence per scan (agents/tracking/existence.h); m_of_n drops it after confirm_window
+/// scans. At most the run's steps. With 200 clutter per scan and birth_existence 0.999 it is 6:
+/// each UAV then holds ~1200 clutter tracks.
+double clutterTrackScans(const ScenarioSpec& spec);
+
 /// What one trial of `spec` asks for, in the units of WorkLimits.
 struct WorkEstimate {
   double visible_trees = 0.0;    // visibleTreesBound
@@ -40,6 +48,8 @@ struct WorkEstimate {
   double world_units = 0.0;
   double record_bytes = 0.0;
   double tracking_units = 0.0;
+  double clutter_track_scans = 0.0;  // clutterTrackScans
+  double tracking_step_units = 0.0;  // one step, every UAV: joint events enumerated + clutter BP
   double fusion_units = 0.0;
   double planning_units = 0.0;
 };

@@ -47,7 +47,9 @@ const std::vector<FieldDoc>& fieldDocs() {
        "the agent's body, a disc (default 0.5 for a ground robot, 0 for a UAV): a ground "
        "robot's is stopped by trunks, walls and other robots; a UAV flies above them and keeps "
        "the sum of the two radii from every other UAV with a radius; 0: no body, it touches "
-       "nothing (UAVs by default pass over one another, as in the paper's scenarios)"},
+       "nothing (UAVs by default pass over one another, as in the paper's scenarios); 0 or 0.01 "
+       "to 100 m (0.01 m: Box2D's b2_polygonRadius, the skin its collision keeps; a smaller "
+       "body's mass overflows a float)"},
       {"uavs[].fov", "",
        "camera footprint: {\"size\": [w, h]} (w along the heading) or {\"radius\": r}; a ground "
        "robot's: {\"range\": r, \"angle\": θ}, a sector opening θ about the heading"},
@@ -122,8 +124,11 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"tracking.survival_probability", "",
        "probability that a target still exists 1 s later (per scan: this^dt; trees: 1)"},
       {"tracking.birth_existence", "", "probability of existence of a newborn track"},
-      {"tracking.confirm_existence", "", "existence: confirmed once existence reaches this"},
-      {"tracking.delete_existence", "", "existence: deleted once existence falls below this"},
+      {"tracking.confirm_existence", "",
+       "existence: confirmed once existence reaches this; at least delete_existence"},
+      {"tracking.delete_existence", "",
+       "existence: deleted once existence falls below this; at most birth_existence (else every "
+       "newborn track is dropped at birth) and at most confirm_existence"},
       {"tracking.merge_gate", "",
        "χ²₄ gate on the track-to-track distance Δxᵀ(P_a + P_b)⁻¹Δx of two duplicates"},
       {"tracking.merge_scans", "",

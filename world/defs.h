@@ -25,6 +25,15 @@ inline constexpr EnumNames<AgentKind, 2> kAgentKindNames{{
     {AgentKind::ground, "ground"},
 }};
 
+/// The bodies an agent may have (UavDef::radius), m: 0 (none) or kMinAgentRadius to
+/// kMaxAgentRadius. The least is Box2D's b2_polygonRadius (2 × b2_linearSlop = 0.01 m), the skin
+/// its collision keeps around every shape. Below it the arithmetic breaks before Box2D does: each
+/// agent weighs 1 kg, a density of 1/(π r²) that overflows a float for r below about 1e-19 m
+/// (then every position is NaN), and a sub-step may close at most half a radius (world.cpp), so
+/// a radius of 1e-9 m would need ~10⁹ sub-steps per metre.
+inline constexpr double kMinAgentRadius = 0.01;
+inline constexpr double kMaxAgentRadius = 100.0;
+
 /// An agent (a UAV or a ground robot): a body commanded by horizontal velocity.
 struct UavDef {
   Vec2 start = Vec2::Zero();          // m

@@ -4,6 +4,7 @@ the CLI names the option ("canopy.run: size: expected …, got …")."""
 import math
 import numbers
 import os
+import stat
 
 from . import _canopy
 
@@ -105,6 +106,40 @@ def path(value, function, field):
         raise error(function, field, "expected a str path, got bytes")
     if not text or "\0" in text:
         raise error(function, field, f"expected a non-empty path without NUL, got {_shown(value)}")
+    return text
+
+
+def _not_ours(text):
+    """What `text` is when it exists and is neither a regular file nor a link, else None."""
+    try:
+        mode = os.lstat(text).st_mode
+    except OSError:
+        return None
+    if stat.S_ISREG(mode) or stat.S_ISLNK(mode):
+        return None
+    return ("a directory" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode)
+            else "a socket" if stat.S_ISSOCK(mode) else "a device" if
+            stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+
+
+def output_file(value, function, field):
+    """A path canopy may write a file at: absent, a regular file or a link (replaced, never
+    followed); a device, FIFO, socket or directory is refused as the CLI refuses it (exit 2)."""
+    text = path(value, function, field)
+    what = _not_ours(text)
+    if what is not None:
+        raise error(function, field, f"{_shown(text)} exists and is {what}; canopy replaces "
+                                     "only regular files (choose another path)")
+    return text
+
+
+def output_dir(value, function, field):
+    """A folder canopy may write into: new or an existing directory (a link the user named is
+    followed), as the CLI's --out DIR."""
+    text = path(value, function, field)
+    if os.path.exists(text) and not os.path.isdir(text):
+        raise error(function, field, f"expected a directory (new or existing), got "
+                                     f"{_shown(text)}, which exists and is not a directory")
     return text
 
 

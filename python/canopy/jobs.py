@@ -17,7 +17,7 @@ def run(scenario, out, seed=None, frames=False, frame_every=1, size=None):
     fn = "canopy.run"
     if not isinstance(scenario, Scenario):
         scenario = load(_args.path(scenario, fn, "scenario"))
-    out = _args.path(out, fn, "out")
+    out = _args.output_dir(out, fn, "out")
     seed = _args.seed(seed, fn)
     frames = _args.boolean(frames, fn, "frames")
     frame_every = _args.integer(frame_every, fn, "frame_every", 1, _args.MAX_FRAME_EVERY)
@@ -32,7 +32,7 @@ def sweep(file, out, jobs=1, allowed_roots=()):
     --out OUT --jobs JOBS`` (resumable; the same bytes however it is run). Returns the number
     of trials run now (trials already in ``out`` are not run again)."""
     fn = "canopy.sweep"
-    file, out = _args.path(file, fn, "file"), _args.path(out, fn, "out")
+    file, out = _args.path(file, fn, "file"), _args.output_dir(out, fn, "out")
     jobs = _args.integer(jobs, fn, "jobs", 1, _args.MAX_JOBS)
     roots = _args.paths(allowed_roots, fn, "allowed_roots")
     return _canopy._sweep(file, out, jobs, roots)
@@ -68,7 +68,8 @@ def analyze(dir, out=None, figures=False, allowed_roots=()):
     as {table name: {column: numpy array}}, e.g. ``tables["coverage"]["mean_coverage"]``."""
     fn = "canopy.analyze"
     dir = _args.path(dir, fn, "dir")
-    out = _args.path(out, fn, "out") if out is not None else os.path.join(dir, "analysis")
+    out = (_args.output_dir(out, fn, "out") if out is not None
+           else _args.output_dir(os.path.join(dir, "analysis"), fn, "out (default, dir/analysis)"))
     roots = _args.paths(allowed_roots, fn, "allowed_roots")
     _canopy._analyze(dir, out, roots, _args.boolean(figures, fn, "figures"))
     return {name[:-4]: read_table(os.path.join(out, name))

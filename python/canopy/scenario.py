@@ -10,7 +10,6 @@ checked by ``validate()``. ``save(path)`` writes a file ``canopy run`` runs iden
 import copy
 import json
 import math
-import os
 
 from . import _args, _canopy
 
@@ -47,6 +46,36 @@ def _error(file, field, reason):
     error = _canopy.ScenarioError(f"{file}: {field}: {reason}" if field else f"{file}: {reason}")
     error.file, error.field, error.reason = file, field, reason
     return error
+
+
+# JSON nests at most this many arrays and objects (spec/json_text.h's kMaxJsonDepth; the reader
+# refuses a container opened when this many are open already, so one more than it is read).
+MAX_JSON_DEPTH = 64
+
+
+def _depth(value, limit):
+    """How many arrays and objects `value` nests (iteratively: no RecursionError on deep input),
+    counted up to limit + 1."""
+    deepest, stack = 0, [(value, 1)]
+    while stack:
+        node, depth = stack.pop()
+        if not isinstance(node, (dict, list, tuple)):
+            continue
+        deepest = max(deepest, depth)
+        if deepest > limit:
+            return deepest
+        stack.extend((child, depth + 1) for child in (node.values() if isinstance(node, dict) else node))
+    return deepest
+
+
+def _check_depth(value, file, path):
+    """A value set at `path` (k dotted parts: k containers above it) may nest at most
+    MAX_JSON_DEPTH + 1 − k more: refused naming the field, not the file it came from."""
+    room = MAX_JSON_DEPTH + 1 - len(str(path).split("."))
+    if _depth(value, room) > room:
+        raise _error(file, _cli_path(path),
+                     f"expected a value nested at most {room} levels deep here (a scenario "
+                     f"nests at most {MAX_JSON_DEPTH} arrays and objects), got a deeper one")
 
 
 def _check_finite(value, file, path):
@@ -98,6 +127,7 @@ class Scenario:
         if isinstance(parent, list) and not -len(parent) <= key < len(parent):
             raise KeyError(f"{self.file}: {_cli_path(path)}: no element {key} "
                            f"(the list has {len(parent)})")
+        _check_depth(value, self.file, path)
         _check_finite(value, self.file, _cli_path(path))
         had, old = (key in parent, parent.get(key)) if isinstance(parent, dict) else (True, parent[key])
         before = self._errors()
@@ -210,13 +240,11 @@ class Scenario:
     def save(self, path):
         """Validates, then writes the configuration as a scenario file. Relative includes and
         track files are read from beside the new file when the CLI runs it."""
-        path = _args.path(path, "Scenario.save", "path")
+        path = _args.output_file(path, "Scenario.save", "path")
         self.validate()
-        tmp = path + ".tmp"
-        with open(tmp, "w", encoding="utf-8") as f:
-            json.dump(self.config, f, indent=2)
-            f.write("\n")
-        os.replace(tmp, path)
+        # Through the C++ writer (core/output_file.h): a new temporary renamed over path, never
+        # through a link or over a device, FIFO or socket put there meanwhile.
+        _canopy._write_file(path, json.dumps(self.config, indent=2) + "\n")
         return path
 
     def copy(self):

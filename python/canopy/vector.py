@@ -24,7 +24,7 @@ run in C++ without the GIL, on ``threads`` threads (default: one per core).
 """
 import numpy as np
 
-from . import _canopy
+from . import _args, _canopy
 from .env import TrackingEnv
 from .spaces import box
 
@@ -34,6 +34,12 @@ try:  # Gymnasium 1.x names its autoreset modes; older versions and its absence 
 except ImportError:
     _SAME_STEP = "SameStep"
 
+# The most environments one VectorEnv holds, checked before anything is built: 10⁷ ran into
+# gigabytes before a MemoryError. Each is a whole simulation: measured after reset, demo 0.17 MB
+# an environment (4096 of them: 0.7 GB), city_swarm 61 MB (its trees and maps; there memory ends
+# the count long before this bound does).
+MAX_ENVS = 4096
+
 
 class VectorEnv:
     def __init__(self, n, scenario, max_tracks=8, max_trees=8, map_radius=30.0,
@@ -41,11 +47,11 @@ class VectorEnv:
         """n environments of ``scenario`` (a Scenario, a built-in name or a file); the other
         arguments are TrackingEnv's. threads: worker threads, the caller's included (default:
         one per core, at most n)."""
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-            raise ValueError(f"VectorEnv: n: expected an integer ≥ 1, got {n!r}")
-        if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer))
-                                    or threads < 1):
-            raise ValueError(f"VectorEnv: threads: expected an integer ≥ 1 or None, got {threads!r}")
+        # The CLI's and TrackingEnv's rules (python/canopy/_args.py): a canopy.ScenarioError (a
+        # ValueError) naming the argument, before anything is built.
+        n = _args.integer(n, "VectorEnv", "n", 1, MAX_ENVS)
+        if threads is not None:
+            threads = _args.integer(threads, "VectorEnv", "threads", 1, _args.MAX_JOBS)
         # One TrackingEnv, never stepped: the same checks, scenario, spaces and agents.
         self.single_env = TrackingEnv(scenario, max_tracks=max_tracks, max_trees=max_trees,
                                       map_radius=map_radius, reward_trace=reward_trace,
@@ -75,7 +81,7 @@ class VectorEnv:
                                 np.broadcast_to(act_high, batch + act_high.shape),
                                 batch + act_low.shape)
         self._rngs = [None] * self.num_envs
-        self._seeds = np.zeros(self.num_envs, np.int64)
+        self._seeds = np.zeros(self.num_envs, np.uint64)  # up to 2⁶⁴ − 1, as TrackingEnv's
         self._started = False
 
     def _next_seed(self, i):
@@ -83,6 +89,22 @@ class VectorEnv:
         if self._rngs[i] is None:
             self._rngs[i] = np.random.default_rng()
         return int(self._rngs[i].integers(0, 2**31 - 1))
+
+    def _checked_seeds(self, seed):
+        """seed as TrackingEnv.reset checks it (an integer in [0, 2⁶⁴ − 1]; 1.7, -5, NaN, text and
+        2⁷⁰ are refused naming seed): an int s gives s, s + 1, …, s + n − 1, all in range; a 1-D
+        sequence gives one seed per environment."""
+        fn = "VectorEnv.reset"
+        if isinstance(seed, (str, bytes)) or np.ndim(seed) == 0:
+            first = _args.seed(seed, fn)
+            if first > _args.MAX_SEED - (self.num_envs - 1):
+                raise _args.error(fn, "seed", f"expected at most {_args.MAX_SEED - (self.num_envs - 1)} "
+                                  f"(seed + i for the {self.num_envs} environments stays below 2**64), got {first}")
+            return [first + i for i in range(self.num_envs)]
+        if np.ndim(seed) != 1 or len(seed) != self.num_envs:
+            raise _args.error(fn, "seed", f"expected an integer or a sequence of {self.num_envs} integers, "
+                              f"got an array of shape {np.shape(seed)}")
+        return [_args.seed(s, fn, f"seed[{i}]") for i, s in enumerate(seed)]
 
     def reset(self, seed=None, options=None):
         """Starts every environment's episode. seed: None, an int s (environment i gets s + i)
@@ -93,9 +115,7 @@ class VectorEnv:
         if seed is None:
             seeds = [self._next_seed(i) for i in range(self.num_envs)]
         else:
-            seeds = [int(seed) + i for i in range(self.num_envs)] if np.ndim(seed) == 0 else [int(s) for s in seed]
-            if len(seeds) != self.num_envs:
-                raise ValueError(f"VectorEnv.reset: seed: expected an int or {self.num_envs} ints, got {len(seeds)}")
+            seeds = self._checked_seeds(seed)
             self._rngs = [np.random.default_rng(s) for s in seeds]
         self._core.reset(list(range(self.num_envs)), seeds)
         self._seeds[:] = seeds

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "analysis/sweep_analysis.h"
+#include "core/output_file.h"
+#include "core/text_file.h"
 #include "experiments/sweep.h"
 #include "python/src/bindings.h"
 #include "python/src/scenario_source.h"
@@ -42,6 +44,7 @@ std::string runJob(const std::string& text, const std::string& file,
   sim::RunOptions options;
   options.out_dir = out;
   options.command_line = "python: canopy.run(" + spec.name + ")";
+  sim::checkRunOutputs(options.out_dir);  // before the frame writer makes anything
   std::optional<render::FrameWriter> writer;
   std::optional<render::FrameObserver> observer;
   if (frames.on) {
@@ -64,12 +67,14 @@ int sweepJob(const std::string& file, const std::string& out, int jobs,
   experiments::SweepOptions options;
   options.out_dir = out;
   options.jobs = jobs;
+  checkOutputEntries(out);
   py::gil_scoped_release release;
   return experiments::runSweep(sweep, options);
 }
 
 void analyzeJob(const std::string& dir, const std::string& out,
                 const std::vector<std::string>& roots, bool figures) {
+  checkOutputEntries(out);
   py::gil_scoped_release release;
   const analysis::SweepAnalysis result =
       analysis::analyseSweep(dir, loadOptions(roots, std::nullopt));
@@ -124,6 +129,21 @@ py::dict readRunJob(const std::string& dir) {
 }  // namespace
 
 void bindJobs(py::module_& m) {
+  // An output path that is not ours (a device, FIFO, socket or directory): bad input, as the
+  // command line's exit code 2, so a ValueError; other failed writes stay RuntimeErrors.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const OutputRefused& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def(
+      "_write_file",
+      [](const std::string& path, const std::string& text) { writeFileAtomically(path, text); },
+      py::arg("path"), py::arg("text"),
+      "Writes text to a new temporary beside path and renames it over path (core/output_file.h): "
+      "never through a link, never over a device, FIFO, socket or directory.");
   m.def(
       "_run",
       [](const std::string& text, const std::string& file, const std::vector<std::string>& roots,

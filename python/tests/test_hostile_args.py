@@ -98,6 +98,11 @@ def calls(demo, tmp, sweep_folder):
          "render_size", (64, 48), "pair"),
         ("TrackingEnv.reset", lambda v: canopy.TrackingEnv(demo).reset(seed=v), "seed", 5,
          "count"),
+        ("VectorEnv.n", lambda v: canopy.VectorEnv(v, demo), "n", 1, "count"),
+        ("VectorEnv.threads", lambda v: canopy.VectorEnv(1, demo, threads=v), "threads", 1,
+         "count"),
+        ("VectorEnv.reset", lambda v: canopy.VectorEnv(2, demo).reset(seed=v), "seed", 5,
+         "count"),
     ]
 
 
@@ -169,6 +174,62 @@ def test_the_issue_examples(demo, tmp_path, finished_sweep):
     with pytest.raises(canopy.ScenarioError, match="size"):
         canopy.run(demo, tmp_path / "r", frames=True, size=(-1, 480))
     assert not (tmp_path / "o").exists() and not (tmp_path / "r").exists()
+
+
+def test_vector_env_checks_seeds_and_n_as_tracking_env_does(demo):
+    # Issue 47: 1.7 was taken as 1, and -5, NaN, text, 2-D arrays and 2**70 got messages that did
+    # not name seed; VectorEnv(10**7) ran into gigabytes before a MemoryError.
+    vec = canopy.VectorEnv(2, demo)
+    for seed in (1.7, -5, NAN, "7", np.zeros((2, 2)), 2**70, [1, 2, 3], [1, -1], 2**64 - 1):
+        with pytest.raises(canopy.ScenarioError, match="VectorEnv.reset: seed"):
+            vec.reset(seed=seed)
+    _, infos = vec.reset(seed=2**64 - 2)  # the largest first seed for two environments
+    assert list(infos["seed"]) == [2**64 - 2, 2**64 - 1]
+    _, infos = vec.reset(seed=np.array([4, 9]))
+    assert list(infos["seed"]) == [4, 9]
+    with pytest.raises(canopy.ScenarioError, match=r"VectorEnv: n: expected an integer in \[1, 4096\]"):
+        canopy.VectorEnv(10**7, demo)
+
+
+def test_an_output_that_is_not_ours_is_refused_and_left_as_it_was(demo, tmp_path):
+    # Issue 47: canopy.run(out=<a file>) raised RuntimeError where the CLI exits 2; Scenario.save
+    # renamed its file over whatever the path was.
+    a_file = tmp_path / "a_file"
+    a_file.write_text("mine")
+    with pytest.raises(canopy.ScenarioError, match="canopy.run: out: expected a directory"):
+        canopy.run(demo, a_file)
+    assert a_file.read_text() == "mine"
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    with pytest.raises(canopy.ScenarioError, match="Scenario.save: path: .* exists and is a FIFO"):
+        demo.save(fifo)
+    out = tmp_path / "run"
+    out.mkdir()
+    os.mkfifo(out / "record.jsonl")
+    with pytest.raises(ValueError, match="record.jsonl': exists and is a FIFO"):
+        canopy.run(demo, out)
+    assert (out / "record.jsonl").is_fifo() and fifo.is_fifo()
+    assert sorted(p.name for p in out.iterdir()) == ["record.jsonl"]
+
+
+def test_an_over_deep_value_is_blamed_on_the_field_it_was_set_to(demo):
+    # Issue 47: the loader's depth error named the base file, not the edit.
+    scenario = demo.copy()
+    deep = 0
+    for _ in range(100):
+        deep = [deep]
+    with pytest.raises(canopy.ScenarioError) as caught:
+        scenario["uavs.0.v_max"] = deep
+    assert caught.value.field == "uavs[0].v_max", str(caught.value)
+    assert "nested at most 62 levels deep here" in str(caught.value)
+    assert scenario["uavs.0.v_max"] == demo["uavs.0.v_max"]  # the edit was not made
+    # At the limit the loader reads it (and refuses it for what it is, not for its depth).
+    shallow = 0
+    for _ in range(62):
+        shallow = [shallow]
+    with pytest.raises(canopy.ScenarioError) as caught:
+        scenario["uavs.0.v_max"] = shallow
+    assert "nested" not in str(caught.value) and "uavs[0].v_max" in str(caught.value)
 
 
 def test_edits_name_the_field_path_the_cli_would_name(demo):

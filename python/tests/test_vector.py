@@ -90,7 +90,7 @@ def test_bad_input_raises():
     bad[1, 0, 1] = np.inf
     with pytest.raises(ValueError, match=r"actions\[1, 0\]: expected a finite velocity"):
         vec.step(bad)
-    with pytest.raises(ValueError, match="2 ints"):
+    with pytest.raises(ValueError, match="seed: expected an integer or a sequence of 2 integers"):
         vec.reset(seed=[1, 2, 3])
     for n in (0, -1, 1.5):
         with pytest.raises(ValueError, match="n: expected"):

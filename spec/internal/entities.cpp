@@ -197,7 +197,14 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     // A robot has a body by default; UAVs pass over one another unless given one (the paper's
     // scenarios have them cross: docs/design-notes.md).
     uav.body.radius = reader.number("radius", ground ? 0.5 : 0.0, Bound::non_negative);
-    if (uav.body.radius > 100.0) reader.required("radius").fail("expected at most 100 m");
+    if (uav.body.radius > world::kMaxAgentRadius) {
+      reader.required("radius").fail("expected at most 100 m");
+    } else if (uav.body.radius > 0.0 && uav.body.radius < world::kMinAgentRadius) {
+      // world/defs.h: Box2D's skin; a smaller body's mass overflows and its position turns NaN.
+      reader.required("radius").fail(
+          "expected 0 (no body) or at least 0.01 m (Box2D's b2_polygonRadius; a smaller body "
+          "cannot be simulated), got " + describe(reader.required("radius").json()));
+    }
 
     uav.sensor.ground_level = ground;
     if (ground) {

@@ -9,6 +9,34 @@ namespace canopy::spec::internal {
 namespace {
 
 // A section that may be absent: read as an empty object, so every default is recorded.
+// Existence confirmation drops a track once r < delete_existence (agents/tracking/tracker.cpp):
+// a newborn track (r = birth_existence) below it is dropped at birth, so no track is ever made,
+// and a track confirmed at r = confirm_existence below it is deleted at once. Hence
+// delete_existence ≤ birth_existence and delete_existence ≤ confirm_existence. The field blamed
+// is the one the file gives (delete_existence when both are given or neither).
+void checkExistenceThresholds(ObjectReader& reader, const agents::TrackingConfig& t) {
+  if (t.confirmation != agents::TrackConfirmation::existence) return;
+  const auto text = [](double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+  };
+  const auto check = [&](const char* other, double value) {
+    if (t.delete_existence <= value) return;
+    const char* blamed = reader.optional("delete_existence") || !reader.optional(other)
+                             ? "delete_existence"
+                             : other;
+    reader.required(blamed).fail(
+        std::string("expected delete_existence (") + text(t.delete_existence) + ") at most " +
+        other + " (" + text(value) + "): a track is dropped once its existence falls below " +
+        "delete_existence, so " +
+        (std::string(other) == "birth_existence" ? "every newborn track would be dropped at birth"
+                                                 : "every track would be deleted as it is confirmed"));
+  };
+  check("birth_existence", t.birth_existence);
+  check("confirm_existence", t.confirm_existence);
+}
+
 ObjectReader section(ObjectReader& root, const std::string& key) {
   static const Json kEmpty = Json::object();
   if (auto field = root.optional(key)) return field->object();
@@ -91,6 +119,7 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
   t.merge_scans = reader.integer("merge_scans", t.merge_scans, 0, 1000);
   t.merge_distance = reader.number("merge_distance", t.merge_distance, Bound::positive);
   t.walk_speed = reader.number("walk_speed", t.walk_speed, Bound::positive);
+  checkExistenceThresholds(reader, t);
   reader.finish();
 }
 

@@ -65,12 +65,13 @@ TEST(HostileSweep, AnAxisProductTooLargeIsRefusedBeforeItIsBuilt) {
   EXPECT_FALSE(fs::exists(dir / "out"));
   // --budget scales the limit (10⁵ configurations): two configurations fit, not under 10⁻⁵ of it.
   // (At 2·10⁻⁵ they would fit too, but one demo trial's tracking estimate, 4.4·10⁶ units, would
-  // not: every limit scales.)
+  // not, nor below 3·10⁻⁴ one demo step's, about 2·10⁵ units against 5·10⁸: every limit
+  // scales.)
   writeSweep(dir / "small.json", R"([{"path": "planner.horizon", "values": [1, 2]}])");
   EXPECT_EQ(run("sweep " + (dir / "small.json").string() + " --budget 1e-5 --out " +
                 (dir / "out").string()),
             2);
-  EXPECT_EQ(run("sweep " + (dir / "small.json").string() + " --budget 1e-4 --out " +
+  EXPECT_EQ(run("sweep " + (dir / "small.json").string() + " --budget 1e-3 --out " +
                 (dir / "out").string()),
             0);
 }
@@ -91,8 +92,10 @@ TEST(HostileSweep, ACorrectedSweepRunsInTheFolderOfTheRefusedOne) {
   EXPECT_EQ(run("sweep " + (dir / "sweep.json").string() + " --out " + (dir / "out").string()), 2);
 }
 
-// A FIFO or a link planted where a finished trial would be is no finished trial: the sweep runs
-// that trial again (never blocking on the FIFO) and its file replaces what was planted.
+// A link planted where a finished trial would be is no finished trial: the sweep runs that trial
+// again and its file replaces the link, never what it points to. A FIFO there is not the sweep's
+// to replace (issue 47): refused with exit 2 before any trial runs, never waited on, left as it
+// was.
 TEST(HostileSweep, PlantedTrialFilesAreRunAgainNotTrustedOrWaitedOn) {
   const fs::path dir = fresh("sweep_planted");
   writeSweep(dir / "sweep.json", R"([{"path": "planner.horizon", "values": [1]}])", 2);
@@ -101,17 +104,25 @@ TEST(HostileSweep, PlantedTrialFilesAreRunAgainNotTrustedOrWaitedOn) {
   ASSERT_EQ(run(sweep), 0);
   const fs::path trials = dir / "out" / "trials" / "horizon-1";
   const std::string first = canopy::cli_test::slurp(trials / "trial_0000.json");
+  const std::string second = canopy::cli_test::slurp(trials / "trial_0001.json");
   fs::remove(trials / "trial_0000.json");
   fs::remove(trials / "trial_0001.json");
   ASSERT_EQ(mkfifo((trials / "trial_0000.json").c_str(), 0600), 0);
   std::ofstream(dir / "outside.json") << "precious";
   fs::create_symlink(dir / "outside.json", trials / "trial_0001.json");
-  const int status = std::system(
-      ("timeout 20 " + std::string(CANOPY_BINARY) + " " + sweep + " >/dev/null 2>&1").c_str());
+  const std::string command =
+      "timeout 20 " + std::string(CANOPY_BINARY) + " " + sweep + " >/dev/null 2>&1";
+  int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << "killed after 20 s or not refused";
+  EXPECT_EQ(fs::symlink_status(trials / "trial_0000.json").type(), fs::file_type::fifo);
+  EXPECT_EQ(fs::symlink_status(trials / "trial_0001.json").type(), fs::file_type::symlink);
+  fs::remove(trials / "trial_0000.json");
+  status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "killed after 20 s or failed";
   EXPECT_EQ(fs::symlink_status(trials / "trial_0000.json").type(), fs::file_type::regular);
   EXPECT_EQ(fs::symlink_status(trials / "trial_0001.json").type(), fs::file_type::regular);
   EXPECT_EQ(canopy::cli_test::slurp(trials / "trial_0000.json"), first);  // same seed, same bits
+  EXPECT_EQ(canopy::cli_test::slurp(trials / "trial_0001.json"), second);
   EXPECT_EQ(canopy::cli_test::slurp(dir / "outside.json"), "precious");
 }
 

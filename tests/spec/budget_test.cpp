@@ -27,9 +27,57 @@ TEST(WorkBudget, EveryLibraryScenarioIsFarBelowEveryLimit) {
     EXPECT_LT(100 * work.world_units, limits.world_units) << name;
     EXPECT_LT(100 * work.record_bytes, limits.record_bytes) << name;
     EXPECT_LT(100 * work.tracking_units, limits.tracking_units) << name;
+    EXPECT_LT(100 * work.tracking_step_units, limits.tracking_step_units) << name;
     EXPECT_LT(100 * work.fusion_units, limits.fusion_units) << name;
     EXPECT_LT(100 * work.planning_units, limits.planning_units) << name;
     EXPECT_LT(100.0 * static_cast<double>(spec.trees.size()), limits.trees) << name;
+  }
+}
+
+// Issue 47: a step of seconds is refused even when the trial is short. A clutter-born track
+// under existence confirmation lives while r ≥ delete_existence; by hand with p_S = 0.95^0.2 =
+// 0.98979, δ = P_D P_G = 0.9 · 0.98 = 0.882 and r ← ψ(1 − δ)/(1 − δψ), ψ = p_S r, from 0.999:
+// 0.9122, 0.5232, 0.1125, 0.0146 — four scans. Two UAVs, 200 clutter per scan: 2 · 200 · 4 · 200
+// · 1000 = 3.2e8 units a step; max_hypotheses 10⁷ with 60 clutter (m = 61): 2 · 10⁷ · 61 plus
+// the clutter's own 2 · 60 · 1 · 60 · 1000 = 1.227e9.
+TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
+  const auto scenario = [](const std::string& tracking, double clutter) {
+    return R"({"aoi": [-60, -40, 60, 40], "clock": {"dt": 0.2, "duration": 2.0},
+      "sensing": {"clutter_rate": )" + std::to_string(clutter) + R"(},
+      "uavs": [{"start": [0, 0]}, {"start": [10, 0]}],
+      "targets": [{"path": {"start": [5, 5], "velocity": [1, 0]}}],
+      "tracking": {"preseed": false, )" + tracking + "}}";
+  };
+  LoadOptions admitted;
+  admitted.budget_scale = 10;  // to build it; checkWork below holds it to the defaults
+  const ScenarioSpec births =
+      loadScenarioText(scenario(R"("birth_existence": 0.999)", 200), "births.json", admitted);
+  EXPECT_DOUBLE_EQ(clutterTrackScans(births), 4.0);
+  EXPECT_NEAR(estimateWork(births).tracking_step_units, 2.0 * 200 * 4 * 200 * 1000 + 2.0 * 1e4 * 64,
+              1.0);
+  EXPECT_NO_THROW(checkWork(births, 1.0));  // 3.2e8 < 5e8: admitted (0.16 s a step measured)
+  const std::string events = scenario(R"("max_hypotheses": 10000000)", 60);
+  try {
+    loadScenarioText(events, "events.json");
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.field(), "tracking.max_hypotheses");
+    EXPECT_NE(e.message().find("expected at most 5.0e+08 tracking units in one step"),
+              std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("about 1.2e+09"), std::string::npos) << e.message();
+  }
+  LoadOptions thrice;
+  thrice.budget_scale = 3;
+  EXPECT_NO_THROW(loadScenarioText(events, "events.json", thrice));
+  // Four UAVs' worth of clutter births: 6.4e8, refused naming the clutter.
+  std::string four = scenario(R"("birth_existence": 0.999)", 200);
+  four.replace(four.find(R"({"start": [10, 0]})"), 18,
+               R"({"start": [10, 0]}, {"start": [20, 0]}, {"start": [30, 0]})");
+  try {
+    loadScenarioText(four, "four.json");
+    FAIL() << "expected a ScenarioError";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.field(), "sensing.clutter_rate");
   }
 }
 
