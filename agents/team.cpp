@@ -1,7 +1,5 @@
 #include "agents/team.h"
 
-#include "agents/tracking/known_people.h"
-
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -50,7 +48,7 @@ void Team::fuse() {
     if (std::isfinite(range)) {  // forget what lies beyond the agent's interest
       const Vec2 p = uav_states_[i].position;
       std::erase_if(fused_.targets[i], [&](const tracking::TargetTrack& t) {
-        return !tracking::isKnown(t.key) && (t.posterior.x.head<2>() - p).norm() > range;
+        return (t.posterior.x.head<2>() - p).norm() > range;
       });
       std::erase_if(fused_.trees[i], [&](const tracking::TreeTrack& t) {
         return (t.posterior.x.head<2>() - p).norm() > range;

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <vector>
 
 #include "agents/planning/nominal_cost_motion.h"
@@ -293,7 +292,6 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
           fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }
   }
-  if (reach_scope) preparePursuit(problem, is_free);
   preparePenalty(is_free);
   prepareClearance(problem, free_agents, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
@@ -302,47 +300,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   charged_.assign(penalty_uavs_.size(), 0.0);
 }
 
-void NominalCost::preparePursuit(const PlanningProblem& problem, const std::vector<char>& is_free) {
-  const int T = horizon_ * substeps_;
-  const double tau = period_ / substeps_;
-  pursued_.clear();
-  for (int j = 0; j < static_cast<int>(start_.size()); ++j) {
-    if (start_[j] < T) continue;  // some free UAV can see it: in scope already
-    const TargetGaussian& track = problem.targets[j];
-    // Its nearest pursuer: the UAV nearest to ξ_j now (ties: the lower index).
-    int nearest = -1;
-    double nearest_distance = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < n_uavs_; ++i) {
-      const double d = (problem.uavs[i].position - track.x.head<2>()).norm();
-      if (d < nearest_distance) {
-        nearest_distance = d;
-        nearest = i;
-      }
-    }
-    if (nearest < 0 || !is_free[nearest]) continue;
-    // z_{j,H} = H F^H ξ_j, and P_{j,H} predicted with no measurement (none can reach it).
-    const std::size_t k = static_cast<std::size_t>(j) * T + T - 1;
-    z_[k] = track.x.head<2>() + T * tau * track.x.tail<2>();
-    occluded_[k] = map_ != nullptr && map_->occludes(z_[k]);
-    SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (track.P + track.P.transpose()));
-    for (int t = 0; t < T; ++t) predictCovariance(P, tau, Q_);
-    for (int lane = 0; lane < kLanes; ++lane) {
-      trace_final_[kLanes * j + lane] = P.positionTrace();
-      in_view_final_[kLanes * j + lane] = 0;
-    }
-    pursued_.push_back(j);
-  }
-}
-
 void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   const int T = horizon_ * substeps_;
   penalty_tracks_.clear();
   for (const int j : scope_tracks_)
     if (!occluded_[static_cast<std::size_t>(j) * T + T - 1]) penalty_tracks_.push_back(j);
-  if (scope_ == CostScope::reach) {
-    for (const int j : pursued_)
-      if (!occluded_[static_cast<std::size_t>(j) * T + T - 1]) penalty_tracks_.push_back(j);
-  }
   const std::size_t n_charged = penalty_uavs_.size();
   penalty_free_.resize(n_charged);
   for (std::size_t k = 0; k < n_charged; ++k) penalty_free_[k] = is_free[penalty_uavs_[k]];

@@ -160,11 +160,6 @@ class NominalCost {
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
   // free, and the fixed UAVs' distances to each track at m = H.
   void preparePenalty(const std::vector<char>& is_free);
-  // Reach scope: the tracks no free UAV can reach within the horizon whose nearest UAV now is a
-  // free one (pursued_), with their z_{j,H} and unobserved tr(P_{j,H}), so that the terminal
-  // penalty still pulls each track's nearest pursuer toward it (docs/design-notes.md,
-  // "Known people").
-  void preparePursuit(const PlanningProblem& problem, const std::vector<char>& is_free);
   // prepare()'s part for the clearance charge: the solids near each free robot, the intended
   // positions of the fixed bodies that may touch a free one (fixed_pos: every UAV's T samples,
   // filled for the fixed agents prepare() flew: those in the cost's scope and those bodies).
@@ -216,8 +211,7 @@ class NominalCost {
   std::vector<int> scope_tracks_;   // the tracks J sums over: all (team) or reachable_ (reach)
   std::vector<int> penalty_uavs_;   // the UAVs the terminal penalty charges, by index
   std::vector<char> penalty_free_;  // per entry of penalty_uavs_: a free UAV
-  std::vector<int> penalty_tracks_;  // the tracks of scope_tracks_ (and pursued_) not occluded at m = H
-  std::vector<int> pursued_;         // reach scope: out-of-reach tracks whose nearest UAV is free
+  std::vector<int> penalty_tracks_;  // the tracks of scope_tracks_ not occluded at m = H
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;
 
