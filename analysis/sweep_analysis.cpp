@@ -77,7 +77,8 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
                    "high,occluded");
   Csv tracking_csv(out_dir / "tracking.csv",
                    "config,step,t_s,mean_ospa_m,mean_ospa_low_m,mean_ospa_high_m,mean_trace_"
-                   "pos_m2,mean_trace_pos_low_m2,mean_trace_pos_high_m2");
+                   "pos_m2,mean_trace_pos_low_m2,mean_trace_pos_high_m2,mean_team_ospa_m,mean_"
+                   "team_ospa_low_m,mean_team_ospa_high_m,mean_held,mean_held_low,mean_held_high");
   std::ostringstream &states = states_csv.text, &flows = flows_csv.text,
                      &changes = changes_csv.text, &aware = aware_csv.text,
                      &coverage = coverage_csv.text, &tracking = tracking_csv.text;
@@ -133,7 +134,14 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
     }
     for (int k = 0; k < static_cast<int>(s.ospa.size()); ++k) {
       tracking << id << ',' << k << ',' << k * s.dt << ',' << estimate({s.ospa[k], s.ospa_ci[k]})
-               << ',' << estimate({s.trace[k], s.trace_ci[k]}) << '\n';
+               << ',' << estimate({s.trace[k], s.trace_ci[k]});
+      if (k < static_cast<int>(s.team_ospa.size())) {  // trials that carry the team's figures
+        tracking << ',' << estimate({s.team_ospa[k], s.team_ospa_ci[k]}) << ','
+                 << estimate({s.held[k], s.held_ci[k]});
+      } else {
+        tracking << ",,,,,,";
+      }
+      tracking << '\n';
     }
   }
   for (const Csv* csv :

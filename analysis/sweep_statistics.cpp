@@ -85,7 +85,10 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
                                     stats.states.begin());
   };
   std::vector<std::vector<SampleMoments>> coverage(targets, std::vector<SampleMoments>(steps));
-  std::vector<SampleMoments> ospa(steps), trace(steps);
+  std::vector<SampleMoments> ospa(steps), trace(steps), team_ospa(steps), held(steps);
+  const bool team_figures = std::all_of(trials.begin(), trials.end(), [](const auto& trial) {
+    return !trial.team_ospa.empty();
+  });
 
   for (const experiments::TrialResult& trial : trials) {
     const TrialBehaviour b = analyseTrial(trial, spec);
@@ -125,6 +128,10 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
     for (int k = 0; k < steps; ++k) {
       ospa[k].add(trial.ospa[k]);
       trace[k].add(trial.trace[k]);
+      if (team_figures) {
+        team_ospa[k].add(trial.team_ospa[k]);
+        held[k].add(trial.held[k]);
+      }
     }
     stats.trial_coverage.push_back(b.coverage);
   }
@@ -141,6 +148,11 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
     stats.ospa_ci[k] = clipped(meanInterval(ospa[k]), 0.0, unbounded);
     stats.trace[k] = trace[k].mean();
     stats.trace_ci[k] = clipped(meanInterval(trace[k]), 0.0, unbounded);
+    if (!team_figures) continue;
+    stats.team_ospa.push_back(team_ospa[k].mean());
+    stats.team_ospa_ci.push_back(clipped(meanInterval(team_ospa[k]), 0.0, unbounded));
+    stats.held.push_back(held[k].mean());
+    stats.held_ci.push_back(boundedMeanInterval(held[k], 0.0, 1.0));
   }
   std::sort(stats.changes.begin(), stats.changes.end(),
             [](const ChangeCount& a, const ChangeCount& b) {

@@ -50,6 +50,10 @@ struct ConfigStatistics {
   std::vector<OcclusionStatistics> occlusions;
   std::vector<std::vector<double>> coverage;  // [t][k]: mean number of footprints holding t
   std::vector<double> ospa;                   // [k]: mean OSPA (m)
+  // [k]: mean team OSPA (m) and fraction of people held, over the trials that carry them (all or
+  // none: empty when a trial file predates them).
+  std::vector<double> team_ospa, held;
+  std::vector<ConfidenceInterval> team_ospa_ci, held_ci;
   std::vector<double> trace;                  // [k]: mean Σ tr(P_pos) (m²)
   // 95 % intervals inside what the quantity can take: coverage in [0, uavs] footprints by
   // boundedMeanInterval (t on the logit scale); OSPA and tr(P) ≥ 0, t intervals clipped at 0.

@@ -88,6 +88,9 @@ void TrialCollector::onStep(const sim::StepRecord& record) {
   const double agents = std::max<double>(1.0, static_cast<double>(record.beliefs.size()));
   result_.ospa.push_back(ospa / agents);
   result_.trace.push_back(trace / agents);
+  const sim::TeamFigures team = team_.compute(truth_, record.beliefs);
+  result_.team_ospa.push_back(team.ospa);
+  result_.held.push_back(truth_.empty() ? 1.0 : team.held / static_cast<double>(truth_.size()));
   if (record.plan) {
     for (const auto& report : record.plan->reports) result_.plan_seconds.push_back(report.seconds);
   }
@@ -124,6 +127,8 @@ std::string trialToJson(const TrialResult& trial) {
   j["tree_first_seen"] = trial.tree_first_seen;
   j["ospa"] = trial.ospa;
   j["trace"] = trial.trace;
+  j["team_ospa"] = trial.team_ospa;
+  j["held"] = trial.held;
   return j.dump();
 }
 
@@ -154,6 +159,8 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
     trial.tree_first_seen = j.at("tree_first_seen").get<std::vector<int>>();
     trial.ospa = j.at("ospa").get<std::vector<double>>();
     trial.trace = j.at("trace").get<std::vector<double>>();
+    if (j.contains("team_ospa")) trial.team_ospa = j.at("team_ospa").get<std::vector<double>>();
+    if (j.contains("held")) trial.held = j.at("held").get<std::vector<double>>();
   } catch (const Json::exception& e) {
     throw spec::ScenarioError(file, "", "not a trial result: " + printable(e.what(), 200));
   } catch (const std::logic_error&) {  // JsonTooDeep, JsonDuplicateKey
@@ -161,7 +168,9 @@ TrialResult trialFromJson(const std::string& text, const std::string& file) {
   }
   const std::size_t steps = trial.occluded.size();
   if (trial.visible.size() != steps || trial.in_footprint.size() != steps ||
-      trial.ospa.size() != steps || trial.trace.size() != steps) {
+      trial.ospa.size() != steps || trial.trace.size() != steps ||
+      (!trial.team_ospa.empty() && trial.team_ospa.size() != steps) ||
+      trial.held.size() != trial.team_ospa.size()) {
     throw spec::ScenarioError(file, "", "not a trial result: per-step arrays differ in length");
   }
   for (std::size_t k = 0; k < steps; ++k) {

@@ -7,6 +7,7 @@
 
 #include "metrics/ospa.h"
 #include "sim/step_observer.h"
+#include "sim/team_metrics.h"
 #include "spec/scenario_spec.h"
 
 namespace canopy::experiments {
@@ -27,6 +28,9 @@ struct TrialResult {
   std::vector<int> tree_first_seen;  // per tree: first step a footprint held its centre, −1 never
   std::vector<double> ospa;          // [k]: OSPA (c 50 m, p 2) averaged over agents (m)
   std::vector<double> trace;  // [k]: Σ_j tr(P_pos) of confirmed tracks, averaged over agents (m²)
+  // [k]: the team's figures (sim/team_metrics.h): team OSPA (m) and the fraction of people held.
+  // Empty in a trial file written before they existed.
+  std::vector<double> team_ospa, held;
   std::vector<double> plan_seconds;  // every planning call's wall time (s); not written
   double wall_seconds = 0.0;         // not part of the result's identity
 
@@ -44,6 +48,7 @@ class TrialCollector final : public sim::StepObserver {
   TrialResult result_;
   bool masks_ = true;
   metrics::Ospa ospa_{50.0, 2.0};
+  sim::TeamMetrics team_;
   std::vector<Vec2> truth_, estimates_;  // scratch
 };
 

@@ -117,6 +117,28 @@ TEST(ConfigStatistics, PerStepMeansCarryTIntervals) {
   EXPECT_EQ(s.ospa_ci[4].low, 0.0);
   EXPECT_NEAR(s.ospa_ci[4].high, 4.4841377, 1e-6);
   EXPECT_NEAR(s.trace_ci[4].high, 2.0 * 4.4841377, 1e-6);
+  EXPECT_TRUE(s.team_ospa.empty());  // trials without the team's figures: none summarised
+}
+
+TEST(ConfigStatistics, TeamFiguresPerStepWithIntervals) {
+  std::vector<experiments::TrialResult> trials = threeTrials();
+  // Team OSPA 1, 2, 3 m and held fractions 0.5, 1, 1 at every step.
+  const double held[] = {0.5, 1.0, 1.0};
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    trials[i].team_ospa.assign(trials[i].ospa.size(), static_cast<double>(i + 1));
+    trials[i].held.assign(trials[i].ospa.size(), held[i]);
+  }
+  const ConfigStatistics s = summarise(trials, twoByTwo(), "c", {});
+  ASSERT_EQ(s.team_ospa.size(), 5u);
+  EXPECT_DOUBLE_EQ(s.team_ospa[2], 2.0);  // as OSPA above: 2 ± 2.4841377, cut at 0
+  EXPECT_EQ(s.team_ospa_ci[2].low, 0.0);
+  EXPECT_NEAR(s.team_ospa_ci[2].high, 4.4841377, 1e-6);
+  EXPECT_NEAR(s.held[2], 2.5 / 3.0, 1e-12);
+  EXPECT_LE(s.held_ci[2].high, 1.0);  // a fraction's interval stays in [0, 1]
+  EXPECT_LT(s.held_ci[2].low, s.held[2]);
+  trials[1].team_ospa.clear();  // one trial file from before: no team figures at all
+  trials[1].held.clear();
+  EXPECT_TRUE(summarise(trials, twoByTwo(), "c", {}).team_ospa.empty());
 }
 
 TEST(WriteTables, OwnershipStatesCarryWilsonBoundsAndReachedCounts) {
