@@ -57,7 +57,7 @@ class CutoffAssignment {
   int m_ = 0, n_ = 0;
   bool truth_is_small_ = true;  // the truth is the smaller set (rows of the assignment)
   agents::fusion::Hungarian hungarian_;
-  std::vector<double> cost_;  // one component's row-major costs, reused
+  std::vector<double> cost_;                // one component's row-major costs, reused
   std::vector<std::pair<int, int>> edges_;  // (small, large) closer than c
   std::vector<Pair> pairs_;
 };

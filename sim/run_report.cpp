@@ -41,8 +41,8 @@ std::string runTable(const std::string& summary_json) {
   text += format(" (mean over UAVs and steps; cut-off %g m, order %g)\n",
                  number(team, "ospa_cutoff_m"), number(team, "ospa_order"));
   if (team.contains("team_ospa_mean_m")) {
-    text += format("team OSPA %.3g m, people held %.1f %% of the time", number(team, "team_ospa_mean_m"),
-                   100.0 * number(team, "held_fraction"));
+    text += format("team OSPA %.3g m, people held %.1f %% of the time",
+                   number(team, "team_ospa_mean_m"), 100.0 * number(team, "held_fraction"));
     text += format(" (a track within %g m whose 99 %% ellipse holds it; mean over steps)\n",
                    number(team, "held_distance_m"));
   }

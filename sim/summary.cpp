@@ -130,19 +130,20 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   long false_track_steps = 0, contacts = 0;
   Json plan_timing = Json::array();
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
-    Json uav = {{"name", names_.uavs[i]},
-                {"distance_m", uavs_[i].distance},
-                {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
-                {"observations", uavs_[i].observations},
-                {"ospa_mean_m", mean(ospa_[i])},
-                {"ospa_m", ospa_[i]},
-                {"gospa_mean_m", mean(gospa_[i])},
-                {"gospa_m", gospa_[i]},
-                {"roi_ospa_mean_m", std::isfinite(interest_range_) ? mean(roi_ospa_[i]) : mean(ospa_[i])},
-                {"false_track_steps", false_tracks_[i]},
-                {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps},
-                {"contacts", uavs_[i].contacts},
-                {"steps_in_contact", uavs_[i].steps_in_contact}};
+    Json uav = {
+        {"name", names_.uavs[i]},
+        {"distance_m", uavs_[i].distance},
+        {"mean_visible_targets", static_cast<double>(uavs_[i].visible) / steps},
+        {"observations", uavs_[i].observations},
+        {"ospa_mean_m", mean(ospa_[i])},
+        {"ospa_m", ospa_[i]},
+        {"gospa_mean_m", mean(gospa_[i])},
+        {"gospa_m", gospa_[i]},
+        {"roi_ospa_mean_m", std::isfinite(interest_range_) ? mean(roi_ospa_[i]) : mean(ospa_[i])},
+        {"false_track_steps", false_tracks_[i]},
+        {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps},
+        {"contacts", uavs_[i].contacts},
+        {"steps_in_contact", uavs_[i].steps_in_contact}};
     if (i < counts_at_end_.size()) {
       const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "agents/tracking/known_people.h"
+
 namespace canopy::agents::tracking {
 namespace {
 
@@ -43,7 +45,7 @@ int DuplicateMerger::merge(std::vector<TargetTrack>& tracks, double gate, int sc
     for (int b = a + 1; b < n; ++b) {
       if (tracks[b].label != tracks[a].label || !candidate(tracks[b])) continue;
       if (tracks[b].strongest_detection != tracks[a].strongest_detection) continue;
-      if (tracks[a].key.origin == kKnownOrigin && tracks[b].key.origin == kKnownOrigin)
+      if (isKnown(tracks[a].key) && isKnown(tracks[b].key))
         continue;  // two people the scenario names are two people
       const TargetGaussian& gb = tracks[b].posterior;
       if ((ga.x.head<2>() - gb.x.head<2>()).squaredNorm() > distance * distance) continue;

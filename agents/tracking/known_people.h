@@ -9,14 +9,16 @@
 //              and once lost the mean inside the area.
 // The bound scales P's rows and columns, P ← D P D with D = diag(min(1, σ_max,i / σ_i)), so the
 // bounded P stays positive semi-definite with the same correlations. The planner's cost counts a
-// lost track like any other (its tr(P) is large, so seeing it again is worth much): the team
-// searches for it (docs/design-notes.md, "Known people").
+// lost track like any other: in team scope its large tr(P) pulls the team back toward it
+// (docs/design-notes.md, "Search and track at scale").
 #include "agents/config.h"
 #include "agents/tracking/track.h"
 
 namespace canopy::agents::tracking {
 
-inline bool isKnown(const TrackKey& key) { return key.origin == kKnownOrigin; }
+inline bool isKnown(const TrackKey& key) {
+  return key.origin == kKnownOrigin;
+}
 
 /// A known track whose tr(P_pos) exceeds delete_trace: lost, and searched for.
 inline bool isLost(const TargetGaussian& g, double delete_trace) {

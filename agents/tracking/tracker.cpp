@@ -74,13 +74,14 @@ void Tracker::predict(double dt) {
   for (TargetTrack& track : targets_) {
     track.prior = predictNcv(track.posterior, dt, config_.sigma_a);
     track.strongest_detection = -1;
-    if (isKnown(track.key)) {  // a known person does not leave: p_S = 1, r = 1
+    const bool known = isKnown(track.key);
+    if (known) {
       boundKnownPerson(track.prior, config_.area, config_.walk_speed,
                        isLost(track.prior, config_.delete_trace));
-      track.existence = 1.0;
     }
     track.posterior = track.prior;
-    track.existence_prior = isKnown(track.key) ? 1.0 : survival * track.existence;  // ψ = p_S r
+    // ψ = p_S r; a known person does not leave: p_S = 1, r = 1.
+    track.existence_prior = known ? 1.0 : survival * track.existence;
     track.existence = track.existence_prior;
   }
   for (TreeTrack& track : trees_) {  // trees do not go away: p_S = 1

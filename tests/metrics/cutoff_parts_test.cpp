@@ -20,7 +20,8 @@ double wholeAssignment(const std::vector<Vec2>& a, const std::vector<Vec2>& b, d
   const int m = static_cast<int>(small.size()), n = static_cast<int>(large.size());
   std::vector<double> cost(static_cast<std::size_t>(m) * n);
   for (int i = 0; i < m; ++i)
-    for (int j = 0; j < n; ++j) cost[i * n + j] = std::pow(std::min(c, (small[i] - large[j]).norm()), p);
+    for (int j = 0; j < n; ++j)
+      cost[i * n + j] = std::pow(std::min(c, (small[i] - large[j]).norm()), p);
   agents::fusion::Hungarian hungarian;
   const std::span<const int> col = hungarian.solve(cost, m, n);
   double total = 0.0;
@@ -49,7 +50,7 @@ TEST(CutoffParts, EqualsTheWholeAssignmentOnRandomSets) {
     parts.solve(truth, estimates);
     const int big = std::max(m, n), small = std::min(m, n);
     const double whole = wholeAssignment(truth, estimates, c, p);
-    const double ospa = big == 0 ? 0.0
+    const double ospa = big == 0     ? 0.0
                         : small == 0 ? c
                                      : std::sqrt((whole + std::pow(c, p) * (big - small)) / big);
     const double gospa = std::sqrt(whole + 0.5 * std::pow(c, p) * (big - small));

@@ -19,8 +19,8 @@ agents::TrackEstimate track(agents::TrackKey key, const Vec2& p, double variance
 
 // People at (0, 0), (10, 0), (100, 0), (0, 100).
 // Agent 0: {-1,0} at (1, 0), P = I; {-1,1} at (10, 2), P = I.
-// Agent 1: {-1,0} at (0, 0.5), P = 0.25 I (tr 0.5: the best copy of {-1,0}); {0,7} at (100, 4), P = I.
-// Agent 2: {-1,1} at (10, 1), P = 9 I (nearer the person, but tr 18 > 2: agent 0's copy is the
+// Agent 1: {-1,0} at (0, 0.5), P = 0.25 I (tr 0.5: the best copy of {-1,0}); {0,7} at (100, 4), P =
+// I. Agent 2: {-1,1} at (10, 1), P = 9 I (nearer the person, but tr 18 > 2: agent 0's copy is the
 //          team's); {2,1} at (300, 0), P = I (no person within c = 50 m).
 // The team's set: (0, 0.5), (10, 2), (100, 4), (300, 0). Assignment: d² = 0.25, 4, 16 for the
 // first three people; (0, 100) has no estimate within c, (300, 0) no person: one missed, one false.

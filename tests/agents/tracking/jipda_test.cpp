@@ -135,8 +135,8 @@ TEST(Jipda, VisibilityByLineOfSightBehindAWall) {
   EXPECT_EQ(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), footprint, wall, line_of_sight,
                                Vec2::Zero()),
             0.0);
-  EXPECT_NEAR(visibleProbability(Vec2(-10.0, 0.0), Mat2::Identity(), footprint, wall,
-                                 line_of_sight, Vec2::Zero()),
+  EXPECT_NEAR(visibleProbability(Vec2(-10.0, 0.0), Mat2::Identity(), footprint, wall, line_of_sight,
+                                 Vec2::Zero()),
               1.0, 1e-15);
   EXPECT_NEAR(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), footprint, wall,
                                  CameraOcclusion{}, Vec2::Zero()),
