@@ -305,6 +305,25 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   penalty_tracks_.clear();
   for (const int j : scope_tracks_)
     if (!occluded_[static_cast<std::size_t>(j) * T + T - 1]) penalty_tracks_.push_back(j);
+  // The penalty's order, by decreasing tr(P_{j,H}[pos]) and then index: the tracks no free UAV
+  // can see (start_ = T) have the same trace and view in every lane, so they are sorted here once
+  // and merged with the few that a candidate changes (addTerminalPenalty). A non-finite trace
+  // leaves the order to the insertion sort of every call (its exact ties and NaN handling).
+  penalty_fixed_order_.clear();
+  penalty_varying_.clear();
+  penalty_merge_ = true;
+  for (const int j : penalty_tracks_) {
+    if (start_[j] < T) {
+      penalty_varying_.push_back(j);
+      continue;
+    }
+    if (in_view_final_[kLanes * j] != 0) continue;  // a fixed UAV holds it at m = H
+    penalty_merge_ = penalty_merge_ && std::isfinite(trace_final_[kLanes * j]);
+    penalty_fixed_order_.push_back(j);
+  }
+  std::stable_sort(penalty_fixed_order_.begin(), penalty_fixed_order_.end(), [&](int a, int b) {
+    return trace_final_[kLanes * a] > trace_final_[kLanes * b];
+  });
   const std::size_t n_charged = penalty_uavs_.size();
   penalty_free_.resize(n_charged);
   for (std::size_t k = 0; k < n_charged; ++k) penalty_free_[k] = is_free[penalty_uavs_[k]];
@@ -317,10 +336,29 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
       terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
     }
   }
+  // Per track, the fixed entries by distance (then entry), so that the penalty's search for the
+  // least D_i + distance stops at the first fixed UAV farther than the best so far (D_i ≥ 0).
+  penalty_free_entries_.clear();
+  penalty_fixed_entries_.clear();
+  for (std::size_t k = 0; k < n_charged; ++k)
+    (penalty_free_[k] ? penalty_free_entries_ : penalty_fixed_entries_)
+        .push_back(static_cast<int>(k));
+  const std::size_t n_fixed = penalty_fixed_entries_.size();
+  nearest_fixed_.resize(start_.size() * n_fixed);
+  penalty_nearest_ = true;
+  for (const int j : penalty_tracks_) {
+    const double* distance = &terminal_distance_[j * n_charged];
+    int* order = &nearest_fixed_[j * n_fixed];
+    std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
+    for (const int k : penalty_fixed_entries_)
+      penalty_nearest_ = penalty_nearest_ && std::isfinite(distance[k]);
+    std::sort(order, order + n_fixed, [&](int a, int b) {
+      return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+    });
+  }
 }
 
-void NominalCost::prepareClearance(const PlanningProblem& problem,
-                                   std::span<const int> free_agents,
+void NominalCost::prepareClearance(const PlanningProblem& problem, std::span<const int> free_agents,
                                    const std::vector<char>& is_free,
                                    const std::vector<Vec2>& fixed_pos) {
   const int T = horizon_ * substeps_;
@@ -344,7 +382,8 @@ void NominalCost::prepareClearance(const PlanningProblem& problem,
   for (int i = 0; i < n_uavs_; ++i) {
     // prepare() flew every fixed agent that may touch a free one; no other can be charged.
     if (is_free[i] || !mayTouch(problem, free_agents, i)) continue;
-    Teammate mate{problem.uavs[i].radius, problem.uavs[i].kind == world::AgentKind::ground,
+    Teammate mate{problem.uavs[i].radius,
+                  problem.uavs[i].kind == world::AgentKind::ground,
                   {problem.uavs[i].position}};
     mate.path.insert(mate.path.end(), fixed_pos.begin() + static_cast<std::ptrdiff_t>(i) * T,
                      fixed_pos.begin() + static_cast<std::ptrdiff_t>(i + 1) * T);

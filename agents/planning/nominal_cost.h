@@ -205,13 +205,24 @@ class NominalCost {
   std::vector<SymmetricCov4> fixed_path_;
 
   // Per track: the recursion before the first step a free UAV could see it.
-  std::vector<int> start_;          // first such sample t (H·S: none)
-  std::vector<double> cost_start_;  // Σ_{m<start} γ^{m−1} tr(P_{j,m})
-  std::vector<int> reachable_;      // the tracks with start_ < H·S, in order
-  std::vector<int> scope_tracks_;   // the tracks J sums over: all (team) or reachable_ (reach)
-  std::vector<int> penalty_uavs_;   // the UAVs the terminal penalty charges, by index
-  std::vector<char> penalty_free_;  // per entry of penalty_uavs_: a free UAV
+  std::vector<int> start_;           // first such sample t (H·S: none)
+  std::vector<double> cost_start_;   // Σ_{m<start} γ^{m−1} tr(P_{j,m})
+  std::vector<int> reachable_;       // the tracks with start_ < H·S, in order
+  std::vector<int> scope_tracks_;    // the tracks J sums over: all (team) or reachable_ (reach)
+  std::vector<int> penalty_uavs_;    // the UAVs the terminal penalty charges, by index
+  std::vector<char> penalty_free_;   // per entry of penalty_uavs_: a free UAV
   std::vector<int> penalty_tracks_;  // the tracks of scope_tracks_ not occluded at m = H
+  // penalty_tracks_ split: those no free UAV can see and no fixed one holds at m = H, in the
+  // penalty's order (the same in every lane), and those a candidate can change, in index order;
+  // penalty_merge_: the first list's traces are finite, so a merge gives the insertion sort's
+  // order.
+  std::vector<int> penalty_fixed_order_, penalty_varying_;
+  bool penalty_merge_ = true;
+  // Entries of penalty_uavs_ that are free, and fixed; per track j the fixed entries by
+  // increasing distance to z_{j,H} (ties: lower entry), at [j·|fixed|]; penalty_nearest_: every
+  // such distance is finite, so the search may stop early (addTerminalPenalty).
+  std::vector<int> penalty_free_entries_, penalty_fixed_entries_, nearest_fixed_;
+  bool penalty_nearest_ = true;
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;
 

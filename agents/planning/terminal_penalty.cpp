@@ -1,6 +1,7 @@
 // The NBO cost's terminal penalty (Miller et al. 2009), one candidate at a time: each track that
 // no footprint holds and no crown hides at m = H, by decreasing tr(P_{j,H}[pos]), is charged to
 // the UAV whose distance to it plus the distance D_i already charged to it is least.
+#include <cmath>
 #include <limits>
 
 #include "agents/planning/nominal_cost.h"
@@ -14,15 +15,39 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
   // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
   // order J sums them), by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
   // insertion sort).
-  int count = 0;
-  for (const int j : penalty_tracks_) {
-    if (in_view_final_[kLanes * j + lane] != 0) continue;
-    int slot = count++;
-    for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
-      uncovered_[slot] = uncovered_[slot - 1];
+  auto insertSorted = [&](const std::vector<int>& tracks, int* out) {
+    int n = 0;
+    for (const int j : tracks) {
+      if (in_view_final_[kLanes * j + lane] != 0) continue;
+      int slot = n++;
+      for (; slot > 0 && traceFinal(out[slot - 1]) < traceFinal(j); --slot)
+        out[slot] = out[slot - 1];
+      out[slot] = j;
     }
-    uncovered_[slot] = j;
+    return n;
+  };
+  int count = 0;
+  bool merged = penalty_merge_;
+  if (merged) {
+    // The same order by a merge: the tracks a candidate changes, sorted here (they are few), and
+    // the rest, sorted once by prepare(); ties go to the lower index, as the insertion's do.
+    int* varying = charged_uavs_.data();  // scratch until the charging below fills it
+    const int n_varying = insertSorted(penalty_varying_, varying);
+    for (int v = 0; v < n_varying && merged; ++v) merged = std::isfinite(traceFinal(varying[v]));
+    if (merged) {
+      std::size_t f = 0;
+      int v = 0;
+      while (f < penalty_fixed_order_.size() || v < n_varying) {
+        const bool take_fixed =
+            v == n_varying || (f < penalty_fixed_order_.size() &&
+                               (traceFinal(penalty_fixed_order_[f]) > traceFinal(varying[v]) ||
+                                (traceFinal(penalty_fixed_order_[f]) == traceFinal(varying[v]) &&
+                                 penalty_fixed_order_[f] < varying[v])));
+        uncovered_[count++] = take_fixed ? penalty_fixed_order_[f++] : varying[v++];
+      }
+    }
   }
+  if (!merged) count = insertSorted(penalty_tracks_, uncovered_.data());
   // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
   const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   const std::size_t n_charged = penalty_uavs_.size();
@@ -33,15 +58,29 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
     const double* fixed_distance = &terminal_distance_[j * n_charged];
     std::size_t best = 0;
     double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
-    // The UAVs the penalty charges (team scope: every UAV, by index, the paper's loop).
-    for (std::size_t k = 0; k < n_charged; ++k) {
-      // |p_{i,H} − z_{j,H}|
-      const double distance =
-          penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
-      if (charged_[k] + distance < best_total) {
+    // The UAVs the penalty charges (team scope: every UAV, the paper's loop): the least
+    // D_i + |p_{i,H} − z_{j,H}|, the lowest entry among equals.
+    auto consider = [&](std::size_t k, double distance) {
+      const double total = charged_[k] + distance;
+      if (total < best_total || (total == best_total && k < best)) {
         best = k;
-        best_total = charged_[k] + distance;
+        best_total = total;
         best_distance = distance;
+      }
+    };
+    if (penalty_nearest_) {
+      for (const int k : penalty_free_entries_)
+        consider(k, (final_position[penalty_uavs_[k]] - z).norm());
+      // The fixed ones nearest first: one farther than best_total cannot reach it (D_i ≥ 0).
+      const std::size_t n_fixed = penalty_fixed_entries_.size();
+      for (const int *k = &nearest_fixed_[j * n_fixed], *end = k + n_fixed; k != end; ++k) {
+        if (fixed_distance[*k] > best_total) break;
+        consider(*k, fixed_distance[*k]);
+      }
+    } else {
+      for (std::size_t k = 0; k < n_charged; ++k) {
+        consider(k, penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm()
+                                     : fixed_distance[k]);
       }
     }
     J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
