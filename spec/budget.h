@@ -16,7 +16,7 @@ struct WorkLimits {
   double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
   double record_bytes = 4e9;          // estimated size of record.jsonl
   double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
-  double tracking_step_units = 5e8;   // one step, every UAV: about a second of JPDA at worst
+  double tracking_step_units = 5e8;   // one step, every UAV, worst case (bench/RESULTS.md, issue 47)
   double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
   double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
