@@ -204,7 +204,8 @@ fs::path editedRun(const std::string& name, int line, const std::string& edit) {
 TEST(HostileOutputs, IntegersPast32BitsAreRefusedNamingTheLineNotWrapped) {
   // 2³² + 1 wraps to 1, the index the line must hold; 2³² wraps to target 0, a real target.
   const fs::path step = editedRun("k", 2, R"(s/"k":1,/"k":4294967297,/)");
-  for (const std::string command : {"view " + step.string() + " --out -", "coverage " + step.string()}) {
+  for (const std::string& command :
+       {"view " + step.string() + " --out -", "coverage " + step.string()}) {
     const Outcome outcome = canopy(command + " >/dev/null");
     EXPECT_EQ(outcome.code, 2) << command << "\n" << outcome.output;
     EXPECT_NE(outcome.output.find("record.jsonl: line 2: k: expected"), std::string::npos)
