@@ -32,9 +32,10 @@ void require(const ScenarioSpec& spec, const std::string& field, double amount, 
 
 WorkLimits workLimits(double scale) {
   WorkLimits limits;
-  for (double* limit : {&limits.trees, &limits.world_units, &limits.record_bytes,
-                        &limits.tracking_units, &limits.tracking_step_units, &limits.fusion_units, &limits.planning_units,
-                        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
+  for (double* limit :
+       {&limits.trees, &limits.world_units, &limits.record_bytes, &limits.tracking_units,
+        &limits.tracking_step_units, &limits.fusion_units, &limits.planning_units,
+        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
   return limits;
@@ -246,11 +247,12 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
           "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
           "targets and trees one footprint can hold + sensing.clutter_rate)");
   // Per step: the field named is the one whose term is larger.
-  const double enumeration_step =
-      static_cast<double>(spec.uavs.size()) * spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
+  const double enumeration_step = static_cast<double>(spec.uavs.size()) *
+                                  spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
   require(spec,
-          enumeration_step >= work.tracking_step_units - enumeration_step ? "tracking.max_hypotheses"
-                                                                          : "sensing.clutter_rate",
+          enumeration_step >= work.tracking_step_units - enumeration_step
+              ? "tracking.max_hypotheses"
+              : "sensing.clutter_rate",
           work.tracking_step_units, limits.tracking_step_units,
           "tracking units in one step (UAVs × (max_hypotheses × min(m, 64) + clutter_rate² × "
           "scans a clutter-born track lives × 1000 propagation sweeps))");

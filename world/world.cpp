@@ -218,7 +218,8 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(new Box2d) {
   bool any_ground = false;
   for (int i = 0; i < static_cast<int>(def_.uavs.size()); ++i) {
     const UavDef& agent = def_.uavs[i];
-    if (agent.radius != 0.0 && !(agent.radius >= kMinAgentRadius && agent.radius <= kMaxAgentRadius))
+    if (agent.radius != 0.0 &&
+        !(agent.radius >= kMinAgentRadius && agent.radius <= kMaxAgentRadius))
       throw std::invalid_argument("agent " + std::to_string(i) + ": radius " +
                                   std::to_string(agent.radius) + " m, expected 0 or " +
                                   std::to_string(kMinAgentRadius) + " to " +

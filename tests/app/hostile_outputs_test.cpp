@@ -29,9 +29,9 @@ struct Outcome {
 };
 
 // `canopy ARGUMENTS` in bash under `limits` (ulimit and timeout), output captured.
-Outcome canopy(const std::string& arguments, const std::string& limits = "exec timeout -s KILL 120 ") {
-  const std::string command =
-      "bash -c '" + limits + CANOPY_BINARY + " " + arguments + "' 2>&1";
+Outcome canopy(const std::string& arguments,
+               const std::string& limits = "exec timeout -s KILL 120 ") {
+  const std::string command = "bash -c '" + limits + CANOPY_BINARY + " " + arguments + "' 2>&1";
   Outcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return outcome;
@@ -117,13 +117,9 @@ const std::vector<Writer>& writers() {
          return "view " + finishedRun().string() + " --out " + (dir / "page.html").string();
        }},
       {"run_record", "record.jsonl",
-       [](const fs::path& dir) {
-         return "run demo --set clock.duration=1 --out " + dir.string();
-       }},
+       [](const fs::path& dir) { return "run demo --set clock.duration=1 --out " + dir.string(); }},
       {"run_summary", "summary.json",
-       [](const fs::path& dir) {
-         return "run demo --set clock.duration=1 --out " + dir.string();
-       }},
+       [](const fs::path& dir) { return "run demo --set clock.duration=1 --out " + dir.string(); }},
       {"run_html", "replay.html",
        [](const fs::path& dir) {
          return "run demo --set clock.duration=1 --html --out " + dir.string();
@@ -161,7 +157,8 @@ TEST(HostileOutputs, ANodeWhereAFileGoesIsRefusedBeforeAnyWorkAndLeftAsItWas) {
       EXPECT_EQ(outcome.code, 2) << label << "\n" << outcome.output;
       EXPECT_NE(outcome.output.find(target.string() + "': exists and is " + node.kind),
                 std::string::npos)
-          << label << "\n" << outcome.output;
+          << label << "\n"
+          << outcome.output;
       EXPECT_EQ(identity(target), before) << label << ": the node was replaced";
       EXPECT_FALSE(temporariesBeside(target)) << label;
       // Before any work: nothing of a run or a sweep was written beside it.
@@ -176,11 +173,11 @@ TEST(HostileOutputs, ANodeWhereAFileGoesIsRefusedBeforeAnyWorkAndLeftAsItWas) {
 
 TEST(HostileOutputs, ViewOutDashWritesThePageToStandardOutput) {
   const fs::path dir = scratch("dash");
-  const Outcome file = canopy("view " + finishedRun().string() + " --out " +
-                              (dir / "page.html").string());
+  const Outcome file =
+      canopy("view " + finishedRun().string() + " --out " + (dir / "page.html").string());
   ASSERT_EQ(file.code, 0) << file.output;
-  const Outcome dash = canopy("view " + finishedRun().string() + " --out - > " +
-                              (dir / "stdout.html").string());
+  const Outcome dash =
+      canopy("view " + finishedRun().string() + " --out - > " + (dir / "stdout.html").string());
   ASSERT_EQ(dash.code, 0) << dash.output;
   const auto written = canopy::readTextFile(dir / "page.html");
   const auto printed = canopy::readTextFile(dir / "stdout.html");
@@ -195,8 +192,8 @@ TEST(HostileOutputs, ViewOutDashWritesThePageToStandardOutput) {
 fs::path editedRun(const std::string& name, int line, const std::string& edit) {
   const fs::path dir = scratch(name) / "run";
   fs::copy(finishedRun(), dir, fs::copy_options::recursive);
-  const std::string command = "sed -i '" + std::to_string(line) + edit + "' " +
-                              (dir / "record.jsonl").string();
+  const std::string command =
+      "sed -i '" + std::to_string(line) + edit + "' " + (dir / "record.jsonl").string();
   EXPECT_EQ(std::system(command.c_str()), 0);
   return dir;
 }
@@ -209,7 +206,8 @@ TEST(HostileOutputs, IntegersPast32BitsAreRefusedNamingTheLineNotWrapped) {
     const Outcome outcome = canopy(command + " >/dev/null");
     EXPECT_EQ(outcome.code, 2) << command << "\n" << outcome.output;
     EXPECT_NE(outcome.output.find("record.jsonl: line 2: k: expected"), std::string::npos)
-        << command << "\n" << outcome.output;
+        << command << "\n"
+        << outcome.output;
   }
   const fs::path target =
       editedRun("in_footprint", 3, R"(s/"in_footprint":\[[^]]*\]/"in_footprint":[4294967296]/)");

@@ -5,8 +5,8 @@
 #include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
-#include <sys/un.h>
 #include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -122,7 +122,7 @@ TEST_F(OutputFile, ANodeThatIsNotARegularFileIsRefusedAndLeftAsItWas) {
     }
   }
   EXPECT_EQ(names(), (std::set<std::string>{"fifo", "late"}));  // no temporary left
-  checkOutputFile(dir_ / "absent");  // absent: nothing to refuse
+  checkOutputFile(dir_ / "absent");                             // absent: nothing to refuse
   std::ofstream(dir_ / "regular") << "x";
   checkOutputFile(dir_ / "regular");
   EXPECT_THROW(checkOutputEntries(dir_), OutputRefused);

@@ -43,10 +43,12 @@ TEST(WorkBudget, EveryLibraryScenarioIsFarBelowEveryLimit) {
 TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
   const auto scenario = [](const std::string& tracking, double clutter) {
     return R"({"aoi": [-60, -40, 60, 40], "clock": {"dt": 0.2, "duration": 2.0},
-      "sensing": {"clutter_rate": )" + std::to_string(clutter) + R"(},
+      "sensing": {"clutter_rate": )" +
+           std::to_string(clutter) + R"(},
       "uavs": [{"start": [0, 0]}, {"start": [10, 0]}],
       "targets": [{"path": {"start": [5, 5], "velocity": [1, 0]}}],
-      "tracking": {"preseed": false, )" + tracking + "}}";
+      "tracking": {"preseed": false, )" +
+           tracking + "}}";
   };
   LoadOptions admitted;
   admitted.budget_scale = 10;  // to build it; checkWork below holds it to the defaults
@@ -63,7 +65,8 @@ TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), "tracking.max_hypotheses");
     EXPECT_NE(e.message().find("expected at most 5.0e+08 tracking units in one step"),
-              std::string::npos) << e.message();
+              std::string::npos)
+        << e.message();
     EXPECT_NE(e.message().find("about 1.2e+09"), std::string::npos) << e.message();
   }
   LoadOptions thrice;
