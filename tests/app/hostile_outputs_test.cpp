@@ -221,6 +221,24 @@ TEST(HostileOutputs, IntegersPast32BitsAreRefusedNamingTheLineNotWrapped) {
   fs::remove_all(target.parent_path());
 }
 
+TEST(HostileOutputs, ARecordLineLongerThan256MiBIsRefusedNamingTheLine) {
+  // 257 MiB of NUL bytes, no newline: one line (sparse: nothing is written to the disk).
+  const fs::path dir = scratch("long") / "run";
+  fs::copy(finishedRun(), dir, fs::copy_options::recursive);
+  fs::resize_file(dir / "record.jsonl", 0);
+  fs::resize_file(dir / "record.jsonl", std::uintmax_t{257} << 20);
+  for (const std::string& command :
+       {"view " + dir.string() + " --out -", "coverage " + dir.string()}) {
+    const Outcome outcome = canopy(command + " >/dev/null");
+    EXPECT_EQ(outcome.code, 2) << command << "\n" << outcome.output;
+    EXPECT_NE(outcome.output.find("record.jsonl: line 1: expected a line of at most 256 MiB"),
+              std::string::npos)
+        << command << "\n"
+        << outcome.output;
+  }
+  fs::remove_all(dir.parent_path());
+}
+
 #ifndef __SANITIZE_ADDRESS__  // ASan reserves terabytes of address space: no ulimit -v
 TEST(HostileOutputs, ARecordLineThatCannotFitInMemoryIsOutOfMemoryNotAnAbort) {
   // One line of 120 MB holding 6·10⁷ numbers: its document takes gigabytes, under a 1.5 GB cap.
