@@ -42,11 +42,27 @@ Outcome canopy(const std::string& arguments,
   return outcome;
 }
 
+// Every folder scratch() made, removed when the tests end (the run and the sweep are shared).
+std::vector<fs::path>& made() {
+  static std::vector<fs::path> folders;
+  return folders;
+}
+class RemoveScratch : public testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ignored;
+    for (const fs::path& dir : made()) fs::remove_all(dir, ignored);
+  }
+};
+const testing::Environment* const kRemoveScratch =
+    testing::AddGlobalTestEnvironment(new RemoveScratch);
+
 fs::path scratch(const std::string& name) {
   const fs::path dir =
       fs::temp_directory_path() / ("canopy_hostile3_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  made().push_back(dir);
   return dir;
 }
 
