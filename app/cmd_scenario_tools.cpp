@@ -168,9 +168,12 @@ int Forest::run() {
     const double in_region = def_.lambda * def_.region.width() * def_.region.height();
     const bool dilation = in_region <= limit;
     const bool gap = def_.min_gap && *def_.min_gap > 2.0 * def_.radius.hi;
-    usageError(!dilation ? "--lambda" : gap ? "--min-gap" : "--radius", spec::budgetMessage(expected, limit,
-                                               "trees drawn (λ × the region dilated by "
-                                               "2 r_max + min_gap)"));
+    usageError(!dilation ? "--lambda"
+               : gap     ? "--min-gap"
+                         : "--radius",
+               spec::budgetMessage(expected, limit,
+                                   "trees drawn (λ × the region dilated by "
+                                   "2 r_max + min_gap)"));
   }
   def_.max_points = static_cast<std::size_t>(limit);
   using Json = nlohmann::json;

@@ -62,8 +62,7 @@ void checkOutputEntries(const fs::path& dir) {
   if (!fs::is_directory(fs::symlink_status(dir, error))) return;
   for (const auto& entry : fs::directory_iterator(dir, error)) {
     const fs::file_status status = entry.symlink_status(error);
-    if (error || fs::is_regular_file(status) || fs::is_directory(status) ||
-        fs::is_symlink(status))
+    if (error || fs::is_regular_file(status) || fs::is_directory(status) || fs::is_symlink(status))
       continue;
     checkOutputFile(entry.path());
   }

@@ -260,13 +260,11 @@ bool pythonEditInput(std::string_view data) {
 }
 
 const std::vector<Target>& targets() {
-  static const std::vector<Target> all = {{"scenario_loader", &loadScenarioInput},
-                                          {"sweep_loader", &loadSweepInput},
-                                          {"track_csv", &parseTrackInput},
-                                          {"result_files", &readResultInput},
-                                          {"record_reader", &readRecordInput},
-                                          {"replay_reader", &readReplayInput},
-                                          {"python_edits", &pythonEditInput}};
+  static const std::vector<Target> all = {
+      {"scenario_loader", &loadScenarioInput}, {"sweep_loader", &loadSweepInput},
+      {"track_csv", &parseTrackInput},         {"result_files", &readResultInput},
+      {"record_reader", &readRecordInput},     {"replay_reader", &readReplayInput},
+      {"python_edits", &pythonEditInput}};
   return all;
 }
 

@@ -25,7 +25,6 @@ std::string readText(const fs::path& path, const std::string& what) {
                               what == "record" ? spec::kMaxResultBytes : spec::kMaxJsonBytes);
 }
 
-
 Json parseWhole(const fs::path& path, const std::string& what) {
   Json json = spec::parseJson(readText(path, what), path.string());  // names depth, syntax
   if (!json.is_object())
@@ -97,9 +96,9 @@ class LineReader {
   }
   std::string key(const Json& value, const std::string& at) const {
     constexpr std::int64_t kMin = INT64_MIN, kMax = INT64_MAX;
-    const std::optional<std::int64_t> origin =
-        value.is_array() && value.size() == 2 ? spec::integerWithin(value[0], kMin, kMax)
-                                              : std::nullopt;
+    const std::optional<std::int64_t> origin = value.is_array() && value.size() == 2
+                                                   ? spec::integerWithin(value[0], kMin, kMax)
+                                                   : std::nullopt;
     const std::optional<std::int64_t> serial =
         origin ? spec::integerWithin(value[1], kMin, kMax) : std::nullopt;
     if (!serial) fail(at, "a key [origin, serial] (two 64-bit integers)");

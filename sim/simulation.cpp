@@ -1,11 +1,11 @@
 #include "sim/simulation.h"
 
-#include "sim/finite_check.h"
-
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "sim/finite_check.h"
 
 namespace canopy::sim {
 

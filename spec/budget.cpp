@@ -12,6 +12,7 @@
 #include "agents/tracking/existence.h"
 #include "sensing/footprint.h"
 #include "spec/error.h"
+#include "world/substeps.h"
 
 namespace canopy::spec {
 namespace {
@@ -32,9 +33,10 @@ void require(const ScenarioSpec& spec, const std::string& field, double amount, 
 
 WorkLimits workLimits(double scale) {
   WorkLimits limits;
-  for (double* limit : {&limits.trees, &limits.world_units, &limits.record_bytes,
-                        &limits.tracking_units, &limits.tracking_step_units, &limits.fusion_units, &limits.planning_units,
-                        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
+  for (double* limit : {&limits.trees, &limits.world_units, &limits.world_substeps,
+                        &limits.record_bytes, &limits.tracking_units, &limits.tracking_step_units,
+                        &limits.fusion_units, &limits.planning_units, &limits.sweep_configurations,
+                        &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
   return limits;
@@ -120,6 +122,33 @@ double visibleTargetsBound(const ScenarioSpec& spec) {
   return busiest;
 }
 
+namespace {
+
+// The fastest any target's scripted path moves (m/s): a constant velocity, or a segment's.
+double fastestTarget(const ScenarioSpec& spec) {
+  double fastest = 0.0;  // m/s
+  for (const TargetSpec& target : spec.targets) {
+    const world::Path& path = target.path;
+    if (path.isConstantVelocity()) {
+      fastest = std::max(fastest, path.velocity().norm());
+      continue;
+    }
+    const std::vector<world::TimedPoint>& p = path.points();
+    for (std::size_t i = 1; i < p.size(); ++i)
+      fastest = std::max(fastest, (p[i].p - p[i - 1].p).norm() / (p[i].t - p[i - 1].t));
+  }
+  return fastest;
+}
+
+double substepsBound(const ScenarioSpec& spec) {
+  std::vector<world::UavDef> bodies;
+  bodies.reserve(spec.uavs.size());
+  for (const UavSpec& uav : spec.uavs) bodies.push_back(uav.body);
+  return world::substepBound(bodies, spec.dt, fastestTarget(spec));
+}
+
+}  // namespace
+
 double clutterTrackScans(const ScenarioSpec& spec) {
   const agents::TrackingConfig& t = spec.tracking;
   const double steps = spec.steps() + 1.0;
@@ -147,8 +176,10 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   // detections per scan, at most
   const double seen = work.visible_targets + clutter + work.visible_trees;
   // Sensing: every UAV looks at every target, its clutter and the trees in its footprint; the
-  // world moves every body.
-  work.world_units = steps * (uavs + targets + uavs * seen);
+  // world moves every body in each of its Box2D sub-steps (world/substeps.h: v_max 10⁹ m/s made
+  // 2·10⁸ sub-steps a step, a run that never ended).
+  work.substeps = substepsBound(spec);
+  work.world_units = steps * (work.substeps * (uavs + targets) + uavs * seen);
   // record.jsonl: per step and UAV a fixed part (pose, plan, intentions) and a part per track
   // held (targets, clutter-born tentatives); set above the sizes measured on the library
   // scenarios (tests/spec/budget_test.cpp); a polygonal crown or wall in an agent's map
@@ -222,20 +253,46 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   return work;
 }
 
+namespace {
+
+// The field that makes the sub-steps many: the radius is at least world::kMinAgentRadius, so
+// only a speed is unbounded: the fastest agent's v_max, or the targets' paths.
+std::string fastestField(const ScenarioSpec& spec) {
+  std::size_t fastest = 0;
+  for (std::size_t i = 0; i < spec.uavs.size(); ++i)
+    if (spec.uavs[i].body.v_max > spec.uavs[fastest].body.v_max) fastest = i;
+  if (spec.uavs.empty() || fastestTarget(spec) > spec.uavs[fastest].body.v_max) return "targets";
+  return "uavs[" + std::to_string(fastest) + "].v_max";
+}
+
+}  // namespace
+
 void checkWork(const ScenarioSpec& spec, double budget_scale) {
   const WorkLimits limits = workLimits(budget_scale);
   const WorkEstimate work = estimateWork(spec);
   require(spec, "occluders", static_cast<double>(spec.trees.size()), limits.trees,
           "trees in all (every layout and include together)");
+  // Sub-steps drive the estimate when the bodies' share outweighs the sensing's.
+  const double bodies = static_cast<double>(spec.uavs.size() + spec.targets.size());
+  const double sensing = static_cast<double>(spec.uavs.size()) *
+                         (work.visible_targets + spec.sensing.clutter_rate + work.visible_trees);
+  const bool substepping = work.substeps > 1.0 && work.substeps * bodies > sensing;
   require(spec,
-          work.visible_trees > static_cast<double>(spec.targets.size()) ? "occluders"
-                                                                        : "clock.duration",
+          substepping                                                     ? fastestField(spec)
+          : work.visible_trees > static_cast<double>(spec.targets.size()) ? "occluders"
+                                                                          : "clock.duration",
           work.world_units, limits.world_units,
-          "world units per trial (steps × (UAVs + targets + UAVs × (clutter_rate + targets and "
-          "trees one footprint can hold)))");
+          "world units per trial (steps × (Box2D sub-steps × (UAVs + targets) + UAVs × "
+          "(clutter_rate + targets and trees one footprint can hold)))");
   require(spec, "clock.duration", work.record_bytes, limits.record_bytes,
           "bytes of record.jsonl (steps × UAVs × (1000 + 600 × (targets + clutter_rate) + 45 × "
           "polygon vertices))");
+  // Box2D steps the whole world once per sub-step: a step of v_max·dt = 2·10⁸ m was 2·10⁸
+  // sub-steps, a run that never ended.
+  require(spec, work.substeps > 1.0 ? fastestField(spec) : std::string("clock.duration"),
+          (spec.steps() + 1.0) * work.substeps, limits.world_substeps,
+          "Box2D sub-steps per trial (steps × the most sub-steps of one step: every body moves at "
+          "most 1 m and two bodies close by at most half the smaller radius per sub-step)");
   // The field named is the one that drives the estimate most.
   const double m = work.visible_targets + spec.sensing.clutter_rate + work.visible_trees;
   const double enumeration = spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
@@ -246,11 +303,12 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
           "tracking units per trial (steps × UAVs × (1001 m² + max_hypotheses × min(m, 64)), m = "
           "targets and trees one footprint can hold + sensing.clutter_rate)");
   // Per step: the field named is the one whose term is larger.
-  const double enumeration_step =
-      static_cast<double>(spec.uavs.size()) * spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
+  const double enumeration_step = static_cast<double>(spec.uavs.size()) *
+                                  spec.tracking.max_hypotheses * std::min(std::max(m, 1.0), 64.0);
   require(spec,
-          enumeration_step >= work.tracking_step_units - enumeration_step ? "tracking.max_hypotheses"
-                                                                          : "sensing.clutter_rate",
+          enumeration_step >= work.tracking_step_units - enumeration_step
+              ? "tracking.max_hypotheses"
+              : "sensing.clutter_rate",
           work.tracking_step_units, limits.tracking_step_units,
           "tracking units in one step (UAVs × (max_hypotheses × min(m, 64) + clutter_rate² × "
           "scans a clutter-born track lives × 1000 propagation sweeps))");

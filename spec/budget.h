@@ -13,10 +13,11 @@ namespace canopy::spec {
 /// Upper bounds, per trial unless said otherwise. A "unit" is one inner-loop term of that stage.
 struct WorkLimits {
   double trees = 2e6;                 // points one layout generator draws; trees in a scenario
-  double world_units = 2e9;           // steps × (UAVs + targets + UAVs · clutter per scan)
+  double world_units = 2e9;           // steps × (sub-steps × (UAVs + targets) + UAVs · seen)
+  double world_substeps = 1e7;        // steps × Box2D sub-steps a step (world/substeps.h)
   double record_bytes = 4e9;          // estimated size of record.jsonl
   double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
-  double tracking_step_units = 5e8;   // one step, every UAV: about a second of JPDA at worst
+  double tracking_step_units = 5e8;   // one step, every UAV, worst case (bench/RESULTS.md, issue 47)
   double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
   double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
@@ -45,6 +46,7 @@ double clutterTrackScans(const ScenarioSpec& spec);
 struct WorkEstimate {
   double visible_trees = 0.0;    // visibleTreesBound
   double visible_targets = 0.0;  // visibleTargetsBound
+  double substeps = 1.0;         // the most Box2D sub-steps of one step (world/substeps.h)
   double world_units = 0.0;
   double record_bytes = 0.0;
   double tracking_units = 0.0;

@@ -11,6 +11,7 @@
 #include "core/angles.h"
 #include "core/progress.h"
 #include "world/near_solids.h"
+#include "world/substeps.h"
 #include "world/unicycle.h"
 
 namespace canopy::world {
@@ -18,14 +19,10 @@ namespace {
 
 constexpr float kTargetBodyRadius = 0.05f;  // m, only gives the body a broad-phase box
 constexpr float kNoBodyRadius = 0.25f;      // m, likewise for an agent of radius 0
-// Keep each Box2D sub-step well inside its per-step motion limits (b2_maxTranslation = 2 m,
-// b2_maxRotation = π/2), beyond which Box2D silently scales velocities down.
-constexpr double kMaxSubstepTranslation = 0.5 * b2_maxTranslation;  // m
-constexpr double kMaxSubstepRotation = 0.5 * b2_maxRotation;        // rad
-// A colliding body moves at most this fraction of its radius per sub-step: it meets whatever it
-// runs into before passing through it, and sinks into it by less than that before the solver
-// pushes it out.
-constexpr double kMaxSubstepRadii = 0.5;
+// The sub-step limits (world/substeps.h) are half of Box2D's per-step motion limits.
+static_assert(kMaxSubstepTranslation == 0.5 * b2_maxTranslation);
+static_assert(kMaxSubstepRotation - 0.5 * b2_maxRotation < 1e-6 &&
+              0.5 * b2_maxRotation - kMaxSubstepRotation < 1e-6);
 // Box2D's solver iterations per sub-step (its recommended 8 and 3). They act on contacts only, so
 // a body that touches nothing moves as with any other count.
 constexpr int kVelocityIterations = 8;
@@ -218,7 +215,8 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(new Box2d) {
   bool any_ground = false;
   for (int i = 0; i < static_cast<int>(def_.uavs.size()); ++i) {
     const UavDef& agent = def_.uavs[i];
-    if (agent.radius != 0.0 && !(agent.radius >= kMinAgentRadius && agent.radius <= kMaxAgentRadius))
+    if (agent.radius != 0.0 &&
+        !(agent.radius >= kMinAgentRadius && agent.radius <= kMaxAgentRadius))
       throw std::invalid_argument("agent " + std::to_string(i) + ": radius " +
                                   std::to_string(agent.radius) + " m, expected 0 or " +
                                   std::to_string(kMinAgentRadius) + " to " +

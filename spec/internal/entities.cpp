@@ -203,7 +203,8 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
       // world/defs.h: Box2D's skin; a smaller body's mass overflows and its position turns NaN.
       reader.required("radius").fail(
           "expected 0 (no body) or at least 0.01 m (Box2D's b2_polygonRadius; a smaller body "
-          "cannot be simulated), got " + describe(reader.required("radius").json()));
+          "cannot be simulated), got " +
+          describe(reader.required("radius").json()));
     }
 
     uav.sensor.ground_level = ground;

@@ -23,15 +23,15 @@ void checkExistenceThresholds(ObjectReader& reader, const agents::TrackingConfig
   };
   const auto check = [&](const char* other, double value) {
     if (t.delete_existence <= value) return;
-    const char* blamed = reader.optional("delete_existence") || !reader.optional(other)
-                             ? "delete_existence"
-                             : other;
+    const char* blamed =
+        reader.optional("delete_existence") || !reader.optional(other) ? "delete_existence" : other;
     reader.required(blamed).fail(
         std::string("expected delete_existence (") + text(t.delete_existence) + ") at most " +
         other + " (" + text(value) + "): a track is dropped once its existence falls below " +
         "delete_existence, so " +
-        (std::string(other) == "birth_existence" ? "every newborn track would be dropped at birth"
-                                                 : "every track would be deleted as it is confirmed"));
+        (std::string(other) == "birth_existence"
+             ? "every newborn track would be dropped at birth"
+             : "every track would be deleted as it is confirmed"));
   };
   check("birth_existence", t.birth_existence);
   check("confirm_existence", t.confirm_existence);

@@ -29,9 +29,9 @@ struct Outcome {
 };
 
 // `canopy ARGUMENTS` in bash under `limits` (ulimit and timeout), output captured.
-Outcome canopy(const std::string& arguments, const std::string& limits = "exec timeout -s KILL 120 ") {
-  const std::string command =
-      "bash -c '" + limits + CANOPY_BINARY + " " + arguments + "' 2>&1";
+Outcome canopy(const std::string& arguments,
+               const std::string& limits = "exec timeout -s KILL 120 ") {
+  const std::string command = "bash -c '" + limits + CANOPY_BINARY + " " + arguments + "' 2>&1";
   Outcome outcome;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return outcome;
@@ -42,11 +42,27 @@ Outcome canopy(const std::string& arguments, const std::string& limits = "exec t
   return outcome;
 }
 
+// Every folder scratch() made, removed when the tests end (the run and the sweep are shared).
+std::vector<fs::path>& made() {
+  static std::vector<fs::path> folders;
+  return folders;
+}
+class RemoveScratch : public testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ignored;
+    for (const fs::path& dir : made()) fs::remove_all(dir, ignored);
+  }
+};
+const testing::Environment* const kRemoveScratch =
+    testing::AddGlobalTestEnvironment(new RemoveScratch);
+
 fs::path scratch(const std::string& name) {
   const fs::path dir =
       fs::temp_directory_path() / ("canopy_hostile3_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  made().push_back(dir);
   return dir;
 }
 
@@ -117,13 +133,9 @@ const std::vector<Writer>& writers() {
          return "view " + finishedRun().string() + " --out " + (dir / "page.html").string();
        }},
       {"run_record", "record.jsonl",
-       [](const fs::path& dir) {
-         return "run demo --set clock.duration=1 --out " + dir.string();
-       }},
+       [](const fs::path& dir) { return "run demo --set clock.duration=1 --out " + dir.string(); }},
       {"run_summary", "summary.json",
-       [](const fs::path& dir) {
-         return "run demo --set clock.duration=1 --out " + dir.string();
-       }},
+       [](const fs::path& dir) { return "run demo --set clock.duration=1 --out " + dir.string(); }},
       {"run_html", "replay.html",
        [](const fs::path& dir) {
          return "run demo --set clock.duration=1 --html --out " + dir.string();
@@ -161,7 +173,8 @@ TEST(HostileOutputs, ANodeWhereAFileGoesIsRefusedBeforeAnyWorkAndLeftAsItWas) {
       EXPECT_EQ(outcome.code, 2) << label << "\n" << outcome.output;
       EXPECT_NE(outcome.output.find(target.string() + "': exists and is " + node.kind),
                 std::string::npos)
-          << label << "\n" << outcome.output;
+          << label << "\n"
+          << outcome.output;
       EXPECT_EQ(identity(target), before) << label << ": the node was replaced";
       EXPECT_FALSE(temporariesBeside(target)) << label;
       // Before any work: nothing of a run or a sweep was written beside it.
@@ -176,11 +189,11 @@ TEST(HostileOutputs, ANodeWhereAFileGoesIsRefusedBeforeAnyWorkAndLeftAsItWas) {
 
 TEST(HostileOutputs, ViewOutDashWritesThePageToStandardOutput) {
   const fs::path dir = scratch("dash");
-  const Outcome file = canopy("view " + finishedRun().string() + " --out " +
-                              (dir / "page.html").string());
+  const Outcome file =
+      canopy("view " + finishedRun().string() + " --out " + (dir / "page.html").string());
   ASSERT_EQ(file.code, 0) << file.output;
-  const Outcome dash = canopy("view " + finishedRun().string() + " --out - > " +
-                              (dir / "stdout.html").string());
+  const Outcome dash =
+      canopy("view " + finishedRun().string() + " --out - > " + (dir / "stdout.html").string());
   ASSERT_EQ(dash.code, 0) << dash.output;
   const auto written = canopy::readTextFile(dir / "page.html");
   const auto printed = canopy::readTextFile(dir / "stdout.html");
@@ -195,8 +208,8 @@ TEST(HostileOutputs, ViewOutDashWritesThePageToStandardOutput) {
 fs::path editedRun(const std::string& name, int line, const std::string& edit) {
   const fs::path dir = scratch(name) / "run";
   fs::copy(finishedRun(), dir, fs::copy_options::recursive);
-  const std::string command = "sed -i '" + std::to_string(line) + edit + "' " +
-                              (dir / "record.jsonl").string();
+  const std::string command =
+      "sed -i '" + std::to_string(line) + edit + "' " + (dir / "record.jsonl").string();
   EXPECT_EQ(std::system(command.c_str()), 0);
   return dir;
 }
@@ -204,11 +217,13 @@ fs::path editedRun(const std::string& name, int line, const std::string& edit) {
 TEST(HostileOutputs, IntegersPast32BitsAreRefusedNamingTheLineNotWrapped) {
   // 2³² + 1 wraps to 1, the index the line must hold; 2³² wraps to target 0, a real target.
   const fs::path step = editedRun("k", 2, R"(s/"k":1,/"k":4294967297,/)");
-  for (const std::string command : {"view " + step.string() + " --out -", "coverage " + step.string()}) {
+  for (const std::string& command :
+       {"view " + step.string() + " --out -", "coverage " + step.string()}) {
     const Outcome outcome = canopy(command + " >/dev/null");
     EXPECT_EQ(outcome.code, 2) << command << "\n" << outcome.output;
     EXPECT_NE(outcome.output.find("record.jsonl: line 2: k: expected"), std::string::npos)
-        << command << "\n" << outcome.output;
+        << command << "\n"
+        << outcome.output;
   }
   const fs::path target =
       editedRun("in_footprint", 3, R"(s/"in_footprint":\[[^]]*\]/"in_footprint":[4294967296]/)");
@@ -220,6 +235,24 @@ TEST(HostileOutputs, IntegersPast32BitsAreRefusedNamingTheLineNotWrapped) {
       << outcome.output;
   fs::remove_all(step.parent_path());
   fs::remove_all(target.parent_path());
+}
+
+TEST(HostileOutputs, ARecordLineLongerThan256MiBIsRefusedNamingTheLine) {
+  // 257 MiB of NUL bytes, no newline: one line (sparse: nothing is written to the disk).
+  const fs::path dir = scratch("long") / "run";
+  fs::copy(finishedRun(), dir, fs::copy_options::recursive);
+  fs::resize_file(dir / "record.jsonl", 0);
+  fs::resize_file(dir / "record.jsonl", std::uintmax_t{257} << 20);
+  for (const std::string& command :
+       {"view " + dir.string() + " --out -", "coverage " + dir.string()}) {
+    const Outcome outcome = canopy(command + " >/dev/null");
+    EXPECT_EQ(outcome.code, 2) << command << "\n" << outcome.output;
+    EXPECT_NE(outcome.output.find("record.jsonl: line 1: expected a line of at most 256 MiB"),
+              std::string::npos)
+        << command << "\n"
+        << outcome.output;
+  }
+  fs::remove_all(dir.parent_path());
 }
 
 #ifndef __SANITIZE_ADDRESS__  // ASan reserves terabytes of address space: no ulimit -v

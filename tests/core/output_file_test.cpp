@@ -3,9 +3,14 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -81,6 +86,67 @@ TEST_F(OutputFile, ADirectoryInTheWayIsAWriteErrorNamingTheFile) {
         << e.what();
   }
   EXPECT_EQ(names(), std::set<std::string>{"a.txt"});  // no temporary left
+}
+
+// Issue 47: a node that is not a regular file is never replaced, whether it is there when the
+// file is begun (a FIFO) or put there while it is written (a device node, made where mknod is
+// permitted, else a FIFO): OutputRefused, the node untouched, no temporary left.
+TEST_F(OutputFile, ANodeThatIsNotARegularFileIsRefusedAndLeftAsItWas) {
+  const fs::path fifo = dir_ / "fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(writeFileAtomically(fifo, "text"), OutputRefused);
+  EXPECT_THROW(removeOutputFile(fifo), OutputRefused);
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+
+  const fs::path late = dir_ / "late";
+  {
+    AtomicFile file(late);
+    file.write("text");
+    const bool device = ::mknod(late.c_str(), S_IFCHR | 0600, makedev(1, 3)) == 0;
+    if (!device) {
+      ASSERT_EQ(::mkfifo(late.c_str(), 0600), 0);
+    }
+    try {
+      file.commit();
+      FAIL() << "no OutputRefused";
+    } catch (const OutputRefused& e) {
+      EXPECT_NE(std::string(e.what()).find(device ? "a character device" : "a FIFO"),
+                std::string::npos)
+          << e.what();
+    }
+    struct stat info {};
+    ASSERT_EQ(::lstat(late.c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & S_IFMT, static_cast<unsigned>(device ? S_IFCHR : S_IFIFO));
+    if (device) {
+      EXPECT_EQ(info.st_rdev, makedev(1, 3));
+    }
+  }
+  EXPECT_EQ(names(), (std::set<std::string>{"fifo", "late"}));  // no temporary left
+  checkOutputFile(dir_ / "absent");                             // absent: nothing to refuse
+  std::ofstream(dir_ / "regular") << "x";
+  checkOutputFile(dir_ / "regular");
+  EXPECT_THROW(checkOutputEntries(dir_), OutputRefused);
+
+  // A socket (bound in a fresh folder: checkOutputEntries sees only it besides files).
+  const fs::path sockets = dir_ / "sockets";
+  fs::create_directories(sockets);
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string socket_path = (sockets / "s").string();
+  ASSERT_LT(socket_path.size(), sizeof address.sun_path);
+  std::copy(socket_path.begin(), socket_path.end(), address.sun_path);
+  ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  try {
+    writeFileAtomically(sockets / "s", "text");
+    ADD_FAILURE() << "no OutputRefused";
+  } catch (const OutputRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("exists and is a socket"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(checkOutputEntries(sockets), OutputRefused);
+  ::close(fd);
+  EXPECT_TRUE(fs::is_socket(fs::symlink_status(sockets / "s")));
 }
 
 // Files limited to 1000 bytes (RLIMIT_FSIZE, SIGXFSZ ignored): the write of 5000 fails with EFBIG,

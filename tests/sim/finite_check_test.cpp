@@ -2,6 +2,8 @@
 // NonFiniteState naming the step, the body and the quantity, and `canopy run` (runScenario)
 // leaves none of its files. The NaN is put where the loader would never let it: into the
 // loaded spec's scripted paths.
+#include "sim/finite_check.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,6 @@
 #include <limits>
 #include <string>
 
-#include "sim/finite_check.h"
 #include "sim/run.h"
 #include "sim/simulation.h"
 #include "spec/loader.h"
@@ -35,8 +36,7 @@ spec::ScenarioSpec scene() {
 // t = 0.5 s on is NaN (0 × NaN is NaN), so the first step k with k·dt ≥ 0.5 s, k = 3 at
 // dt = 0.2 s, is the first that holds one.
 world::Path nanAfterHalfASecond() {
-  return world::Path::throughPoints(
-      {{0.0, Vec2(0, 0)}, {0.5, Vec2(0, 0)}, {10.0, Vec2(kNaN, 0)}});
+  return world::Path::throughPoints({{0.0, Vec2(0, 0)}, {0.5, Vec2(0, 0)}, {10.0, Vec2(kNaN, 0)}});
 }
 
 std::string stopMessage(Simulation& sim) {

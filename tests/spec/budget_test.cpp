@@ -28,6 +28,7 @@ TEST(WorkBudget, EveryLibraryScenarioIsFarBelowEveryLimit) {
     EXPECT_LT(100 * work.record_bytes, limits.record_bytes) << name;
     EXPECT_LT(100 * work.tracking_units, limits.tracking_units) << name;
     EXPECT_LT(100 * work.tracking_step_units, limits.tracking_step_units) << name;
+    EXPECT_LT(100 * (spec.steps() + 1.0) * work.substeps, limits.world_substeps) << name;
     EXPECT_LT(100 * work.fusion_units, limits.fusion_units) << name;
     EXPECT_LT(100 * work.planning_units, limits.planning_units) << name;
     EXPECT_LT(100.0 * static_cast<double>(spec.trees.size()), limits.trees) << name;
@@ -43,10 +44,12 @@ TEST(WorkBudget, EveryLibraryScenarioIsFarBelowEveryLimit) {
 TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
   const auto scenario = [](const std::string& tracking, double clutter) {
     return R"({"aoi": [-60, -40, 60, 40], "clock": {"dt": 0.2, "duration": 2.0},
-      "sensing": {"clutter_rate": )" + std::to_string(clutter) + R"(},
+      "sensing": {"clutter_rate": )" +
+           std::to_string(clutter) + R"(},
       "uavs": [{"start": [0, 0]}, {"start": [10, 0]}],
       "targets": [{"path": {"start": [5, 5], "velocity": [1, 0]}}],
-      "tracking": {"preseed": false, )" + tracking + "}}";
+      "tracking": {"preseed": false, )" +
+           tracking + "}}";
   };
   LoadOptions admitted;
   admitted.budget_scale = 10;  // to build it; checkWork below holds it to the defaults
@@ -63,7 +66,8 @@ TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), "tracking.max_hypotheses");
     EXPECT_NE(e.message().find("expected at most 5.0e+08 tracking units in one step"),
-              std::string::npos) << e.message();
+              std::string::npos)
+        << e.message();
     EXPECT_NE(e.message().find("about 1.2e+09"), std::string::npos) << e.message();
   }
   LoadOptions thrice;
@@ -79,6 +83,41 @@ TEST(WorkBudget, OneStepOfSecondsIsRefusedNamingItsFieldAndBudgetAdmitsIt) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), "sensing.clutter_rate");
   }
+}
+
+// Issue 47's residue: v_max 10⁹ m/s made World::step cut each 0.2 s step into 2·10⁸ Box2D
+// sub-steps (at most 1 m each), a run that never ended. 10⁷ m/s: 2·10⁶ sub-steps a step, 11 steps
+// ask 2.2·10⁷ against 10⁷; 10⁹ m/s already moves 3 bodies 2·10⁸ times a step, 6.6·10⁹ world units.
+TEST(WorkBudget, SubStepsOfAnAbsurdSpeedAreRefusedNamingTheSpeed) {
+  const auto scenario = [](const std::string& v_max) {
+    return R"({"aoi": [0, 0, 100, 100], "clock": {"dt": 0.2, "duration": 2.0},
+      "uavs": [{"start": [10, 10]}, {"start": [20, 10], "v_max": )" +
+           v_max + R"(}],
+      "targets": [{"path": {"start": [30, 30], "velocity": [1, 0]}}]})";
+  };
+  for (const auto& [v_max, expected] :
+       {std::pair<std::string, std::string>{"1e7",
+                                            "expected at most 1.0e+07 Box2D sub-steps per "
+                                            "trial"},
+        {"1e9", "expected at most 2.0e+09 world units per trial"}}) {
+    try {
+      loadScenarioText(scenario(v_max), "fast.json");
+      ADD_FAILURE() << v_max << ": expected a ScenarioError";
+    } catch (const ScenarioError& e) {
+      EXPECT_EQ(e.field(), "uavs[1].v_max") << v_max;
+      EXPECT_NE(e.message().find(expected), std::string::npos) << e.message();
+      EXPECT_NE(e.message().find(v_max == "1e7" ? "about 2.2e+07" : "about 6.6e+09"),
+                std::string::npos)
+          << e.message();
+    }
+  }
+  // Two bodies of 0.5 and 0.25 m at 5 m/s: they close by 2 · 5 · 0.2 = 2 m a step, at most half
+  // the smaller radius (0.125 m) a sub-step: 16 sub-steps, where 1 m a sub-step alone needs 1.
+  const ScenarioSpec bodies = loadScenarioText(
+      R"({"aoi": [0, 0, 100, 100], "clock": {"dt": 0.2, "duration": 2.0},
+          "uavs": [{"start": [10, 10], "radius": 0.5}, {"start": [20, 10], "radius": 0.25}]})",
+      "bodies.json");
+  EXPECT_DOUBLE_EQ(estimateWork(bodies).substeps, 16.0);
 }
 
 // The built-in city swarm (64 UAVs, 256 people, 10⁵ trees; issue 33) runs without --budget.
