@@ -9,6 +9,9 @@
 namespace canopy::metrics {
 namespace {
 
+// Up to this many pairs the whole problem is one Hungarian solve (cheaper than the grid).
+constexpr long kWholeUpTo = 256;
+
 // Union-find with path halving over the m + n points (small ones first).
 int findRoot(std::vector<int>& parent, int a) {
   while (parent[a] != a) a = parent[a] = parent[parent[a]];
@@ -30,9 +33,29 @@ void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> 
   pairs_.clear();
   if (m_ == 0) return;
 
+  const double cp = std::pow(c_, p_);
+  if (static_cast<long>(m_) * n_ <= kWholeUpTo) {  // small: one Hungarian problem, no grid
+    cost_.resize(static_cast<std::size_t>(m_) * n_);
+    for (int i = 0; i < m_; ++i) {
+      for (int j = 0; j < n_; ++j)
+        cost_[i * n_ + j] = std::pow(std::min(c_, (small[i] - large[j]).norm()), p_);  // d_c^p
+    }
+    const std::span<const int> assigned = hungarian_.solve(cost_, m_, n_);
+    for (int i = 0; i < m_; ++i) {
+      const double cost = cost_[i * n_ + assigned[i]];
+      if (cost < cp)
+        pairs_.push_back(
+            {truth_is_small_ ? i : assigned[i], truth_is_small_ ? assigned[i] : i, cost});
+    }
+    if (!truth_is_small_) {
+      std::sort(pairs_.begin(), pairs_.end(),
+                [](const Pair& a, const Pair& b) { return a.truth < b.truth; });
+    }
+    return;
+  }
+
   // Edges: the pairs closer than c, found through a grid of cells of side c over the large set
   // (a pair closer than c lies in neighbouring cells). Non-finite points have no edge.
-  const double cp = std::pow(c_, p_);
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   auto cellOf = [&](const Vec2& p) {
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(p.x() / c_)),

@@ -10,30 +10,73 @@ namespace canopy::agents::planning {
 
 double NominalCost::addTerminalPenalty(int lane, double J) {
   if (!terminal_ || charged_.empty()) return J;
+  // Many tracks or UAVs: the same bits by a merge and a nearest-first search.
+  if (penalty_merge_ || penalty_nearest_) return addTerminalPenaltyAtScale(lane, J);
   const int T = horizon_ * substeps_;
   auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
   // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
   // order J sums them), by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
   // insertion sort).
-  auto insertSorted = [&](const std::vector<int>& tracks, int* out) {
-    int n = 0;
-    for (const int j : tracks) {
-      if (in_view_final_[kLanes * j + lane] != 0) continue;
-      int slot = n++;
-      for (; slot > 0 && traceFinal(out[slot - 1]) < traceFinal(j); --slot)
-        out[slot] = out[slot - 1];
-      out[slot] = j;
+  int count = 0;
+  for (const int j : penalty_tracks_) {
+    if (in_view_final_[kLanes * j + lane] != 0) continue;
+    int slot = count++;
+    for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
+      uncovered_[slot] = uncovered_[slot - 1];
     }
-    return n;
-  };
+    uncovered_[slot] = j;
+  }
+  // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
+  const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
+  const std::size_t n_charged = penalty_uavs_.size();
+  for (int c = 0; c < count; ++c) {
+    const int j = uncovered_[c];
+    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
+    // |p_{i,H} − z_{j,H}| of the fixed UAVs, the same for every candidate: from prepare().
+    const double* fixed_distance = &terminal_distance_[j * n_charged];
+    std::size_t best = 0;
+    double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
+    // The UAVs the penalty charges (team scope: every UAV, by index, the paper's loop).
+    for (std::size_t k = 0; k < n_charged; ++k) {
+      // |p_{i,H} − z_{j,H}|
+      const double distance =
+          penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
+      if (charged_[k] + distance < best_total) {
+        best = k;
+        best_total = charged_[k] + distance;
+        best_distance = distance;
+      }
+    }
+    J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
+    charged_[best] += best_distance;            // D_i += |p_{i,H} − z_{j,H}|
+    charged_uavs_[c] = static_cast<int>(best);
+  }
+  // Back to zero: only the entries this call charged (a fill is a memset call per candidate).
+  for (int c = 0; c < count; ++c) charged_[charged_uavs_[c]] = 0.0;
+  return J;
+}
+
+double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
+  const int T = horizon_ * substeps_;
+  auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
+  // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
+  // order J sums them), by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
+  // insertion sort).
   int count = 0;
   bool merged = penalty_merge_;
   if (merged) {
-    // The same order by a merge: the tracks a candidate changes, sorted here (they are few), and
-    // the rest, sorted once by prepare(); ties go to the lower index, as the insertion's do.
+    // The same order by a merge: the tracks a candidate changes, sorted here by insertion (they
+    // are few), and the rest, sorted once by prepare(); ties go to the lower index, as below.
     int* varying = charged_uavs_.data();  // scratch until the charging below fills it
-    const int n_varying = insertSorted(penalty_varying_, varying);
-    for (int v = 0; v < n_varying && merged; ++v) merged = std::isfinite(traceFinal(varying[v]));
+    int n_varying = 0;
+    for (const int j : penalty_varying_) {
+      if (in_view_final_[kLanes * j + lane] != 0) continue;
+      merged = merged && std::isfinite(traceFinal(j));
+      int slot = n_varying++;
+      for (; slot > 0 && traceFinal(varying[slot - 1]) < traceFinal(j); --slot)
+        varying[slot] = varying[slot - 1];
+      varying[slot] = j;
+    }
     if (merged) {
       std::size_t f = 0;
       int v = 0;
@@ -47,7 +90,16 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
       }
     }
   }
-  if (!merged) count = insertSorted(penalty_tracks_, uncovered_.data());
+  if (!merged) {
+    for (const int j : penalty_tracks_) {
+      if (in_view_final_[kLanes * j + lane] != 0) continue;
+      int slot = count++;
+      for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
+        uncovered_[slot] = uncovered_[slot - 1];
+      }
+      uncovered_[slot] = j;
+    }
+  }
   // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
   const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   const std::size_t n_charged = penalty_uavs_.size();
@@ -78,9 +130,15 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
         consider(*k, fixed_distance[*k]);
       }
     } else {
-      for (std::size_t k = 0; k < n_charged; ++k) {
-        consider(k, penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm()
-                                     : fixed_distance[k]);
+      for (std::size_t k = 0; k < n_charged; ++k) {  // by entry: the first least one wins
+        // |p_{i,H} − z_{j,H}|
+        const double distance =
+            penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
+        if (charged_[k] + distance < best_total) {
+          best = k;
+          best_total = charged_[k] + distance;
+          best_distance = distance;
+        }
       }
     }
     J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
