@@ -90,6 +90,12 @@ const CanopyReplay = {};
     for (let i = 0; i + 2 < raw.trees.length; i += 3) {
       run.trees.push({ x: raw.trees[i], y: raw.trees[i + 1], r: raw.trees[i + 2] });
     }
+    run.treeGrid = new CanopyReplay.TreeGrid(run.trees);  // backdrop.js
+    run.polygonBoxes = run.polygons.map(function (v) {
+      let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+      v.forEach(function (q) { x0 = Math.min(x0, q.x); y0 = Math.min(y0, q.y); x1 = Math.max(x1, q.x); y1 = Math.max(y1, q.y); });
+      return [x0, y0, x1, y1];
+    });
     run.epochs.forEach(function (ep, n) { run.epochIndex.set(ep.epoch, n); });
     // epochAt[k]: the index of the last planning epoch at or before step k, -1 before the first.
     let e = -1;

@@ -30,6 +30,7 @@
     this.view = new CanopyReplay.View(document.getElementById("map"));
     this.ctx = this.view.canvas.getContext("2d");
     this.timeline = new CanopyReplay.Timeline(document.getElementById("timeline"), run);
+    this.backdrop = new CanopyReplay.Backdrop(run);
     this.box = runBox(run);
     const layers = {};
     CanopyReplay.LAYERS.forEach(function (l) { layers[l.id] = true; });
@@ -48,7 +49,7 @@
   App.prototype.draw = function () {
     const t0 = performance.now(), s = this.state;
     this.view.resize();
-    CanopyReplay.drawMap(this.ctx, this.view, this.run, s);
+    CanopyReplay.drawMap(this.ctx, this.view, this.run, s, this.backdrop);
     document.getElementById("slider").value = String(s.k);
     document.getElementById("clock").textContent = "k = " + s.k + " / " + (this.run.steps - 1) +
       "   t = " + this.run.time(s.k).toFixed(2) + " s";

@@ -223,13 +223,18 @@
       this.cache = null;
     }
     const ctx = canvas.getContext("2d");
-    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    // The history is drawn once into an offscreen canvas and copied under the cursor each step.
     if (!this.cache) {
-      this.drawHistory(ctx, width);
-      this.cache = ctx.getImageData(0, 0, canvas.width, canvas.height);
-    } else {
-      ctx.putImageData(this.cache, 0, 0);
+      this.cache = document.createElement("canvas");
+      this.cache.width = canvas.width;
+      this.cache.height = canvas.height;
+      const c = this.cache.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      this.drawHistory(c, width);
     }
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(this.cache, 0, 0);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
     const x = Math.round(this.x(k, width)) + 0.5;
     ctx.strokeStyle = "rgb(20,20,20)";
     ctx.lineWidth = 1;

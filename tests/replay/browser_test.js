@@ -8,6 +8,7 @@ const path = require("path");
 const { spawnSync } = require("child_process");
 const { Browser, Page } = require("./cdp.js");
 const expect = require("./record.js");
+const { stepTimes } = require("./step_time.js");
 
 const [canopy, source, work] = process.argv.slice(2);
 const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
@@ -345,6 +346,55 @@ async function main() {
       }
       assert(lost > 0 && ok > 0, `${lost} lost and ${ok} received intentions: the run tests nothing`);
       assert(tab.errors.length === 0, tab.errors.join("\n"));
+    });
+
+    await check("10^5 trees: drawn once per view, culled, a density raster from far, a step within 4x a small run's", async () => {
+      // city_swarm (64 UAVs, 256 people, ~10^5 crowns) against mixed_team (4 agents, 20 people
+      // in a park), 3 s of each, in this browser; a step is the key press to the pixels ready.
+      const city = path.join(work, "city"), small = path.join(work, "small");
+      canopyRun(["run", "city_swarm", "--set", "clock.duration=3", "--out", city, "--html"]);
+      canopyRun(["run", "mixed_team", "--set", "clock.duration=3", "--out", small, "--html"]);
+      const trees = expect.readRun(city).config.occluders.length;  // generated: not listed
+      const times = { city: [], small: [] };
+      let cityTab = null;
+      for (let round = 0; round < 3; round++) {
+        for (const [name, dir] of [["small", small], ["city", city]]) {
+          const tab = await Page.open(browser, 1280, 900);
+          await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+          const s = await stepTimes(tab, 12);
+          assert(s.k > s.k0, name + ": → did not step");
+          // The steps drew the static layers once (when the view was first set), never again.
+          assert(s.backdrop.renders === 1, name + ": the static layers were drawn " + s.backdrop.renders + " times");
+          times[name].push(s.median);
+          assert(tab.errors.length === 0, tab.errors.join("\n"));
+          if (name === "city" && !cityTab) cityTab = tab; else await tab.send("Page.close").catch(() => {});
+        }
+      }
+      const city3 = times.city.slice().sort((a, b) => a - b)[1], small3 = times.small.slice().sort((a, b) => a - b)[1];
+      console.log(`    step: city_swarm ${times.city.map((t) => t.toFixed(1))} ms, mixed_team ${times.small.map((t) => t.toFixed(1))} ms`);
+      assert(city3 <= 4 * small3 + 5 && city3 < 100, `a step takes ${city3.toFixed(1)} ms on city_swarm, ${small3.toFixed(1)} ms on mixed_team`);
+      const n = await cityTab.evaluate("CanopyReplay.app.run.trees.length");
+      assert(n > 90000, "city_swarm has " + n + " crowns on the page (" + trees + " occluder entries)");
+      // From far (the fit view) crowns of under 2 px go to the raster, not drawn as discs.
+      await cityTab.evaluate("CanopyReplay.app.fit()");
+      const far = await cityTab.evaluate("Object.assign({ scale: CanopyReplay.app.view.scale }, CanopyReplay.app.backdrop.stats)");
+      assert(far.raster > 0.5 * n && far.discs + far.raster <= n, "from far: " + JSON.stringify(far));
+      // Close up, only the crowns in view are drawn, each as a disc; a pan draws them again once.
+      const near = await cityTab.evaluate(`(() => { const app = CanopyReplay.app, v = app.view;
+        v.zoom(40, v.width / 2, v.height / 2); app.draw();
+        const a = v.toWorld(0, v.height), b = v.toWorld(v.width, 0);
+        let inView = 0;
+        app.run.trees.forEach((t) => { if (t.x + t.r >= a.x && t.x - t.r <= b.x && t.y + t.r >= a.y && t.y - t.r <= b.y) inView++; });
+        const zoomed = Object.assign({}, app.backdrop.stats);
+        app.setStep(app.state.k + 1);
+        const stepped = app.backdrop.stats.renders;
+        v.pan(30, 0); app.draw();
+        return Object.assign(zoomed, { inView: inView, before: zoomed.renders, stepped: stepped,
+          after: app.backdrop.stats.renders }); })()`);
+      assert(near.raster === 0 && Math.abs(near.discs - near.inView) <= 2 && near.inView > 0 && near.inView < 0.05 * n,
+        "close up: " + JSON.stringify(near));
+      assert(near.stepped === near.before && near.after === near.before + 1, "renders: " + JSON.stringify(near));
+      assert(cityTab.errors.length === 0, cityTab.errors.join("\n"));
     });
 
     await check("names holding </script> and <!-- are shown as text", async () => {
