@@ -10,7 +10,8 @@
 namespace canopy::replay {
 
 /// The page for `run`: web/replay.html with the style, the scripts and replayDataJson(run)
-/// inlined. The same run gives the same bytes.
+/// inlined (the data gzipped, in base64; the page inflates it with the browser's own
+/// DecompressionStream). The same run gives the same bytes.
 std::string replayPage(const RunFolder& run);
 
 /// Reads the run in `run_dir` (readRunFolder: ScenarioError on bad input) and writes its page to

@@ -373,6 +373,14 @@ async function main() {
       const city3 = times.city.slice().sort((a, b) => a - b)[1], small3 = times.small.slice().sort((a, b) => a - b)[1];
       console.log(`    step: city_swarm ${times.city.map((t) => t.toFixed(1))} ms, mixed_team ${times.small.map((t) => t.toFixed(1))} ms`);
       assert(city3 <= 4 * small3 + 5 && city3 < 100, `a step takes ${city3.toFixed(1)} ms on city_swarm, ${small3.toFixed(1)} ms on mixed_team`);
+      // The page is compact: its data gzipped in base64 (half the JSON or less), read with
+      // no request but the page itself.
+      const page = path.resolve(city, "replay.html"), bytes = fs.statSync(page).size;
+      const chars = await cityTab.evaluate("CanopyReplay.dataChars");
+      console.log(`    city_swarm, 3 s: a page of ${bytes} bytes holding ${chars} characters of JSON`);
+      assert(chars > 0 && bytes <= chars / 2 && bytes < 2e6, `a page of ${bytes} bytes for ${chars} characters of data`);
+      const outside = cityTab.requests.filter((u) => u !== "file://" + page && !u.startsWith("data:"));
+      assert(outside.length === 0 && cityTab.failed.length === 0, "requests beyond the page: " + outside.join(", "));
       const n = await cityTab.evaluate("CanopyReplay.app.run.trees.length");
       assert(n > 90000, "city_swarm has " + n + " crowns on the page (" + trees + " occluder entries)");
       // From far (the fit view) crowns of under 2 px go to the raster, not drawn as discs.
