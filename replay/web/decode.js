@@ -71,8 +71,27 @@ const CanopyReplay = {};
     });
   }
 
+  // Agents' colours beyond the frames' eight (render/colour.cpp repeats them every 8): 16 hues
+  // 22.5 degrees apart at four tones, each tone's hues turned by a further 11.25 degrees, so 64
+  // agents get 64 colours (the closest two 24 apart in RGB) and the first 16 differ in hue.
+  const TONES = [[0.85, 0.45], [0.75, 0.28], [0.9, 0.68], [0.35, 0.5]];  // saturation, lightness
+  function spreadColour(i) {
+    const tone = TONES[Math.floor(i / 16) % 4], h = ((i % 16) * 22.5 + Math.floor(i / 16) * 11.25) % 360;
+    const a = tone[0] * Math.min(tone[1], 1 - tone[1]);
+    const channel = function (n) {
+      const k = (n + h / 30) % 12;
+      return Math.round(255 * (tone[1] - a * Math.max(-1, Math.min(k - 3, 9 - k, 1))));
+    };
+    return "#" + [channel(0), channel(8), channel(4)].map(function (v) {
+      return (v < 16 ? "0" : "") + v.toString(16);
+    }).join("");
+  }
+  CanopyReplay.spreadColour = spreadColour;
+
   CanopyReplay.decode = function (raw) {
     const A = raw.agents.length, T = raw.targets.length, S = raw.steps;
+    // Up to 8 agents keep the frames' colours; more get one colour each.
+    if (A > 8) raw.agents.forEach(function (agent, i) { agent.colour = spreadColour(i); });
     const run = {
       scenario: raw.scenario, seed: raw.seed, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
       plans: raw.plans, algorithm: raw.algorithm, aoi: raw.aoi, occlusionModel: raw.occlusion_model,

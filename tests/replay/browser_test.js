@@ -405,6 +405,57 @@ async function main() {
       assert(cityTab.errors.length === 0, cityTab.errors.join("\n"));
     });
 
+    await check("64 agents: a colour each, a person's timeline lists only the agents that held it, an axis in seconds", async () => {
+      const dir = path.join(work, "city"), cityRun = expect.readRun(dir);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(dir, "replay.html"));
+      const colours = await tab.evaluate("CanopyReplay.app.run.agents.map((a) => a.colour)");
+      assert(colours.length === 64, colours.length + " agents");
+      const rgb = colours.map((c) => [1, 3, 5].map((o) => parseInt(c.slice(o, o + 2), 16)));
+      let closest = Infinity;
+      rgb.forEach((a, i) => rgb.forEach((b, j) => { if (j > i) closest = Math.min(closest, Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2])); }));
+      assert(closest >= 20, "two agents' colours are " + closest.toFixed(1) + " apart in RGB");
+      // Each agent's dart at its recorded position is drawn in its own colour.
+      const k = 5;
+      await tab.evaluate(`CanopyReplay.app.setStep(${k})`);
+      const img = await mapPixels(tab);
+      let checked = 0;
+      for (let i = 0; i < 64; i++) {
+        const p = cityRun.record[k].uavs[i].p, px = await tab.evaluate(`CanopyReplay.app.view.toPixel(${p[0]}, ${p[1]})`);
+        const o = 4 * (px.y * img.w + px.x), got = [img.data[o], img.data[o + 1], img.data[o + 2]];
+        if (got.every((v, c) => Math.abs(v - rgb[i][c]) <= 2)) checked++;
+      }
+      assert(checked >= 60, "only " + checked + " of 64 darts in their colour");
+      // Person t's timeline: rows for the agents whose footprint held it or that saw it, from
+      // the record, and no others.
+      const heldBy = (t) => {
+        const held = [];
+        cityRun.config.uavs.forEach((u, i) => {
+          if (cityRun.record.some((line) => line.scans[i].in_footprint.indexOf(t) >= 0 || line.scans[i].visible.indexOf(t) >= 0)) held.push(u.name);
+        });
+        return held;
+      };
+      const people = cityRun.config.targets.map((x, t) => t);
+      const some = people.filter((t) => heldBy(t).length > 0).slice(0, 3), none = people.filter((t) => !heldBy(t).length).slice(0, 1);
+      assert(some.length === 3 && none.length === 1, "the run has too few people held (or not held): " + some + " / " + none);
+      for (const t of some.concat(none)) {
+        await tab.evaluate(`CanopyReplay.app.select({ kind: "target", index: ${t} })`);
+        const labels = await tab.evaluate("CanopyReplay.app.series.strips.map((s) => s.label)");
+        const held = heldBy(t);
+        const want = held.length ? held.map((n) => "in footprint of " + n).concat(held.map((n) => "seen by " + n)) : ["no agent held it"];
+        assert(JSON.stringify(labels) === JSON.stringify(want), `person ${t}: rows ${JSON.stringify(labels)}, want ${JSON.stringify(want)}`);
+      }
+      // The axis: ticks 1, 2 or 5 x 10^n s apart, each at its step's place.
+      const axis = await tab.evaluate(`(() => { const tl = CanopyReplay.app.timeline, w = Math.round(tl.canvas.getBoundingClientRect().width);
+        return { ticks: tl.ticks, at: tl.ticks.map((t) => Math.round(tl.x(parseFloat(t.text) / CanopyReplay.app.run.dt, w)) + 0.5) }; })()`);
+      const duration = (cityRun.record.length - 1) * cityRun.config.clock.dt;
+      assert(axis.ticks.length >= 2 && parseFloat(axis.ticks[0].text) === 0 && /^[0-9.]+ s$/.test(axis.ticks[1].text),
+        "ticks " + JSON.stringify(axis.ticks));
+      assert(parseFloat(axis.ticks[axis.ticks.length - 1].text) <= duration + 1e-9, "a tick beyond the run's end");
+      axis.ticks.forEach((t, n) => assert(t.x === axis.at[n], "tick " + t.text + " at " + t.x + ", its step at " + axis.at[n]));
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+    });
+
     await check("names holding </script> and <!-- are shown as text", async () => {
       const name = "x</script><script>document.title=1</script><!--", person = "T</script>1";
       const dir = path.join(work, "hostile");
