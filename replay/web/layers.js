@@ -447,11 +447,32 @@
   }
   CanopyReplay.dart = dart;
 
+  // An agent's dart (18 px, heading along +x) drawn once per colour into a small canvas and
+  // copied turned to its heading: stroking 64 outlines a step costs more than 64 copies.
+  function dartSprite(ctx, s, yaw, colour, ratio) {
+    const key = "dart " + ratio + " " + colour;
+    let sprite = sprites.get(key);
+    if (!sprite) {
+      sprite = document.createElement("canvas");
+      sprite.width = sprite.height = Math.ceil(24 * ratio);
+      const c = sprite.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      c.lineJoin = "round";
+      dart(c, { x: 12, y: 12 }, 0, 18, colour);
+      sprites.set(key, sprite);
+    }
+    const cos = Math.cos(yaw), sin = Math.sin(yaw);
+    // Screen y points down: a heading yaw turns the sprite by -yaw on the screen.
+    ctx.setTransform(ratio * cos, -ratio * sin, ratio * sin, ratio * cos, ratio * s.x, ratio * s.y);
+    ctx.drawImage(sprite, -12, -12, 24, 24);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+  }
+
   function drawAgents(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
       const p = run.uav(k, i);
       const s = view.toScreen(p.x, p.y);
-      dart(ctx, s, p.yaw, 18, agent.colour);
+      dartSprite(ctx, s, p.yaw, agent.colour, view.ratio);
       if (run.contactsAt(k, i)) {  // touching a trunk, wall or agent: a red ring, as the frames
         ctx.beginPath();
         ctx.arc(s.x, s.y, 13, 0, 2 * Math.PI);
