@@ -519,7 +519,7 @@
   Boxes.prototype.each = function (b, visit) {
     for (let j = Math.floor(b.y0 / 64); j <= Math.floor(b.y1 / 64); j++) {
       for (let i = Math.floor(b.x0 / 64); i <= Math.floor(b.x1 / 64); i++) {
-        if (visit(i + "," + j) === true) return true;
+        if (visit(j * 65536 + i) === true) return true;  // a number: no string a cell
       }
     }
     return false;
