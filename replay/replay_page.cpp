@@ -96,6 +96,27 @@ std::string replayPage(const RunFolder& run) {
   return page;
 }
 
+std::string sideBySidePage(const RunFolder& a, const RunFolder& b) {
+  std::string page(web::kSideBySide);
+  fill(page, "title", htmlEscaped(a.spec.name + " | " + b.spec.name));
+  fill(page, "scripts",
+       "<script>\n" + std::string(checkedScript(web::kSideBySideScript)) + "</script>\n");
+  // Escaped for a double-quoted attribute, a page holds no "<" and no slot of its own.
+  fill(page, "frames",
+       "<iframe id=\"run-a\" title=\"" + htmlEscaped(a.spec.name) + "\" srcdoc=\"" +
+           htmlEscaped(replayPage(a)) + "\"></iframe>\n<iframe id=\"run-b\" title=\"" +
+           htmlEscaped(b.spec.name) + "\" srcdoc=\"" + htmlEscaped(replayPage(b)) +
+           "\"></iframe>");
+  return page;
+}
+
+std::size_t writeSideBySide(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                            const std::filesystem::path& out) {
+  const std::string page = sideBySidePage(readRunFolder(run_a), readRunFolder(run_b));
+  writeFileAtomically(out, page);
+  return page.size();
+}
+
 std::size_t writeReplay(const std::filesystem::path& run_dir, const std::filesystem::path& out) {
   const std::string page = replayPage(readRunFolder(run_dir));
   writeFileAtomically(out, page);

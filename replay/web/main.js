@@ -168,4 +168,7 @@
 
   // Resolves once the first step is drawn (the tests wait for it).
   CanopyReplay.ready = readData().then(start);
+  // A top-level const is no property of the window: a side-by-side page reaches its frames'
+  // pages through this one (side_by_side.js).
+  window.CanopyReplay = CanopyReplay;
 })();

@@ -458,6 +458,34 @@ async function main() {
       assert(tab.errors.length === 0, tab.errors.join("\n"));
     });
 
+    await check("view RUN_A RUN_B: both runs side by side on one clock", async () => {
+      // The probe at dt 0.2 s and at dt 0.1 s: one time is a different step in each.
+      const b = path.join(work, "probe_fine"), out = path.join(work, "side_by_side.html");
+      canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--set", "clock.dt=0.1", "--out", b]);
+      canopyRun(["view", runDir, b, "--out", out]);
+      const fine = expect.readRun(b), dts = [run.config.clock.dt, fine.config.clock.dt];
+      assert(dts[0] !== dts[1], "the two runs share a dt: " + dts);
+      const tab = await Page.open(browser, 1600, 900);
+      await tab.navigate("file://" + path.resolve(out));
+      const steps = await tab.evaluate("CanopySideBySide.ready.then(() => CanopySideBySide.apps.map((a) => a.run.steps))");
+      assert(steps[0] === run.record.length && steps[1] === fine.record.length, "steps " + steps);
+      // The slider above sets both; a key in the left page moves the right one to the same time.
+      const got = await tab.evaluate(`(() => { const s = document.getElementById("clock-slider"), side = CanopySideBySide;
+        s.value = "3"; s.dispatchEvent(new Event("input"));
+        const bySlider = side.apps.map((a) => a.state.k);
+        const left = document.getElementById("run-a").contentDocument;
+        left.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowRight", code: "ArrowRight", bubbles: true }));
+        return { bySlider, byKey: side.apps.map((a) => a.state.k), time: side.time }; })()`);
+      const want = (t) => dts.map((dt, n) => Math.min(steps[n] - 1, Math.round(t / dt)));
+      assert(JSON.stringify(got.bySlider) === JSON.stringify(want(3)), `at 3 s: steps ${got.bySlider}, want ${want(3)}`);
+      const t1 = (want(3)[0] + 1) * dts[0];
+      assert(Math.abs(got.time - t1) < 1e-9 && JSON.stringify(got.byKey) === JSON.stringify(want(t1)),
+        `after -> on the left: steps ${got.byKey} at ${got.time} s, want ${want(t1)} at ${t1} s`);
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+      const outside = tab.requests.filter((u) => u !== "file://" + path.resolve(out) && !u.startsWith("data:") && u !== "about:srcdoc");
+      assert(outside.length === 0 && tab.failed.length === 0, "requests beyond the page: " + outside.join(", "));
+    });
+
     await check("names holding </script> and <!-- are shown as text", async () => {
       const name = "x</script><script>document.title=1</script><!--", person = "T</script>1";
       const dir = path.join(work, "hostile");
