@@ -4,14 +4,48 @@
 // first and the last animation frame), and, as a control, as many animation frames on a blank
 // page in the same tab (its late frames are the browser's and the machine's).
 // Usage: node bench/replay_speed.js CANOPY_BINARY SCENARIO WORK_DIR [REPEATS]
+//
+// With --step, the time of one step (→) on written pages, opened in one chromium session in
+// turn, REPEATS rounds (tests/replay/step_time.js: key press to pixels ready, 30 steps a round,
+// every layer on, a person's timeline open); prints each page's size and the median per round:
+//   node bench/replay_speed.js --step PAGE.html [PAGE.html ...] [--repeats N]
 "use strict";
 
+const fs = require("fs");
 const path = require("path");
 const { spawnSync } = require("child_process");
 const { Browser, Page } = require("../tests/replay/cdp.js");
+const { stepTimes } = require("../tests/replay/step_time.js");
 
 const [canopy, scenario, work, repeatsText] = process.argv.slice(2);
 const repeats = +(repeatsText || 3);
+
+async function stepMain(args) {
+  let rounds = 3;
+  const pages = [];
+  for (let i = 0; i < args.length; i++) {
+    if (args[i] === "--repeats") rounds = +args[++i];
+    else pages.push(path.resolve(args[i]));
+  }
+  const browser = new Browser(process.env.CANOPY_CHROMIUM);
+  const rows = pages.map((p) => ({ page: p, bytes: fs.statSync(p).size, median_step_ms: [] }));
+  try {
+    for (let r = 0; r < rounds; r++) {
+      for (const row of rows) {
+        const tab = await Page.open(browser, 1280, 900);
+        await tab.navigate("file://" + row.page);
+        await tab.evaluate("CanopyReplay.ready || null");
+        const s = await stepTimes(tab, 30);
+        row.median_step_ms.push(+s.median.toFixed(1));
+        row.backdrop = s.backdrop;
+        await tab.send("Page.close").catch(() => {});
+      }
+    }
+  } finally {
+    await browser.close();
+  }
+  rows.forEach((row) => console.log(JSON.stringify(row)));
+}
 
 function median(values) {
   const s = values.slice().sort((a, b) => a - b);
@@ -86,4 +120,5 @@ async function main() {
   rows.forEach((row) => console.log(JSON.stringify(row)));
 }
 
-main().catch((e) => { console.error(e); process.exit(1); });
+(process.argv[2] === "--step" ? stepMain(process.argv.slice(3)) : main())
+  .catch((e) => { console.error(e); process.exit(1); });

@@ -1,5 +1,8 @@
 #include "replay/replay_page.h"
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <stdexcept>
 #include <string_view>
 
@@ -10,18 +13,50 @@
 namespace canopy::replay {
 namespace {
 
-// Inside a <script> element only "</" and "<!--" change how the HTML parser reads on. The data is
-// JSON, where these can only stand inside strings: "<\/" means "</" there, and "\u003c!" "<!".
-std::string scriptSafeJson(std::string_view json) {
+// gzip (RFC 1952) of `text` at zlib's best compression. The header's time is 0, so the same
+// text gives the same bytes.
+std::string gzipped(std::string_view text) {
+  z_stream stream{};
+  if (deflateInit2(&stream, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw std::runtime_error("replay page: zlib failed to start");
   std::string out;
-  out.reserve(json.size());
-  for (std::size_t i = 0; i < json.size(); ++i) {
-    const bool next_special = i + 1 < json.size() && (json[i + 1] == '/' || json[i + 1] == '!');
-    if (json[i] == '<' && next_special) {
-      out += json[i + 1] == '/' ? "<\\" : "\\u003c";
-      continue;
+  char buffer[1 << 16];
+  std::size_t fed = 0;
+  int status = Z_OK;
+  while (status != Z_STREAM_END) {
+    if (stream.avail_in == 0 && fed < text.size()) {  // zlib takes at most 4 GiB at a time
+      const std::size_t n = std::min<std::size_t>(text.size() - fed, std::size_t{1} << 30);
+      stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data() + fed));
+      stream.avail_in = static_cast<uInt>(n);
+      fed += n;
     }
-    out += json[i];
+    stream.next_out = reinterpret_cast<Bytef*>(buffer);
+    stream.avail_out = sizeof buffer;
+    status = deflate(&stream, fed == text.size() ? Z_FINISH : Z_NO_FLUSH);
+    if (status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR) break;
+    out.append(buffer, sizeof buffer - stream.avail_out);
+  }
+  deflateEnd(&stream);
+  if (status != Z_STREAM_END) throw std::runtime_error("replay page: zlib failed to compress");
+  return out;
+}
+
+// RFC 4648 base64 (with padding): only letters, digits, '+', '/' and '=', so it is safe inside
+// a <script> element as it is.
+std::string base64(std::string_view bytes) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const auto byte = [&](std::size_t n) {
+      return n < bytes.size() ? static_cast<unsigned>(static_cast<unsigned char>(bytes[n])) : 0u;
+    };
+    const unsigned v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
+    out += kDigits[v >> 18 & 63];
+    out += kDigits[v >> 12 & 63];
+    out += i + 1 < bytes.size() ? kDigits[v >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? kDigits[v & 63] : '=';
   }
   return out;
 }
@@ -49,14 +84,37 @@ std::string replayPage(const RunFolder& run) {
   std::string page(web::kTemplate);
   fill(page, "title", htmlEscaped(run.spec.name));
   fill(page, "style", "<style>\n" + std::string(web::kStyle) + "</style>");
+  // The data: its JSON gzipped and in base64, which the page inflates with the browser's own
+  // DecompressionStream (main.js).
   fill(page, "data",
-       "<script type=\"application/json\" id=\"replay-data\">" +
-           scriptSafeJson(replayDataJson(run)) + "</script>");
+       "<script type=\"application/octet-stream\" id=\"replay-data\" data-encoding=\"gzip-base64\">" +
+           base64(gzipped(replayDataJson(run))) + "</script>");
   std::string scripts;
   for (std::string_view script : web::scripts())
     scripts += "<script>\n" + std::string(checkedScript(script)) + "</script>\n";
   fill(page, "scripts", scripts);
   return page;
+}
+
+std::string sideBySidePage(const RunFolder& a, const RunFolder& b) {
+  std::string page(web::kSideBySide);
+  fill(page, "title", htmlEscaped(a.spec.name + " | " + b.spec.name));
+  fill(page, "scripts",
+       "<script>\n" + std::string(checkedScript(web::kSideBySideScript)) + "</script>\n");
+  // Escaped for a double-quoted attribute, a page holds no "<" and no slot of its own.
+  fill(page, "frames",
+       "<iframe id=\"run-a\" title=\"" + htmlEscaped(a.spec.name) + "\" srcdoc=\"" +
+           htmlEscaped(replayPage(a)) + "\"></iframe>\n<iframe id=\"run-b\" title=\"" +
+           htmlEscaped(b.spec.name) + "\" srcdoc=\"" + htmlEscaped(replayPage(b)) +
+           "\"></iframe>");
+  return page;
+}
+
+std::size_t writeSideBySide(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                            const std::filesystem::path& out) {
+  const std::string page = sideBySidePage(readRunFolder(run_a), readRunFolder(run_b));
+  writeFileAtomically(out, page);
+  return page.size();
 }
 
 std::size_t writeReplay(const std::filesystem::path& run_dir, const std::filesystem::path& out) {

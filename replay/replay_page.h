@@ -10,8 +10,18 @@
 namespace canopy::replay {
 
 /// The page for `run`: web/replay.html with the style, the scripts and replayDataJson(run)
-/// inlined. The same run gives the same bytes.
+/// inlined (the data gzipped, in base64; the page inflates it with the browser's own
+/// DecompressionStream). The same run gives the same bytes.
 std::string replayPage(const RunFolder& run);
+
+/// Two runs' pages side by side on one clock (web/side_by_side.html): each page whole in an
+/// iframe's srcdoc, a slider in seconds above them; stepping either sets the other to the step
+/// of the same time.
+std::string sideBySidePage(const RunFolder& a, const RunFolder& b);
+
+/// writeReplay for two runs: their side-by-side page to `out`; returns its size in bytes.
+std::size_t writeSideBySide(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                            const std::filesystem::path& out);
 
 /// Reads the run in `run_dir` (readRunFolder: ScenarioError on bad input) and writes its page to
 /// `out` (a new temporary renamed over it; WriteError when it cannot). Returns the page's size in

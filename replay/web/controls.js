@@ -39,7 +39,19 @@
       row.appendChild(element("span", {}, text));
       box.appendChild(row);
     }
+    // Up to 8 agents one entry each; more in one entry, a colour each (the map's names and the
+    // "beliefs of" list tell which is which).
+    if (run.agents.length > 8) {
+      const uavs = run.agents.filter(function (a) { return a.kind !== "ground"; }).length;
+      entry(function (ctx) {
+        run.agents.forEach(function (agent, i) {
+          ctx.fillStyle = agent.colour;
+          ctx.fillRect(1 + (i % 8) * 3, 1 + Math.floor(i / 8) % 8 * 2, 3, 2);
+        });
+      }, run.agents.length + " agents (" + uavs + " UAVs), one colour each; dart and footprint in its colour");
+    }
     run.agents.forEach(function (agent) {
+      if (run.agents.length > 8) return;
       entry(function (ctx) {
         ctx.fillStyle = CanopyReplay.rgba(agent.colour, 0.235);
         ctx.fillRect(1, 1, 24, 16);

@@ -71,8 +71,27 @@ const CanopyReplay = {};
     });
   }
 
+  // Agents' colours beyond the frames' eight (render/colour.cpp repeats them every 8): 16 hues
+  // 22.5 degrees apart at four tones, each tone's hues turned by a further 11.25 degrees, so 64
+  // agents get 64 colours (the closest two 24 apart in RGB) and the first 16 differ in hue.
+  const TONES = [[0.85, 0.45], [0.75, 0.28], [0.9, 0.68], [0.35, 0.5]];  // saturation, lightness
+  function spreadColour(i) {
+    const tone = TONES[Math.floor(i / 16) % 4], h = ((i % 16) * 22.5 + Math.floor(i / 16) * 11.25) % 360;
+    const a = tone[0] * Math.min(tone[1], 1 - tone[1]);
+    const channel = function (n) {
+      const k = (n + h / 30) % 12;
+      return Math.round(255 * (tone[1] - a * Math.max(-1, Math.min(k - 3, 9 - k, 1))));
+    };
+    return "#" + [channel(0), channel(8), channel(4)].map(function (v) {
+      return (v < 16 ? "0" : "") + v.toString(16);
+    }).join("");
+  }
+  CanopyReplay.spreadColour = spreadColour;
+
   CanopyReplay.decode = function (raw) {
     const A = raw.agents.length, T = raw.targets.length, S = raw.steps;
+    // Up to 8 agents keep the frames' colours; more get one colour each.
+    if (A > 8) raw.agents.forEach(function (agent, i) { agent.colour = spreadColour(i); });
     const run = {
       scenario: raw.scenario, seed: raw.seed, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
       plans: raw.plans, algorithm: raw.algorithm, aoi: raw.aoi, occlusionModel: raw.occlusion_model,
@@ -90,6 +109,12 @@ const CanopyReplay = {};
     for (let i = 0; i + 2 < raw.trees.length; i += 3) {
       run.trees.push({ x: raw.trees[i], y: raw.trees[i + 1], r: raw.trees[i + 2] });
     }
+    run.treeGrid = new CanopyReplay.TreeGrid(run.trees);  // backdrop.js
+    run.polygonBoxes = run.polygons.map(function (v) {
+      let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+      v.forEach(function (q) { x0 = Math.min(x0, q.x); y0 = Math.min(y0, q.y); x1 = Math.max(x1, q.x); y1 = Math.max(y1, q.y); });
+      return [x0, y0, x1, y1];
+    });
     run.epochs.forEach(function (ep, n) { run.epochIndex.set(ep.epoch, n); });
     // epochAt[k]: the index of the last planning epoch at or before step k, -1 before the first.
     let e = -1;

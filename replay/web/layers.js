@@ -16,6 +16,8 @@
   };
   const TRAIL_SECONDS = 5;  // as the frames (render/trails.h)
   const FONT = "11px 'DejaVu Sans', sans-serif";
+  const widths = new Map();   // font and text → width (px)
+  const sprites = new Map();  // small canvases drawn once and copied: names, a person's disc
 
   // The layers a user toggles: key (the keyboard's digit is its place), id and label.
   CanopyReplay.LAYERS = [
@@ -127,19 +129,17 @@
       { x: quad[0].x + far * quad[0].ux, y: quad[0].y + far * quad[0].uy }]);
   }
 
+  // The crowns and walls that may reach into the square of half-side r about p (the trees'
+  // grid finds the crowns; walls by their boxes).
   function crownsNear(run, p, r) {
     const out = [];
-    run.trees.forEach(function (t) {
+    run.treeGrid.each(p.x - r, p.y - r, p.x + r, p.y + r, function (t) {
       if (Math.abs(t.x - p.x) <= r + t.r && Math.abs(t.y - p.y) <= r + t.r) out.push(t);
     });
-    run.polygons.forEach(function (v) {
-      if (v.some(function (q) { return Math.abs(q.x - p.x) <= r && Math.abs(q.y - p.y) <= r; }) ||
-          v.length === 0) {
+    run.polygons.forEach(function (v, n) {
+      const b = run.polygonBoxes[n];
+      if (v.length === 0 || (b[0] <= p.x + r && b[2] >= p.x - r && b[1] <= p.y + r && b[3] >= p.y - r)) {
         out.push({ outline: v });
-      } else {
-        let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-        v.forEach(function (q) { x0 = Math.min(x0, q.x); y0 = Math.min(y0, q.y); x1 = Math.max(x1, q.x); y1 = Math.max(y1, q.y); });
-        if (x0 <= p.x + r && x1 >= p.x - r && y0 <= p.y + r && y1 >= p.y - r) out.push({ outline: v });
       }
     });
     return out;
@@ -156,23 +156,20 @@
     ctx.strokeRect(a.x, a.y, b.x - a.x, b.y - a.y);
   }
 
-  function drawTrees(ctx, view, run) {
+  CanopyReplay.drawGround = drawGround;
+
+  // Walls and polygonal crowns (the discs are drawn by the backdrop, backdrop.js).
+  function drawWalls(ctx, view, run) {
     ctx.fillStyle = C.treeFill;
     ctx.strokeStyle = C.treeEdge;
     ctx.lineWidth = 1;
-    run.trees.forEach(function (t) {
-      const s = view.toScreen(t.x, t.y);
-      ctx.beginPath();
-      ctx.arc(s.x, s.y, t.r * view.scale, 0, 2 * Math.PI);
-      ctx.fill();
-      ctx.stroke();
-    });
     run.polygons.forEach(function (v) {
       pathOf(ctx, view, v, true);
       ctx.fill();
       ctx.stroke();
     });
   }
+  CanopyReplay.drawWalls = drawWalls;
 
   function drawSensors(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
@@ -207,38 +204,39 @@
     ctx.strokeStyle = C.link;
     ctx.lineWidth = 1.5;
     ctx.setLineDash([6, 4]);
+    ctx.beginPath();  // one path, one stroke: 64 agents have up to 2016 links
     for (let i = 0; i < run.agents.length; i++) {
+      const p = run.uav(k, i), a = view.toScreen(p.x, p.y);
       for (let j = i + 1; j < run.agents.length; j++) {
-        const p = run.uav(k, i), q = run.uav(k, j);
+        const q = run.uav(k, j);
         if (!inRange(run, p, q)) continue;
-        pathOf(ctx, view, [p, q], false);
-        ctx.stroke();
+        const b = view.toScreen(q.x, q.y);
+        ctx.moveTo(a.x, a.y);
+        ctx.lineTo(b.x, b.y);
       }
     }
+    ctx.stroke();
     ctx.setLineDash([]);
   }
 
   function drawMap(ctx, view, run, k, a) {
     ctx.strokeStyle = run.agents[a].colour;
     ctx.lineWidth = 1.2;
+    ctx.beginPath();  // every entry in one path, stroked once
     run.maps[a][k].forEach(function (e) {
       if (e.outline) {
-        pathOf(ctx, view, e.outline.map(function (o) { return { x: e.x + o.x, y: e.y + o.y }; }), true);
+        e.outline.forEach(function (o, n) {
+          const s = view.toScreen(e.x + o.x, e.y + o.y);
+          if (n === 0) ctx.moveTo(s.x, s.y); else ctx.lineTo(s.x, s.y);
+        });
+        ctx.closePath();
       } else {
-        const s = view.toScreen(e.x, e.y);
-        ctx.beginPath();
-        ctx.arc(s.x, s.y, Math.max(e.r, 0.1) * view.scale, 0, 2 * Math.PI);
+        const s = view.toScreen(e.x, e.y), r = Math.max(e.r, 0.1) * view.scale;
+        ctx.moveTo(s.x + r, s.y);
+        ctx.arc(s.x, s.y, r, 0, 2 * Math.PI);
       }
-      ctx.stroke();
     });
-  }
-
-  function dot(ctx, view, q, size, fill) {
-    const s = view.toScreen(q.x, q.y);
-    ctx.beginPath();
-    ctx.arc(s.x, s.y, 0.5 * size, 0, 2 * Math.PI);
-    ctx.fillStyle = fill;
-    ctx.fill();
+    ctx.stroke();
   }
 
   // A plan's ground points: from `start`, each action's velocity held for one plan period.
@@ -300,7 +298,14 @@
       pathOf(ctx, view, [run.uav(k, i)].concat(plan), false);
       ctx.strokeStyle = colour;
       ctx.stroke();
-      plan.forEach(function (q) { dot(ctx, view, q, 5, colour); });
+      ctx.beginPath();
+      plan.forEach(function (q) {
+        const s = view.toScreen(q.x, q.y);
+        ctx.moveTo(s.x + 2.5, s.y);
+        ctx.arc(s.x, s.y, 2.5, 0, 2 * Math.PI);
+      });
+      ctx.fillStyle = colour;
+      ctx.fill();
     });
     ctx.font = FONT;
     intentions(run, k, a).forEach(function (item) {
@@ -335,13 +340,19 @@
     ctx.strokeStyle = C.trail;
     ctx.lineWidth = 2;
     ctx.lineJoin = "round";
+    if (k - first < 1) return;
+    ctx.beginPath();  // every person's trail in one path, stroked once
     for (let t = 0; t < run.targets.length; t++) {
-      const pts = [];
-      for (let j = first; j <= k; j++) pts.push(run.target(j, t));
-      if (pts.length < 2) continue;
-      pathOf(ctx, view, pts, false);
-      ctx.stroke();
+      let last = null;
+      for (let j = first; j <= k; j++) {
+        const q = run.target(j, t), s = view.toScreen(q.x, q.y);
+        // A point under a pixel from the last one drawn is left out (but never the newest).
+        if (last && j < k && Math.abs(s.x - last.x) < 1 && Math.abs(s.y - last.y) < 1) continue;
+        if (last) ctx.lineTo(s.x, s.y); else ctx.moveTo(s.x, s.y);
+        last = s;
+      }
     }
+    ctx.stroke();
   }
 
   // The 2-sigma ellipse of P = [[a, b], [b, c]]: half-axes 2 sqrt(lambda) along the eigenvectors.
@@ -354,11 +365,24 @@
   }
   CanopyReplay.ellipse = ellipse;
 
-  function cross(ctx, s, size, colour) {
-    const h = 0.5 * size;
+  function drawTracks(ctx, view, run, k, a) {
+    const colour = run.agents[a].colour, tracks = run.tracks[k][a], of = run.trackOfTarget[k][a];
+    const at = tracks.map(function (t) { return view.toScreen(t.x, t.y); });
+    // Ellipses in one path, then the crosses in one (white under the colour), then the labels.
     ctx.beginPath();
-    ctx.moveTo(s.x - h, s.y - h); ctx.lineTo(s.x + h, s.y + h);
-    ctx.moveTo(s.x + h, s.y - h); ctx.lineTo(s.x - h, s.y + h);
+    tracks.forEach(function (t, j) {
+      const s = at[j], e = ellipse(t.pxx, t.pxy, t.pyy), rx = e.major * view.scale;
+      ctx.moveTo(s.x + rx * Math.cos(e.angle), s.y - rx * Math.sin(e.angle));
+      ctx.ellipse(s.x, s.y, rx, e.minor * view.scale, -e.angle, 0, 2 * Math.PI);
+    });
+    ctx.strokeStyle = colour;
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+    ctx.beginPath();
+    at.forEach(function (s) {
+      ctx.moveTo(s.x - 5, s.y - 5); ctx.lineTo(s.x + 5, s.y + 5);
+      ctx.moveTo(s.x + 5, s.y - 5); ctx.lineTo(s.x - 5, s.y + 5);
+    });
     ctx.lineCap = "round";
     ctx.strokeStyle = C.white;
     ctx.lineWidth = 4.5;
@@ -367,36 +391,42 @@
     ctx.lineWidth = 2.5;
     ctx.stroke();
     ctx.lineCap = "butt";
-  }
-
-  function drawTracks(ctx, view, run, k, a) {
-    const colour = run.agents[a].colour, tracks = run.tracks[k][a], of = run.trackOfTarget[k][a];
+    const placed = new Boxes();
     ctx.font = FONT;
+    ctx.fillStyle = colour;
     tracks.forEach(function (t, j) {
-      const s = view.toScreen(t.x, t.y), e = ellipse(t.pxx, t.pxy, t.pyy);
-      ctx.beginPath();
-      ctx.ellipse(s.x, s.y, e.major * view.scale, e.minor * view.scale, -e.angle, 0, 2 * Math.PI);
-      ctx.strokeStyle = colour;
-      ctx.lineWidth = 1.5;
-      ctx.stroke();
-      cross(ctx, s, 10, colour);
-      const target = of.indexOf(j);
+      const s = at[j], target = of.indexOf(j);
       const text = "track " + t.key + (target >= 0 ? " \u2192 " + run.targets[target].name : "");
-      ctx.fillStyle = colour;
+      // A label only where it covers none drawn before it.
+      const box = { x0: s.x + 7, y0: s.y + 3, x1: s.x + 7 + textWidth(ctx, text), y1: s.y + 16 };
+      if (placed.hits(box)) return;
+      placed.add(box);
       ctx.fillText(text, s.x + 7, s.y + 14);
     });
   }
 
   function drawTargets(ctx, view, run, k) {
+    // A person's disc is drawn once into a small canvas and copied (stroking a few hundred
+    // circles a step costs milliseconds).
+    const ratio = view.ratio, key = "person " + ratio;
+    let sprite = sprites.get(key);
+    if (!sprite) {
+      sprite = document.createElement("canvas");
+      sprite.width = sprite.height = Math.ceil(14 * ratio);
+      const c = sprite.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      c.beginPath();
+      c.arc(7, 7, 5, 0, 2 * Math.PI);
+      c.fillStyle = C.target;
+      c.fill();
+      c.strokeStyle = C.white;
+      c.lineWidth = 1.5;
+      c.stroke();
+      sprites.set(key, sprite);
+    }
     for (let t = 0; t < run.targets.length; t++) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-      ctx.beginPath();
-      ctx.arc(s.x, s.y, 5, 0, 2 * Math.PI);
-      ctx.fillStyle = C.target;
-      ctx.fill();
-      ctx.strokeStyle = C.white;
-      ctx.lineWidth = 1.5;
-      ctx.stroke();
+      ctx.drawImage(sprite, s.x - 7, s.y - 7, sprite.width / ratio, sprite.height / ratio);
     }
   }
 
@@ -417,11 +447,32 @@
   }
   CanopyReplay.dart = dart;
 
+  // An agent's dart (18 px, heading along +x) drawn once per colour into a small canvas and
+  // copied turned to its heading: stroking 64 outlines a step costs more than 64 copies.
+  function dartSprite(ctx, s, yaw, colour, ratio) {
+    const key = "dart " + ratio + " " + colour;
+    let sprite = sprites.get(key);
+    if (!sprite) {
+      sprite = document.createElement("canvas");
+      sprite.width = sprite.height = Math.ceil(24 * ratio);
+      const c = sprite.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      c.lineJoin = "round";
+      dart(c, { x: 12, y: 12 }, 0, 18, colour);
+      sprites.set(key, sprite);
+    }
+    const cos = Math.cos(yaw), sin = Math.sin(yaw);
+    // Screen y points down: a heading yaw turns the sprite by -yaw on the screen.
+    ctx.setTransform(ratio * cos, -ratio * sin, ratio * sin, ratio * cos, ratio * s.x, ratio * s.y);
+    ctx.drawImage(sprite, -12, -12, 24, 24);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+  }
+
   function drawAgents(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
       const p = run.uav(k, i);
       const s = view.toScreen(p.x, p.y);
-      dart(ctx, s, p.yaw, 18, agent.colour);
+      dartSprite(ctx, s, p.yaw, agent.colour, view.ratio);
       if (run.contactsAt(k, i)) {  // touching a trunk, wall or agent: a red ring, as the frames
         ctx.beginPath();
         ctx.arc(s.x, s.y, 13, 0, 2 * Math.PI);
@@ -432,57 +483,110 @@
     });
   }
 
-  function label(ctx, s, text, dx, dy) {
-    ctx.lineWidth = 3;
-    ctx.strokeStyle = "rgba(255,255,255,0.8)";
-    ctx.strokeText(text, s.x + dx, s.y + dy);
-    ctx.fillStyle = C.text;
-    ctx.fillText(text, s.x + dx, s.y + dy);
+  // A name in bold on a white halo, its baseline's left end at (s.x + dx, s.y + dy). Drawn once
+  // into a small canvas of its own and copied from there: a few hundred names a step cost
+  // copies, not text layout.
+  function label(ctx, s, text, dx, dy, ratio) {
+    const key = ratio + "\n" + text;
+    let sprite = sprites.get(key);
+    if (!sprite) {
+      sprite = document.createElement("canvas");
+      const w = textWidth(ctx, text) + 6;
+      sprite.width = Math.ceil(w * ratio);
+      sprite.height = Math.ceil(20 * ratio);
+      const c = sprite.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      c.font = ctx.font;
+      c.lineJoin = "round";
+      c.lineWidth = 3;
+      c.strokeStyle = "rgba(255,255,255,0.8)";
+      c.strokeText(text, 3, 15);
+      c.fillStyle = C.text;
+      c.fillText(text, 3, 15);
+      sprites.set(key, sprite);
+    }
+    ctx.drawImage(sprite, Math.round((s.x + dx - 3) * ratio) / ratio, Math.round((s.y + dy - 15) * ratio) / ratio,
+      sprite.width / ratio, sprite.height / ratio);
   }
 
   function overlaps(a, b) {
     return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
   }
 
+  // Screen boxes binned into 64 px cells, so that asking whether a box overlaps any of a few
+  // hundred looks at its neighbours only.
+  function Boxes() { this.cells = new Map(); }
+  Boxes.prototype.each = function (b, visit) {
+    for (let j = Math.floor(b.y0 / 64); j <= Math.floor(b.y1 / 64); j++) {
+      for (let i = Math.floor(b.x0 / 64); i <= Math.floor(b.x1 / 64); i++) {
+        if (visit(j * 65536 + i) === true) return true;  // a number: no string a cell
+      }
+    }
+    return false;
+  };
+  Boxes.prototype.add = function (b) {
+    const cells = this.cells;
+    this.each(b, function (key) {
+      if (!cells.has(key)) cells.set(key, []);
+      cells.get(key).push(b);
+    });
+  };
+  Boxes.prototype.hits = function (b) {
+    const cells = this.cells;
+    return this.each(b, function (key) {
+      const list = cells.get(key);
+      return !!list && list.some(function (o) { return overlaps(o, b); });
+    });
+  };
+
+  // ctx.measureText(text).width in the current font, remembered.
+  function textWidth(ctx, text) {
+    const key = ctx.font + "\n" + text;
+    if (!widths.has(key)) widths.set(key, ctx.measureText(text).width);
+    return widths.get(key);
+  }
+
   // Names of people (above right first) and agents (below right first), each at the first of
   // six places around its symbol that covers no agent's or person's symbol and no name placed
-  // before it (as the frames place them, render/scene_builder.cpp), else at the first place.
+  // before it (as the frames place them, render/scene_builder.cpp); where none of the six is
+  // free the name is left out (the frames put it at the first place), so a crowd seen from far
+  // shows the names that fit instead of a pile.
   function drawNames(ctx, view, run, k, truth) {
     ctx.font = "bold " + FONT;
     ctx.lineJoin = "round";
-    const symbols = [], placed = [], items = [];
+    const symbols = new Boxes(), placed = new Boxes(), items = [];
     run.agents.forEach(function (agent, i) {
       const p = run.uav(k, i), s = view.toScreen(p.x, p.y);
-      symbols.push({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
+      symbols.add({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
       items.push({ s: s, text: agent.name, gap: 10, aboveFirst: false });
     });
     // People's symbols and names are placed whether shown or not, so that switching them off
     // does not move an agent's name.
     run.targets.forEach(function (target, t) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-      symbols.push({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
+      symbols.add({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
       items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true, shown: truth });
     });
     const line = 11;
     items.forEach(function (item) {
-      const w = ctx.measureText(item.text).width, g = item.gap;
+      const w = textWidth(ctx, item.text), g = item.gap;
       const aboveRight = [g, -g], belowRight = [g, g + line], aboveLeft = [-g - w, -g],
         belowLeft = [-g - w, g + line], farAbove = [-0.5 * w, -g - line], farBelow = [-0.5 * w, g + 2 * line];
       const places = item.aboveFirst ? [aboveRight, aboveLeft, belowRight, belowLeft, farAbove, farBelow]
         : [belowRight, belowLeft, aboveRight, aboveLeft, farBelow, farAbove];
-      let chosen = places[0];
+      let chosen = null;
       for (let n = 0; n < places.length; n++) {
         const b = { x0: item.s.x + places[n][0], y0: item.s.y + places[n][1] - line,
           x1: item.s.x + places[n][0] + w, y1: item.s.y + places[n][1] + 2 };
-        if (!symbols.some(function (o) { return overlaps(o, b); }) &&
-            !placed.some(function (o) { return overlaps(o, b); })) {
+        if (!symbols.hits(b) && !placed.hits(b)) {
           chosen = places[n];
           break;
         }
       }
-      placed.push({ x0: item.s.x + chosen[0], y0: item.s.y + chosen[1] - line,
+      if (!chosen) return;  // no place fits: no name (a crowd at a far zoom)
+      placed.add({ x0: item.s.x + chosen[0], y0: item.s.y + chosen[1] - line,
         x1: item.s.x + chosen[0] + w, y1: item.s.y + chosen[1] + 2 });
-      if (item.shown !== false) label(ctx, item.s, item.text, chosen[0], chosen[1]);
+      if (item.shown !== false) label(ctx, item.s, item.text, chosen[0], chosen[1], view.ratio);
     });
   }
 
@@ -525,13 +629,12 @@
     ctx.fillText(barLabel, x, y - 9);
   }
 
-  // Draws step k. state: {k, agent (whose beliefs), layers: {id: bool}, selection}.
-  CanopyReplay.drawMap = function (ctx, view, run, state) {
+  // Draws step k over the static layers of `backdrop` (a CanopyReplay.Backdrop of this run).
+  // state: {k, agent (whose beliefs), layers: {id: bool}, selection}.
+  CanopyReplay.drawMap = function (ctx, view, run, state, backdrop) {
     const k = state.k, a = state.agent, on = state.layers;
-    ctx.setTransform(view.ratio, 0, 0, view.ratio, 0, 0);
+    backdrop.draw(ctx, view, on.trees);
     ctx.lineJoin = "round";
-    drawGround(ctx, view, run);
-    if (on.trees) drawTrees(ctx, view, run);
     if (on.sensors) drawSensors(ctx, view, run, k);
     if (on.links) drawLinks(ctx, view, run, k);
     if (on.map) drawMap(ctx, view, run, k, a);

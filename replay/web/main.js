@@ -1,7 +1,7 @@
 // The replay page's start: reads the embedded run, draws its first step and keeps the map, the
 // slider, the clock and the timeline in step. CanopyReplay.app is the page's state, which the
 // browser tests drive and read.
-/* global CanopyReplay */
+/* global CanopyReplay, DecompressionStream */
 (function () {
   "use strict";
 
@@ -30,6 +30,7 @@
     this.view = new CanopyReplay.View(document.getElementById("map"));
     this.ctx = this.view.canvas.getContext("2d");
     this.timeline = new CanopyReplay.Timeline(document.getElementById("timeline"), run);
+    this.backdrop = new CanopyReplay.Backdrop(run);
     this.box = runBox(run);
     const layers = {};
     CanopyReplay.LAYERS.forEach(function (l) { layers[l.id] = true; });
@@ -48,7 +49,7 @@
   App.prototype.draw = function () {
     const t0 = performance.now(), s = this.state;
     this.view.resize();
-    CanopyReplay.drawMap(this.ctx, this.view, this.run, s);
+    CanopyReplay.drawMap(this.ctx, this.view, this.run, s, this.backdrop);
     document.getElementById("slider").value = String(s.k);
     document.getElementById("clock").textContent = "k = " + s.k + " / " + (this.run.steps - 1) +
       "   t = " + this.run.time(s.k).toFixed(2) + " s";
@@ -133,20 +134,41 @@
     requestAnimationFrame(frame);
   };
 
-  const raw = JSON.parse(document.getElementById("replay-data").textContent);
-  const run = CanopyReplay.decode(raw);
-  document.getElementById("scenario").textContent = run.scenario;
-  document.getElementById("subtitle").textContent = "seed " + run.seed + " \u00b7 " + run.steps +
-    " steps of " + run.dt + " s \u00b7 planner " + run.algorithm + " \u00b7 " + run.agents.length +
-    " agents, " + run.targets.length + " people, " + (run.trees.length + run.polygons.length) +
-    " trees and walls";
-  const app = new App(run);
-  CanopyReplay.app = app;
-  CanopyReplay.bindControls(app);
-  // A person's timeline from the start, so that the page shows every part of itself at once.
-  if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
-  app.refreshTimeline();
-  app.fit();
-  app.stats.firstPaintMs = performance.now() - started;
-  app.stats.firstPaintSinceNavigation = performance.now();
+  // The run's data: JSON, gzipped and in base64 (replay_page.cpp), inflated by the browser's own
+  // DecompressionStream; a page of plain JSON is read as it is.
+  function readData() {
+    const element = document.getElementById("replay-data");
+    if (element.dataset.encoding !== "gzip-base64") return Promise.resolve(JSON.parse(element.textContent));
+    const text = atob(element.textContent.trim()), bytes = new Uint8Array(text.length);
+    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
+    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
+    return new Response(stream).text().then(function (json) {
+      CanopyReplay.dataChars = json.length;  // the inflated size, which the tests compare
+      return JSON.parse(json);
+    });
+  }
+
+  function start(raw) {
+    const run = CanopyReplay.decode(raw);
+    document.getElementById("scenario").textContent = run.scenario;
+    document.getElementById("subtitle").textContent = "seed " + run.seed + " \u00b7 " + run.steps +
+      " steps of " + run.dt + " s \u00b7 planner " + run.algorithm + " \u00b7 " + run.agents.length +
+      " agents, " + run.targets.length + " people, " + (run.trees.length + run.polygons.length) +
+      " trees and walls";
+    const app = new App(run);
+    CanopyReplay.app = app;
+    CanopyReplay.bindControls(app);
+    // A person's timeline from the start, so that the page shows every part of itself at once.
+    if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
+    app.refreshTimeline();
+    app.fit();
+    app.stats.firstPaintMs = performance.now() - started;
+    app.stats.firstPaintSinceNavigation = performance.now();
+  }
+
+  // Resolves once the first step is drawn (the tests wait for it).
+  CanopyReplay.ready = readData().then(start);
+  // A top-level const is no property of the window: a side-by-side page reaches its frames'
+  // pages through this one (side_by_side.js).
+  window.CanopyReplay = CanopyReplay;
 })();

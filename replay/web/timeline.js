@@ -10,6 +10,7 @@
   const CHART = 56;      // CSS px of a line chart
   const STRIP = 11;      // CSS px of an on/off strip
   const FONT = "11px 'DejaVu Sans', sans-serif";
+  const AXIS = 18;       // CSS px of the time axis, at the bottom
 
   function precise(v) {
     return typeof v === "number" && isFinite(v) ? v.toPrecision(4) : "n/a";
@@ -27,6 +28,27 @@
     return out;
   }
 
+  // The agents whose footprint held target t at some step, in order.
+  function agentsThatHeld(run, t) {
+    const out = [];
+    for (let i = 0; i < run.agents.length; i++) {
+      for (let k = 0; k < run.steps; k++) {
+        if (run.inFootprint[k][i].indexOf(t) >= 0 || run.visible[k][i].indexOf(t) >= 0) {
+          out.push(i);
+          break;
+        }
+      }
+    }
+    return out;
+  }
+
+  // The targets that agent i's footprint held at some step, in order.
+  function targetsHeldBy(run, i) {
+    const held = new Set();
+    for (let k = 0; k < run.steps; k++) run.inFootprint[k][i].forEach(function (t) { held.add(t); });
+    return Array.from(held).sort(function (x, y) { return x - y; });
+  }
+
   // tr P_pos (m²) of agent a's track of target t at every step (NaN without one).
   function targetTrace(run, a, t) {
     const out = new Float64Array(run.steps);
@@ -42,7 +64,7 @@
   // agent a: a title, a line chart of tr P, strips, a line chart of OSPA, and the readout of a
   // step as {text, fields}.
   CanopyReplay.timelineSeries = function (run, selection, a) {
-    const A = run.agents.length, strips = [];
+    const strips = [];
     let title, trace, traceLabel, readout;
     const ospa = run.ospa[a];
     if (selection.kind === "target") {
@@ -50,14 +72,18 @@
       title = "person " + target.name + ", seen through " + run.agents[a].name + "'s beliefs";
       trace = targetTrace(run, a, t);
       traceLabel = "tr P of " + run.agents[a].name + "'s track (m\u00b2)";
-      for (let i = 0; i < A; i++) {
+      // Only the agents that matter to this person: those whose footprint held it or that saw it
+      // at some step (an owner has seen it); the others' rows would stay empty.
+      const held = agentsThatHeld(run, t);
+      held.forEach(function (i) {
         strips.push({ label: "in footprint of " + run.agents[i].name, colour: run.agents[i].colour,
           on: function (k) { return run.inFootprint[k][i].indexOf(t) >= 0; } });
-      }
-      for (let i = 0; i < A; i++) {
+      });
+      held.forEach(function (i) {
         strips.push({ label: "seen by " + run.agents[i].name, colour: run.agents[i].colour,
           on: function (k) { return run.visible[k][i].indexOf(t) >= 0; } });
-      }
+      });
+      if (!held.length) strips.push({ label: "no agent held it", colour: "", on: function () { return false; } });
       if (run.owned) {
         strips.push({ label: "owner (" + run.m + "-ownership)", owners: function (k) {
           return agentsWith(run, run.owned, k, t);
@@ -90,16 +116,22 @@
         trace[k] = run.tracks[k][i].reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
       }
       traceLabel = "\u03a3 tr P of its tracks (m\u00b2)";
-      run.targets.forEach(function (target, t) {
+      // Only the people its footprint held at some step (it sees and owns only those).
+      const held = targetsHeldBy(run, i);
+      held.forEach(function (t) {
+        const target = run.targets[t];
         strips.push({ label: target.name + " in its footprint", colour: agent.colour,
           on: function (k) { return run.inFootprint[k][i].indexOf(t) >= 0; } });
       });
-      run.targets.forEach(function (target, t) {
+      held.forEach(function (t) {
+        const target = run.targets[t];
         strips.push({ label: target.name + " seen", colour: agent.colour,
           on: function (k) { return run.visible[k][i].indexOf(t) >= 0; } });
       });
+      if (!held.length) strips.push({ label: "nobody in its footprint", colour: "", on: function () { return false; } });
       if (run.owned) {
-        run.targets.forEach(function (target, t) {
+        held.forEach(function (t) {
+          const target = run.targets[t];
           strips.push({ label: target.name + " owned (" + run.m + "-own.)", colour: agent.colour,
             on: function (k) { return run.owned[k][i].indexOf(t) >= 0; } });
         });
@@ -138,7 +170,7 @@
   }
 
   Timeline.prototype.height = function () {
-    return this.series ? CHART + 8 + this.series.strips.length * STRIP + 8 + CHART + 14 : 0;
+    return this.series ? CHART + 8 + this.series.strips.length * STRIP + 8 + CHART + 6 + AXIS : 0;
   };
 
   // Step k ↔ x (CSS px).
@@ -210,6 +242,35 @@
       top += STRIP;
     });
     lineChart(ctx, this, s.ospa, top + 8, width, s.colour, s.ospaLabel);
+    this.drawAxis(ctx, width, top + 8 + CHART + 4);
+  };
+
+  // The time axis: ticks and labels in seconds, 1, 2 or 5 x 10^n apart, at least 60 px apart.
+  Timeline.prototype.drawAxis = function (ctx, width, top) {
+    const run = this.run, duration = (run.steps - 1) * run.dt, span = width - LEFT - 8;
+    if (!(duration > 0) || !(span > 0)) return;
+    const least = 60 * duration / span, decade = Math.pow(10, Math.floor(Math.log10(least)));
+    const every = [1, 2, 5, 10].map(function (m) { return m * decade; })
+      .filter(function (v) { return v >= least; })[0];
+    ctx.strokeStyle = "rgb(90,90,90)";
+    ctx.fillStyle = "rgb(20,20,20)";
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    ctx.moveTo(LEFT, top + 0.5);
+    ctx.lineTo(LEFT + span, top + 0.5);
+    const ticks = [];
+    for (let n = 0; n * every <= duration * (1 + 1e-9); n++) {
+      const seconds = n * every, x = Math.round(this.x(seconds / run.dt, width)) + 0.5;
+      ctx.moveTo(x, top);
+      ctx.lineTo(x, top + 4);
+      ticks.push({ x: x, text: +seconds.toPrecision(6) + " s" });
+    }
+    ctx.stroke();
+    ctx.textAlign = "center";
+    ticks.forEach(function (tick) { ctx.fillText(tick.text, tick.x, top + 15); });
+    ctx.textAlign = "left";
+    ctx.fillText("time", 4, top + 15);
+    this.ticks = ticks;  // what the axis shows, which the tests read
   };
 
   Timeline.prototype.draw = function (k) {
@@ -223,13 +284,18 @@
       this.cache = null;
     }
     const ctx = canvas.getContext("2d");
-    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    // The history is drawn once into an offscreen canvas and copied under the cursor each step.
     if (!this.cache) {
-      this.drawHistory(ctx, width);
-      this.cache = ctx.getImageData(0, 0, canvas.width, canvas.height);
-    } else {
-      ctx.putImageData(this.cache, 0, 0);
+      this.cache = document.createElement("canvas");
+      this.cache.width = canvas.width;
+      this.cache.height = canvas.height;
+      const c = this.cache.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      this.drawHistory(c, width);
     }
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.drawImage(this.cache, 0, 0);
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
     const x = Math.round(this.x(k, width)) + 0.5;
     ctx.strokeStyle = "rgb(20,20,20)";
     ctx.lineWidth = 1;

@@ -126,6 +126,8 @@ class Page {
     const loaded = this.browser.waitFor("Page.loadEventFired", this.sessionId);
     await this.send("Page.navigate", { url });
     await loaded;
+    // A replay page inflates its data after the load event: wait until it has drawn.
+    await this.evaluate("typeof CanopyReplay === 'object' && CanopyReplay.ready ? CanopyReplay.ready.then(() => true) : true");
   }
 
   // The value of a JavaScript expression in the page (awaited when it is a promise).
