@@ -186,7 +186,7 @@ std::string SummaryBuilder::json(double wall_seconds) const {
   // The team's figures (sim/team_metrics.h): per step, and their means over the run.
   std::vector<double> team_ospa, team_gospa, held_fraction;
   std::vector<int> team_estimates;
-  const double people = std::max<std::size_t>(1, targets_.size());
+  const double people = static_cast<double>(std::max<std::size_t>(1, targets_.size()));
   for (const TeamFigures& f : team_) {
     team_ospa.push_back(f.ospa);
     team_gospa.push_back(f.gospa);
