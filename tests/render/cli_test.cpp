@@ -36,9 +36,13 @@ class CanopyCli : public testing::Test {
 
   // Runs `env canopy args` through /bin/sh; args are trusted test strings.
   Outcome canopy(const std::string& args, const std::string& env = "") const {
-    const std::string command = env + " '" + CANOPY_APP + "' " + args + " > '" +
-                                (dir_ / "stdout").string() + "' 2> '" + (dir_ / "stderr").string() +
-                                "'";
+    // Under the sanitizers the program exited 1 with LSan's own tracer crashing ("Tracer caught
+    // signal 11") in some builds of this test and not in others with the same program (seen on
+    // FramesEveryKStepsAtTheGivenSize): what these tests check does not depend on leak
+    // checking, which the unit tests and the other command-line tests keep.
+    const std::string command = "ASAN_OPTIONS=detect_leaks=0 " + env + " '" + CANOPY_APP + "' " +
+                                args + " > '" + (dir_ / "stdout").string() + "' 2> '" +
+                                (dir_ / "stderr").string() + "'";
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readFile((dir_ / "stdout").string()),
             readFile((dir_ / "stderr").string())};
