@@ -167,5 +167,34 @@ TEST(WriteTables, OwnershipStatesCarryWilsonBoundsAndReachedCounts) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(WriteTables, TrackingCarriesTheTeamFiguresWhenTheTrialsHaveThem) {
+  std::vector<experiments::TrialResult> trials = threeTrials();
+  for (std::size_t i = 0; i < trials.size(); ++i) {  // team OSPA 1, 2, 3 m; held 1 everywhere
+    trials[i].team_ospa.assign(trials[i].ospa.size(), static_cast<double>(i + 1));
+    trials[i].held.assign(trials[i].ospa.size(), 1.0);
+  }
+  SweepAnalysis analysis;
+  analysis.name = "hand";
+  analysis.specs = {twoByTwo(), twoByTwo()};
+  analysis.configs = {summarise(trials, twoByTwo(), "team", {}),
+                      summarise(threeTrials(), twoByTwo(), "old", {})};
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "canopy_sweep_tracking_test";
+  std::filesystem::remove_all(dir);
+  writeTables(analysis, dir);
+  const std::string csv = readTextFile(dir / "tracking.csv").value();
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "config,step,t_s,mean_ospa_m,mean_ospa_low_m,mean_ospa_high_m,mean_trace_pos_m2,"
+            "mean_trace_pos_low_m2,mean_trace_pos_high_m2,mean_team_ospa_m,mean_team_ospa_low_m,"
+            "mean_team_ospa_high_m,mean_held,mean_held_low,mean_held_high");
+  // Step 2: OSPA and team OSPA 2 ± 2.4841377 (cut at 0), tr 4 ± 4.9682754 (cut at 0); held 1 in
+  // all three trials: no spread from three trials is too few to bound (intervals.h's rule).
+  EXPECT_NE(csv.find("\"team\",2,0.4,2,0,4.48414,4,0,8.96828,2,0,4.48414,1,-inf,inf\n"),
+            std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find("\"old\",2,0.4,2,0,4.48414,4,0,8.96828,,,,,,\n"), std::string::npos) << csv;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace canopy::analysis
