@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <unordered_map>
+#include <tuple>
 
 namespace canopy::metrics {
 namespace {
@@ -33,54 +33,50 @@ void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> 
   pairs_.clear();
   if (m_ == 0) return;
 
-  const double cp = std::pow(c_, p_);
   if (static_cast<long>(m_) * n_ <= kWholeUpTo) {  // small: one Hungarian problem, no grid
-    cost_.resize(static_cast<std::size_t>(m_) * n_);
-    for (int i = 0; i < m_; ++i) {
-      for (int j = 0; j < n_; ++j)
-        cost_[i * n_ + j] = std::pow(std::min(c_, (small[i] - large[j]).norm()), p_);  // d_c^p
-    }
-    const std::span<const int> assigned = hungarian_.solve(cost_, m_, n_);
-    for (int i = 0; i < m_; ++i) {
-      const double cost = cost_[i * n_ + assigned[i]];
-      if (cost < cp)
-        pairs_.push_back(
-            {truth_is_small_ ? i : assigned[i], truth_is_small_ ? assigned[i] : i, cost});
-    }
-    if (!truth_is_small_) {
-      std::sort(pairs_.begin(), pairs_.end(),
-                [](const Pair& a, const Pair& b) { return a.truth < b.truth; });
-    }
-    return;
+    rows_.resize(m_);
+    cols_.resize(n_);
+    std::iota(rows_.begin(), rows_.end(), 0);
+    std::iota(cols_.begin(), cols_.end(), 0);
+    solvePart(small, large);
+  } else {
+    solveByParts(small, large);
   }
+  std::sort(pairs_.begin(), pairs_.end(),
+            [](const Pair& a, const Pair& b) { return a.truth < b.truth; });
+}
 
+void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const Vec2> large) {
   // Edges: the pairs closer than c, found through a grid of cells of side c over the large set
-  // (a pair closer than c lies in neighbouring cells). Non-finite points have no edge.
-  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  // (a pair closer than c lies in neighbouring cells), kept as (cell, index) sorted by cell.
+  // Non-finite points have no edge.
   auto cellOf = [&](const Vec2& p) {
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(p.x() / c_)),
                                                  static_cast<std::int64_t>(std::floor(p.y() / c_))};
   };
   auto usable = [&](const Vec2& p) { return p.allFinite() && p.cwiseAbs().maxCoeff() < 1e15; };
+  cells_.clear();
   for (int j = 0; j < n_; ++j) {
     if (!usable(large[j])) continue;
     const auto [cx, cy] = cellOf(large[j]);
-    grid[cellKey(cx, cy)].push_back(j);
+    cells_.push_back({cellKey(cx, cy), j});
   }
-  std::vector<int> parent(static_cast<std::size_t>(m_ + n_));
-  std::iota(parent.begin(), parent.end(), 0);
+  std::sort(cells_.begin(), cells_.end());
+  parent_.resize(static_cast<std::size_t>(m_ + n_));
+  std::iota(parent_.begin(), parent_.end(), 0);
   edges_.clear();
   for (int i = 0; i < m_; ++i) {
     if (!usable(small[i])) continue;
     const auto [cx, cy] = cellOf(small[i]);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto cell = grid.find(cellKey(cx + dx, cy + dy));
-        if (cell == grid.end()) continue;
-        for (const int j : cell->second) {
+        const std::uint64_t key = cellKey(cx + dx, cy + dy);
+        auto cell = std::lower_bound(cells_.begin(), cells_.end(), std::pair{key, 0});
+        for (; cell != cells_.end() && cell->first == key; ++cell) {
+          const int j = cell->second;
           if (!((small[i] - large[j]).norm() < c_)) continue;
-          edges_.push_back({i, j});
-          parent[findRoot(parent, i)] = findRoot(parent, m_ + j);
+          edges_.push_back({0, i, j});
+          parent_[findRoot(parent_, i)] = findRoot(parent_, m_ + j);
         }
       }
     }
@@ -88,50 +84,52 @@ void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> 
 
   // Each connected component of the edge graph is its own cut-off assignment: a pair across
   // components costs c^p, as leaving both points unassigned does, so the components' optimal
-  // matchings together are optimal (see the header).
-  std::unordered_map<int, std::pair<std::vector<int>, std::vector<int>>> components;
-  std::vector<char> in_component(static_cast<std::size_t>(m_ + n_), 0);
-  for (const auto& [i, j] : edges_) {
-    auto& [rows, cols] = components[findRoot(parent, i)];
-    if (!in_component[i]) {
-      in_component[i] = 1;
-      rows.push_back(i);
+  // matchings together are optimal (see the header). Components in the order of their roots,
+  // rows and columns in index order: the same sums on every platform.
+  for (Edge& edge : edges_) edge.root = findRoot(parent_, edge.small);
+  std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) {
+    return std::tie(a.root, a.small, a.large) < std::tie(b.root, b.small, b.large);
+  });
+  for (std::size_t first = 0; first < edges_.size();) {
+    std::size_t last = first;
+    rows_.clear();
+    cols_.clear();
+    for (; last < edges_.size() && edges_[last].root == edges_[first].root; ++last) {
+      rows_.push_back(edges_[last].small);
+      cols_.push_back(edges_[last].large);
     }
-    if (!in_component[m_ + j]) {
-      in_component[m_ + j] = 1;
-      cols.push_back(j);
+    rows_.erase(std::unique(rows_.begin(), rows_.end()), rows_.end());  // sorted by the edges
+    std::sort(cols_.begin(), cols_.end());
+    cols_.erase(std::unique(cols_.begin(), cols_.end()), cols_.end());
+    solvePart(small, large);
+    first = last;
+  }
+}
+
+void CutoffAssignment::solvePart(std::span<const Vec2> small, std::span<const Vec2> large) {
+  const double cp = std::pow(c_, p_);
+  // The smaller side of the part as the Hungarian problem's rows.
+  const bool rows_small = rows_.size() <= cols_.size();
+  const std::vector<int>& r = rows_small ? rows_ : cols_;
+  const std::vector<int>& c = rows_small ? cols_ : rows_;
+  const int nr = static_cast<int>(r.size()), nc = static_cast<int>(c.size());
+  cost_.resize(static_cast<std::size_t>(nr) * nc);
+  for (int a = 0; a < nr; ++a) {
+    for (int b = 0; b < nc; ++b) {
+      const Vec2& x = rows_small ? small[r[a]] : small[c[b]];
+      const Vec2& y = rows_small ? large[c[b]] : large[r[a]];
+      cost_[static_cast<std::size_t>(a) * nc + b] =
+          std::pow(std::min(c_, (x - y).norm()), p_);  // d_c^p
     }
   }
-  std::vector<int> roots;
-  for (const auto& entry : components) roots.push_back(entry.first);
-  std::sort(roots.begin(), roots.end());  // a fixed order: the same sums on every platform
-  for (const int root : roots) {
-    auto& [rows, cols] = components[root];
-    std::sort(rows.begin(), rows.end());
-    std::sort(cols.begin(), cols.end());
-    const bool rows_small = rows.size() <= cols.size();
-    const std::vector<int>& r = rows_small ? rows : cols;
-    const std::vector<int>& c = rows_small ? cols : rows;
-    const int nr = static_cast<int>(r.size()), nc = static_cast<int>(c.size());
-    cost_.resize(static_cast<std::size_t>(nr) * nc);
-    for (int a = 0; a < nr; ++a) {
-      for (int b = 0; b < nc; ++b) {
-        const Vec2& x = rows_small ? small[r[a]] : small[c[b]];
-        const Vec2& y = rows_small ? large[c[b]] : large[r[a]];
-        cost_[static_cast<std::size_t>(a) * nc + b] = std::pow(std::min(c_, (x - y).norm()), p_);
-      }
-    }
-    const std::span<const int> assigned = hungarian_.solve(cost_, nr, nc);
-    for (int a = 0; a < nr; ++a) {
-      const double cost = cost_[static_cast<std::size_t>(a) * nc + assigned[a]];
-      if (!(cost < cp)) continue;  // at the cut-off: as good as unassigned
-      const int i = rows_small ? r[a] : c[assigned[a]];
-      const int j = rows_small ? c[assigned[a]] : r[a];
-      pairs_.push_back({truth_is_small_ ? i : j, truth_is_small_ ? j : i, cost});
-    }
+  const std::span<const int> assigned = hungarian_.solve(cost_, nr, nc);
+  for (int a = 0; a < nr; ++a) {
+    const double cost = cost_[static_cast<std::size_t>(a) * nc + assigned[a]];
+    if (!(cost < cp)) continue;  // at the cut-off: as good as unassigned
+    const int i = rows_small ? r[a] : c[assigned[a]];
+    const int j = rows_small ? c[assigned[a]] : r[a];
+    pairs_.push_back({truth_is_small_ ? i : j, truth_is_small_ ? j : i, cost});
   }
-  std::sort(pairs_.begin(), pairs_.end(),
-            [](const Pair& a, const Pair& b) { return a.truth < b.truth; });
 }
 
 double CutoffAssignment::penalised(double penalty_per_point) const {

@@ -2,6 +2,7 @@
 // OSPA, the optimal sub-pattern assignment distance between a set of true positions and a set
 // of estimates (Schuhmacher, Vo & Vo 2008), the tracking-quality metric of summary.json, and the
 // assignment it shares with GOSPA (metrics/gospa.h).
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -52,13 +53,25 @@ class CutoffAssignment {
 
  private:
   double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
+  // The part small[rows_] × large[cols_]: its pairs closer than c join pairs_.
+  void solvePart(std::span<const Vec2> small, std::span<const Vec2> large);
+  // Every connected component of the pairs closer than c, each by solvePart().
+  void solveByParts(std::span<const Vec2> small, std::span<const Vec2> large);
 
   double c_, p_;
   int m_ = 0, n_ = 0;
   bool truth_is_small_ = true;  // the truth is the smaller set (rows of the assignment)
   agents::fusion::Hungarian hungarian_;
-  std::vector<double> cost_;                // one component's row-major costs, reused
-  std::vector<std::pair<int, int>> edges_;  // (small, large) closer than c
+  // Buffers kept between solves (a run solves one or more per step).
+  std::vector<double> cost_;                          // one part's row-major costs
+  std::vector<std::pair<std::uint64_t, int>> cells_;  // (grid cell, large index), sorted
+  std::vector<int> parent_;                           // union-find over small, then large
+  struct Edge {
+    int root = 0;  // its component
+    int small = 0, large = 0;
+  };
+  std::vector<Edge> edges_;       // pairs closer than c
+  std::vector<int> rows_, cols_;  // one part's small and large indices
   std::vector<Pair> pairs_;
 };
 
