@@ -37,6 +37,10 @@ class CommGraph {
   /// Id of the link from i's first neighbour to i.
   int firstLink(int i) const { return first_[i]; }
   bool linked(int i, int j) const;
+  /// Every agent hears every other (as range = ∞ gives).
+  bool complete() const {
+    return neighbour_.size() == self_weight_.size() * (self_weight_.size() - 1);
+  }
   /// Connected components, numbered 0, 1, ... in the order of their smallest member.
   int component(int i) const { return component_[i]; }
   int componentCount() const { return component_count_; }
