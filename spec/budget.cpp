@@ -124,6 +124,11 @@ double visibleTargetsBound(const ScenarioSpec& spec) {
 
 namespace {
 
+// Planning: a swarm's iterations per stall window (pso.stall_iterations), and the entries the
+// terminal penalty searches per track with one free UAV (spec/budget.cpp, estimateWork).
+constexpr double kIterationsPerStallWindow = 3.0;
+constexpr double kPenaltyEntriesSearched = 8.0;
+
 // The fastest any target's scripted path moves (m/s): a constant velocity, or a segment's.
 double fastestTarget(const ScenarioSpec& spec) {
   double fastest = 0.0;  // m/s
@@ -229,11 +234,20 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     const bool blocks = p.algorithm != agents::PlannerAlgorithm::sma &&
                         p.joint_search == agents::JointSearch::block_coordinate;
     const double swarms_per_call = blocks ? p.joint_rounds * uavs : 1.0;
-    // Upper bound: every swarm runs to max_iterations (the stall rule usually stops it sooner).
-    const double evaluations = epochs * uavs * swarms_per_call * particles * p.pso.max_iterations;
-    // A cost evaluation runs the recursion of every track in scope over H·S samples, and the
-    // terminal penalty charges each uncovered one among the UAVs in scope. Scope "team": every
-    // track and UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
+    // The iterations a swarm runs: the stall rule stops it after stall_iterations without a
+    // relative gain of ftol, which took 1.2–2.5 × stall_iterations on average in every measured
+    // run (bench/RESULTS.md, "Work budget at swarm size"); 3 × stall_iterations estimates them,
+    // max_iterations bounds them.
+    const double iterations = std::min(static_cast<double>(p.pso.max_iterations),
+                                       kIterationsPerStallWindow * p.pso.stall_iterations);
+    const double evaluations = epochs * uavs * swarms_per_call * particles * iterations;
+    // A cost evaluation runs the recursion of every track in scope over H·S samples against each
+    // free UAV, and the terminal penalty charges each uncovered track among the UAVs in scope:
+    // all of them when every UAV is free (global_best, local_best); with one free UAV, the
+    // plain loop looks at each of fewer than eight and, from eight fixed ones on, the replay of
+    // the fixed charges and the nearest-first search look at a few (agents/planning/
+    // terminal_penalty.cpp), estimated as kPenaltyEntriesSearched. Scope "team": every track and
+    // UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
     // reach radii R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the
     // larger of the team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean
     // density (people cluster), and the teammates within 2R likewise.
@@ -248,7 +262,11 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
           scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));
       scope_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);
     }
-    work.planning_units = evaluations * p.horizon * p.cost_substeps * scope_targets * scope_uavs;
+    const double free_uavs = p.algorithm != agents::PlannerAlgorithm::sma && !blocks ? uavs : 1.0;
+    const double penalty_entries =
+        free_uavs > 1.0 ? scope_uavs : std::min(scope_uavs, kPenaltyEntriesSearched);
+    work.planning_units = evaluations * scope_targets *
+                          (p.horizon * p.cost_substeps * free_uavs + penalty_entries);
   }
   return work;
 }
@@ -315,8 +333,9 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
   require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
           "fusion units per trial (steps × rounds × UAVs × neighbours in comm_range × targets)");
   require(spec, "planner.pso", work.planning_units, limits.planning_units,
-          "planning units per trial (epochs × UAVs × particles × max_iterations × horizon × "
-          "cost_substeps × targets in scope × UAVs in scope)");
+          "planning units per trial (epochs × UAVs × particles × iterations (max_iterations, or "
+          "3 × stall_iterations if fewer) × targets in scope × (horizon × cost_substeps × free "
+          "UAVs + UAVs the terminal penalty searches))");
 }
 
 }  // namespace canopy::spec

@@ -151,9 +151,44 @@ TEST(WorkBudget, ReachScopeAndCommRangeCountTheNeighbourhood) {
   const double pi = 3.14159265358979323846;
   // Neighbours within 100 m: 1 + 8·π·100²/10⁶.
   EXPECT_NEAR(work.fusion_units, 5.0 * 3 * 8 * (1.0 + 8 * pi * 1e4 / 1e6) * 8, 1e-9);
-  // Tracks in scope: 4 × max(1, 8/8, 8·disc) = 4; UAVs: 1 + 4·8·disc.
+  // Tracks in scope: 4 × max(1, 8/8, 8·disc) = 4; UAVs: 1 + 4·8·disc, each searched by the
+  // terminal penalty (fewer than 8). 7 iterations: max_iterations < 3 × stall_iterations (150).
   const double disc = 900.0 * pi / 1e6;
-  EXPECT_NEAR(work.planning_units, 3.0 * 8 * 20 * 7 * 2 * 1 * 4.0 * (1.0 + 32.0 * disc), 1e-6);
+  EXPECT_NEAR(work.planning_units, 3.0 * 8 * 20 * 7 * 4.0 * (2 * 1 + (1.0 + 32.0 * disc)), 1e-6);
+}
+
+// Planning is estimated by the iterations a swarm runs, 3 × stall_iterations (the stall rule),
+// bounded by max_iterations: the units follow stall_iterations until max_iterations caps them.
+// And a 64-UAV team over 256 people written with the defaults (team scope, 20 s) is admitted.
+TEST(WorkBudget, PlanningFollowsTheStallRuleAndAdmitsASwarmWrittenWithTheDefaults) {
+  auto planning = [](const std::string& pso) {
+    return estimateWork(loadScenarioText(
+                            R"({"aoi": [0, 0, 100, 100], "uavs": [{"start": [10, 10]}, {"start": [20, 10]}],
+                                "targets": [{"path": {"start": [30, 30], "velocity": [1, 0]}}],
+                                "planner": {"algorithm": "sma", "pso": )" + pso + "}}",
+                            "pso.json"))
+        .planning_units;
+  };
+  const double base = planning(R"({"stall_iterations": 50})");
+  EXPECT_DOUBLE_EQ(planning(R"({"stall_iterations": 100})"), 2 * base);
+  EXPECT_DOUBLE_EQ(planning(R"({"stall_iterations": 100, "max_iterations": 150})"), base);
+  EXPECT_DOUBLE_EQ(planning(R"({"stall_iterations": 50, "max_iterations": 75})"), base / 2);
+  // 21 epochs × 64 UAVs × 100 particles × 150 iterations × 256 tracks × (5 + 8) ≈ 6.7e10.
+  std::string uavs, targets;
+  for (int i = 0; i < 64; ++i) {
+    uavs += std::string(i ? "," : "") + R"({"start": [)" + std::to_string(50 + 100 * (i % 8)) + ", " +
+            std::to_string(50 + 100 * (i / 8)) + R"(], "fov": {"size": [20, 20]}})";
+  }
+  for (int j = 0; j < 256; ++j) {
+    targets += std::string(j ? "," : "") + R"({"path": {"start": [)" +
+               std::to_string(45 + 100 * (j % 64 % 8)) + ", " + std::to_string(45 + 100 * (j % 64 / 8)) +
+               R"(], "velocity": [1, 0]}})";
+  }
+  const ScenarioSpec swarm = loadScenarioText(
+      R"({"aoi": [0, 0, 800, 800], "clock": {"duration": 20}, "uavs": [)" + uavs + R"(], "targets": [)" +
+          targets + R"(], "planner": {"algorithm": "sma", "horizon": 5}})",
+      "swarm.json");
+  EXPECT_NEAR(estimateWork(swarm).planning_units, 21.0 * 64 * 100 * 150 * 256 * (5 + 8), 1.0);
 }
 
 // The record-size estimate is an upper bound, and not a loose one: measured by running three
@@ -196,7 +231,8 @@ TEST(WorkBudget, EstimatesMatchTheirFormulasOnASmallScenario) {
   // events of depth min(m, 64) = 4.
   EXPECT_DOUBLE_EQ(work.tracking_units, 11.0 * 2 * (4 * 4 * 1001 + 100 * 4));   // 361 152
   EXPECT_DOUBLE_EQ(work.fusion_units, 11.0 * 5 * 2 * 2 * 3);                    // 660
-  EXPECT_DOUBLE_EQ(work.planning_units, 3.0 * 2 * 1 * 20 * 7 * 2 * 1 * 3 * 2);  // 10 080
+  // 3 epochs × 2 UAVs × 20 particles × 7 iterations × 3 tracks × (H·S = 2 + 2 UAVs searched)
+  EXPECT_DOUBLE_EQ(work.planning_units, 3.0 * 2 * 20 * 7 * 3 * (2 * 1 + 2));  // 10 080
 }
 
 // A limit is exceeded by the field that drives it, and --budget (the scale) lifts it.
@@ -216,7 +252,8 @@ TEST(WorkBudget, ExceedingALimitNamesTheFieldAndTheScaleLiftsIt) {
     EXPECT_NE(e.message().find("expected at most 2.0e+11 planning units"), std::string::npos)
         << e.message();
   }
-  // 101 epochs × 2 UAVs × 500 000 particles × 10⁶ iterations × 50 × 1 × 1 × 2 ≈ 1.0e19.
+  // 101 epochs × 2 UAVs × 500 000 particles × 150 iterations (3 × stall_iterations) × 1 track ×
+  // (50 + 2) ≈ 7.9e11.
   LoadOptions generous;
   generous.budget_scale = 1e9;
   EXPECT_NO_THROW(loadScenarioText(text, "days.json", generous));
@@ -270,7 +307,8 @@ std::vector<Row> rows() {
       {"fusion", scenario(256, 1, R"(, "fusion": {"rounds": 1000})", 1000), "", "units"},
       // Planning: a swarm of 10⁴ particles per step for 1000 iterations.
       {"planning", scenario(2, 1, R"(, "planner": {"algorithm": "sma", "horizon": 50,
-          "pso": {"particles_per_step": 10000, "max_iterations": 1000000}})"),
+          "pso": {"particles_per_step": 10000, "max_iterations": 1000000,
+                  "stall_iterations": 1000000}})"),
        "planner", "planning units"},
       // The record: 10⁵ targets written every step.
       {"record", scenario(1, 100000, "", 20), "", "record.jsonl"},
