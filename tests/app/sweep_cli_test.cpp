@@ -124,3 +124,26 @@ TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
 }
 
 }  // namespace
+
+namespace {
+
+// A built-in sweep runs by its name, as scenarios do (issue 51: "no such file"); one shard of
+// one trial keeps it short. An unknown name exits with 2 and lists the built-in sweeps.
+TEST(SweepCommand, ABuiltInSweepRunsByName) {
+  const fs::path dir = fresh("sweep_by_name");
+  const canopy::cli_test::Outcome ran = canopy::cli_test::runIn(
+      fs::temp_directory_path(), "sweep handover_horizons --out " + dir.string() +
+                                     " --shard 0/40 --jobs 1");
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_NE(ran.out.find("handover_horizons: shard 0/40 ran 1 trials"), std::string::npos)
+      << ran.out;
+  EXPECT_EQ(countTrials(dir), 1);
+  const canopy::cli_test::Outcome unknown = canopy::cli_test::runIn(
+      fs::temp_directory_path(), "sweep handover_horizon --out " + dir.string() + "_x");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("no built-in sweep of that name"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("handover_horizons"), std::string::npos) << unknown.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
