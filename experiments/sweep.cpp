@@ -279,9 +279,9 @@ fs::path resolveSweep(const std::string& sweep) {
   }
   std::string names;
   for (const std::string& name : builtinSweeps()) names += (names.empty() ? "" : ", ") + name;
-  throw spec::ScenarioError(printable(sweep, 200), "",
-                            "no such sweep file, and no built-in sweep of that name (built-in: " +
-                                names + ")");
+  throw spec::ScenarioError(
+      printable(sweep, 200), "",
+      "no such sweep file, and no built-in sweep of that name (built-in: " + names + ")");
 }
 
 SweepSpec loadSweep(const std::string& path, const spec::LoadOptions& load) {

@@ -183,8 +183,7 @@ CoverageComparison compareCoverageCsv(const std::string& expected, const std::st
       // another --size, and every row would differ (issue 51: "151 of 151 rows outside").
       out.bad_input = expected_name + ": rendered at another size (aoi_px " +
                       std::string(e[aoi_column]) + ", the run's coverage " +
-                      std::string(a[aoi_column]) +
-                      "): pass the --size the golden was made with";
+                      std::string(a[aoi_column]) + "): pass the --size the golden was made with";
       return out;
     }
     double aoi = 0.0;

@@ -132,8 +132,8 @@ namespace {
 TEST(SweepCommand, ABuiltInSweepRunsByName) {
   const fs::path dir = fresh("sweep_by_name");
   const canopy::cli_test::Outcome ran = canopy::cli_test::runIn(
-      fs::temp_directory_path(), "sweep handover_horizons --out " + dir.string() +
-                                     " --shard 0/40 --jobs 1");
+      fs::temp_directory_path(),
+      "sweep handover_horizons --out " + dir.string() + " --shard 0/40 --jobs 1");
   EXPECT_EQ(ran.code, 0) << ran.err;
   EXPECT_NE(ran.out.find("handover_horizons: shard 0/40 ran 1 trials"), std::string::npos)
       << ran.out;
