@@ -163,9 +163,17 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
           "steps",
           [](py::handle self) {
             const PySimulation& s = simulationOf(self);
+            return s.sim().spec().steps() + 1;
+          },
+          "The steps a run records, k = 0..K (K + 1: as `canopy validate` counts them and "
+          "record.jsonl holds lines).")
+      .def_property_readonly(
+          "last_step",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
             return s.sim().spec().steps();
           },
-          "K: the last step (states k = 0..K).")
+          "K = duration / dt: the last step, step_index when the run is done.")
       .def_property_readonly("dt",
                              [](py::handle self) {
                                const PySimulation& s = simulationOf(self);
