@@ -86,12 +86,13 @@ std::vector<std::string> runWarnings(const std::string& summary_json) {
     const double stuck = number(uav, "longest_contact_steps");
     if (dt > 0.0 && stuck * dt >= kStuckSeconds) {
       const double from = number(uav, "longest_contact_from_step");
-      warnings.push_back(
-          printable(uav.at("name").get<std::string>(), 40) +
-          format(": against something solid for %g steps in a row (%g s from t = %g s): stuck? "
-                 "(summary.json: uavs[].longest_contact_steps; what it touched: record.jsonl "
-                 "uavs[].contacts; a scripted path into a wall: canopy validate)",
-                 stuck, stuck * dt, from * dt));
+      warnings.push_back(printable(uav.at("name").get<std::string>(), 40) +
+                         format(": against something solid for %g steps in a row (%g s from "
+                                "t = %g s): stuck?",
+                                stuck, stuck * dt, from * dt) +
+                         " (summary.json: uavs[].longest_contact_steps; what it touched: "
+                         "record.jsonl uavs[].contacts; a scripted path into a wall: canopy "
+                         "validate)");
     }
   }
   for (const Json& uav : summary.at("uavs")) {
