@@ -80,10 +80,7 @@ int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesys
 
 int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                     int jobs) {
-  if (!experiments::mpiAvailable())
-    usageError("--mpi",
-               "this canopy was built without MPI: install the Debian packages "
-               "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
+  if (!experiments::mpiAvailable()) usageError("--mpi", experiments::mpiProblem());
   checkSweepOutputs(sweep, out);
   return experiments::runSweepMpi(sweep, out, jobs);
 }

@@ -1,8 +1,9 @@
-#include "experiments/sweep_mpi.h"
-
-#include <stdexcept>
-
-#if CANOPY_HAVE_MPI
+// The MPI half of experiments/sweep_mpi.h, a module of its own (canopy_mpi, a shared object
+// loaded by sweep_mpi.cpp with dlopen on the first `--mpi`), so that the `canopy` program does not
+// link libmpi (issue 51): a run that never asks for MPI neither loads nor initialises it. Its
+// references to canopy's own functions (prepareSweep, runTrials, …) are resolved against the
+// program, which exports them (ENABLE_EXPORTS). Its entry points are the extern "C" functions at
+// the end; everything else is internal, so that no name of it is taken for the program's.
 #include <mpi.h>
 
 #include <cstdint>
@@ -10,13 +11,13 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <vector>
-#endif
+
+#include "experiments/sweep.h"
+#include "experiments/sweep_mpi.h"
 
 namespace canopy::experiments {
-
-#if CANOPY_HAVE_MPI
-
 namespace {
 
 void check(int code, const char* what) {
@@ -31,13 +32,7 @@ bool everyoneSucceeded(bool mine) {
   return all == 1;
 }
 
-}  // namespace
-
-bool mpiAvailable() {
-  return true;
-}
-
-const MpiWorld& mpiWorld() {
+const MpiWorld& theWorld() {
   static const MpiWorld world = [] {
     int provided = 0;
     check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided), "MPI_Init_thread");
@@ -52,9 +47,9 @@ const MpiWorld& mpiWorld() {
   return world;
 }
 
-int runSweepMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out_dir,
-                int jobs) {
-  const MpiWorld& world = mpiWorld();
+int runOverRanks(const experiments::SweepSpec& sweep, const std::filesystem::path& out_dir,
+                 int jobs) {
+  const MpiWorld& world = canopy::experiments::theWorld();
   // Rank 0 checks the directory, writes its manifests and lists the missing trials; the others
   // load the same configurations (their scenarios) without writing, and take rank 0's list.
   experiments::PreparedSweep prepared;
@@ -118,30 +113,34 @@ int runSweepMpi(const experiments::SweepSpec& sweep, const std::filesystem::path
   return ran;
 }
 
-int sumOverRanks(int value) {
-  int sum = 0;
-  check(MPI_Allreduce(&value, &sum, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-  return sum;
+int sumOf(int value) {
+  int total = 0;
+  check(MPI_Allreduce(&value, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return total;
 }
 
-#else
-
-bool mpiAvailable() {
-  return false;
-}
-
-const MpiWorld& mpiWorld() {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-int runSweepMpi(const experiments::SweepSpec&, const std::filesystem::path&, int) {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-int sumOverRanks(int) {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-#endif
-
+}  // namespace
 }  // namespace canopy::experiments
+
+// The entry points sweep_mpi.cpp looks up (exceptions pass through them: one toolchain builds
+// both sides).
+extern "C" {
+
+__attribute__((visibility("default"))) void canopy_mpi_world(int* rank, int* size) {
+  const canopy::experiments::MpiWorld& w = canopy::experiments::theWorld();
+  *rank = w.rank;
+  *size = w.size;
+}
+
+__attribute__((visibility("default"))) int canopy_mpi_run_sweep(const void* sweep,
+                                                                const void* out_dir, int jobs) {
+  return canopy::experiments::runOverRanks(
+      *static_cast<const canopy::experiments::SweepSpec*>(sweep),
+      *static_cast<const std::filesystem::path*>(out_dir), jobs);
+}
+
+__attribute__((visibility("default"))) int canopy_mpi_sum(int value) {
+  return canopy::experiments::sumOf(value);
+}
+
+}  // extern "C"
