@@ -114,12 +114,30 @@ TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
   ASSERT_EQ(run("sweep " + file.string() + " --out " + dir.string() + " --jobs 2"), 0);
   ASSERT_EQ(run("analyze " + dir.string()), 0);
   const fs::path map = dir / "analysis" / "heatmap_horizon_vs_v_max";
-  for (const char* extension : {".csv", ".svg", ".png"})
+  for (const char* extension : {".csv", ".svg", ".pdf", ".png"})
     EXPECT_TRUE(fs::exists(map.string() + extension)) << extension;
+  // Every figure also as PDF for a paper (issue 51), and no CSV field is ever inf: two trials per
+  // configuration leave some intervals unbounded, whose ends are empty fields.
+  int pdfs = 0, csvs = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "analysis")) {
+    if (entry.path().extension() == ".svg") {
+      fs::path pdf = entry.path();
+      pdf.replace_extension(".pdf");
+      ASSERT_TRUE(fs::exists(pdf)) << pdf;
+      EXPECT_EQ(slurp(pdf).rfind("%PDF-", 0), 0u) << pdf;
+      ++pdfs;
+    } else if (entry.path().extension() == ".csv") {
+      EXPECT_EQ(slurp(entry.path()).find("inf"), std::string::npos) << entry.path();
+      ++csvs;
+    }
+  }
+  EXPECT_GE(pdfs, 3);  // the map, the coverage curves and a Sankey diagram per configuration
+  EXPECT_GE(csvs, 6);
   const std::string csv = slurp(map.string() + ".csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // the header and 2 × 2 cells
   ASSERT_EQ(run("analyze " + dir.string() + " --out " + (dir / "again").string()), 0);
   EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.svg"), slurp(map.string() + ".svg"));
+  EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.pdf"), slurp(map.string() + ".pdf"));
   EXPECT_EQ(run("analyze " + dir.string() + " --state nonsense"), 2);
 }
 
