@@ -226,7 +226,8 @@ class VectorEnv(_VectorEnvBase):
         return tuple(self._core.render(i, *self.render_size) for i in range(self.num_envs))
 
     def close_extras(self, **kwargs):
-        self.single_env.close()
+        if hasattr(self, "single_env"):  # not when __init__ refused its arguments
+            self.single_env.close()
         self._started = False
 
     def __len__(self):

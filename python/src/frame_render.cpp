@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "render/frame_observer.h"
 #include "render/frame_view.h"
 #include "render/viewport.h"
 #include "sim/step_record.h"
