@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "core/nearest_word.h"
 #include "core/printable.h"
 #include "core/random.h"
 #include "core/text_file.h"
@@ -277,11 +278,14 @@ fs::path resolveSweep(const std::string& sweep) {
     for (const fs::path& candidate : {dir / sweep, dir / (sweep + ".json")})
       if (fs::is_regular_file(candidate, error)) return candidate;
   }
+  const std::vector<std::string> builtin = builtinSweeps();
   std::string names;
-  for (const std::string& name : builtinSweeps()) names += (names.empty() ? "" : ", ") + name;
-  throw spec::ScenarioError(
-      printable(sweep, 200), "",
-      "no such sweep file, and no built-in sweep of that name (built-in: " + names + ")");
+  for (const std::string& name : builtin) names += (names.empty() ? "" : ", ") + name;
+  const std::string guess = nearestWord(sweep, builtin);
+  throw spec::ScenarioError(printable(sweep, 200), "",
+                            "no such sweep file, and no built-in sweep of that name" +
+                                (guess.empty() ? "" : "; did you mean " + guess + "?") +
+                                " (built-in: " + names + ")");
 }
 
 SweepSpec loadSweep(const std::string& path, const spec::LoadOptions& load) {

@@ -160,7 +160,7 @@ TEST(SweepCommand, ABuiltInSweepRunsByName) {
       fs::temp_directory_path(), "sweep handover_horizon --out " + dir.string() + "_x");
   EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("no built-in sweep of that name"), std::string::npos) << unknown.err;
-  EXPECT_NE(unknown.err.find("handover_horizons"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("did you mean handover_horizons?"), std::string::npos) << unknown.err;
   fs::remove_all(dir);
 }
 
