@@ -65,9 +65,11 @@ except ImportError:  # not installed (not a Debian package), or a Gymnasium befo
 
 def _random_generator(seed):
     """As gymnasium.utils.seeding.np_random: a PCG64 generator and the seed it was made from (drawn
-    when None)."""
+    when None; -1 for a sequence of seeds, which no one integer names)."""
     sequence = np.random.SeedSequence(seed)
-    return np.random.Generator(np.random.PCG64(sequence)), int(sequence.entropy)
+    entropy = sequence.entropy
+    return (np.random.Generator(np.random.PCG64(sequence)),
+            int(entropy) if np.ndim(entropy) == 0 else -1)
 
 
 def autoreset_value(mode):

@@ -158,7 +158,7 @@ class VectorEnv(_VectorEnvBase):
             if np.ndim(seed) == 0:
                 self._np_random, self._np_random_seed = _random_generator(every[0])
             else:
-                self._np_random, self._np_random_seed = _random_generator(every)[0], -1
+                self._np_random, self._np_random_seed = _random_generator(every)
         self._core.reset([int(i) for i in which], seeds)
         self._seeds[which] = seeds
         self._autoreset[which] = False

@@ -78,6 +78,8 @@ def test_the_base_classes_attributes():
     first = vec.np_random.integers(1 << 30)
     vec.reset(seed=9)
     assert vec.np_random.integers(1 << 30) == first  # reset(seed) reseeds it
+    vec.reset(seed=[5, 2**64 - 1])  # one seed per environment: no one integer names the stream
+    assert vec.np_random_seed == -1 and isinstance(vec.np_random, np.random.Generator)
     assert repr(vec).startswith("VectorEnv(")
     vec.close()
     assert vec.closed
