@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/figure_pdf.h"
 #include "core/text_file.h"
 #include "render/canvas.h"
 #include "render/image.h"
@@ -62,6 +63,7 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
 
 void writeFigure(const Figure& figure, const std::filesystem::path& stem) {
   writeFileAtomically(stem.string() + ".svg", toSvg(figure));
+  writeFileAtomically(stem.string() + ".pdf", toPdf(figure));
   writeFigurePng(figure, stem.string() + ".png");
 }
 

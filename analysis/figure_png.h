@@ -9,7 +9,8 @@ namespace canopy::analysis {
 /// Draws `figure` and writes it as a PNG; throws std::runtime_error when GL or the file fails.
 void writeFigurePng(const Figure& figure, const std::filesystem::path& path);
 
-/// Writes `figure` as <stem>.svg and <stem>.png; throws std::runtime_error when a file fails.
+/// Writes `figure` as <stem>.svg, <stem>.pdf (figure_pdf.h) and <stem>.png; throws
+/// std::runtime_error when a file fails.
 void writeFigure(const Figure& figure, const std::filesystem::path& stem);
 
 }  // namespace canopy::analysis

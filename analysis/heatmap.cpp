@@ -200,8 +200,8 @@ std::string heatmapCsv(const Heatmap& map) {
         continue;
       }
       const Estimate& e = cell->value;
-      csv << cell->trials << ',' << formatted(e.value) << ',' << formatted(e.ci.low) << ','
-          << formatted(e.ci.high) << ',' << formatted(e.ci.width()) << ",\"" << cell->detail
+      csv << cell->trials << ',' << csvNumber(e.value) << ',' << csvNumber(e.ci.low) << ','
+          << csvNumber(e.ci.high) << ',' << csvNumber(e.ci.width()) << ",\"" << cell->detail
           << "\"\n";
     }
   }

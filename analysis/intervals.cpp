@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <sstream>
 
 namespace canopy::analysis {
 
@@ -133,6 +134,13 @@ Estimate boundedMeanOf(const std::vector<double>& values, double lo, double hi) 
   SampleMoments sample;
   for (const double x : values) sample.add(x);
   return {sample.mean(), boundedMeanInterval(sample, lo, hi), sample.count()};
+}
+
+std::string csvNumber(double x) {
+  if (!std::isfinite(x)) return {};
+  std::ostringstream text;
+  text << x;
+  return text.str();
 }
 
 }  // namespace canopy::analysis

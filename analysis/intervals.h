@@ -2,6 +2,7 @@
 // 95 % confidence intervals for the numbers `analyze` and the report print: the Wilson score
 // interval for a proportion k/n, the Student-t interval for a mean of independent trials, and a
 // Student-t interval on the logit scale for a mean of values that lie in a known range.
+#include <string>
 #include <vector>
 
 namespace canopy::analysis {
@@ -78,5 +79,10 @@ Estimate proportion(int k, int n);
 Estimate meanOf(const std::vector<double>& values);
 /// The mean of `values`, each in [lo, hi], with boundedMeanInterval.
 Estimate boundedMeanOf(const std::vector<double>& values, double lo, double hi);
+
+/// `x` as a CSV field in the stream's default format, or an empty field when it is not finite:
+/// the ends of an interval too few trials bound are ±inf, which pandas and matplotlib would read
+/// as numbers and draw as bands of infinite height (docs/output-formats.md).
+std::string csvNumber(double x);
 
 }  // namespace canopy::analysis

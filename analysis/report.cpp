@@ -182,14 +182,16 @@ void writeDifferences(std::ostream& md) {
         "It is also run with the paper's single (global-best) swarm and with a local-best (ring) "
         "swarm over the same plan with warm starts and restarts, reported beside it.\n";
   md << "- Joint Effect and Occlusion Sharing run with two decision periods: every 1 s "
-        "(algorithms.md's reading of the paper's receding horizon) and at every 0.2 s "
+        "(the first design's reading of the paper's receding horizon, docs/design-notes.md, "
+        "\"Planning options\") and at every 0.2 s "
         "simulation step with the actions still 1 s long (\"SMA-NBO generates a plan … at "
         "every time step\", planner.replan_period, docs/design-notes.md). "
         "The paper does not say which, so both are reported. "
         "Decided every 1 s, the first plan that leaves I hidden is made at 2.0 s; decided at "
         "every step, the one made at 1.4 s already sees I hidden one action ahead and leaves "
         "(tests PaperScenarioCosts.*JointEffect*).\n";
-  md << "- m-Ownership uses the steps k … k + m − 1 (algorithms.md §7); the paper's definition "
+  md << "- m-Ownership uses the steps k … k + m − 1 (docs/design-notes.md, \"Behaviour "
+        "analysis\"); the paper's definition "
         "reads h = 0 … m, one step more. "
         "Near the end of a trial the last full window decides M_k, so that M_L is defined.\n";
   md << "- Occlusion_Aware windows are each occluded interval with a margin of h = 1 s on both "
@@ -201,7 +203,8 @@ void writeDifferences(std::ostream& md) {
         "the same joint plan. "
         "With independent streams the swarm's noise alone made the two agents pick incompatible "
         "joint plans.\n";
-  md << "- The reference simulator's bugs are not reproduced (algorithms.md §8), notably its "
+  md << "- The reference simulator's bugs are not reproduced (docs/design-notes.md, "
+        "\"Algorithms\"), notably its "
         "Dec-POMDP plans that were never applied and its truth noise drawn from 0.5·R.\n\n";
 }
 

@@ -30,7 +30,8 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
   md << "## Occlusion awareness: Joint Effect and Occlusion Sharing\n\n";
   md << "Mean number of footprints on the occluded trajectory while it is hidden (wasted "
         "coverage), and the frequency of Occlusion_Aware (margin h = 1 s), with SMA-NBO, H = 5, "
-        "per occlusion map and decision period: every 1 s (algorithms.md) or at every 0.2 s "
+        "per occlusion map and decision period: every 1 s (the first design's, "
+        "docs/design-notes.md) or at every 0.2 s "
         "step with 1 s actions (the paper's \"generates a plan … at every time step\"; "
         "docs/design-notes.md, planner.replan_period).\n\n";
   md << "In brackets the 95 % interval: for the coverage, Student t over the trials' own means "
@@ -47,8 +48,8 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
            << r.analysis.specs.front().targets[o.target].name << " | "
            << num(o.hidden.first * s.dt, "%.1f") << "–" << num(o.hidden.last * s.dt, "%.1f")
            << " s | " << axisText(s, "planner.occlusion_map") << " | " << decisionsOf(s) << " | "
-           << o.trials << " | " << numberWithInterval(s.coverageOver(o.target, o.hidden))
-           << " | " << percentWithInterval(o.awareEstimate()) << " | "
+           << o.trials << " | " << numberWithInterval(s.coverageOver(o.target, o.hidden)) << " | "
+           << percentWithInterval(o.awareEstimate()) << " | "
            << (o.with_event ? percentWithInterval(o.awareGivenEventEstimate()) : "—") << " ("
            << o.with_event << ") |\n";
       }

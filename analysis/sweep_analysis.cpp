@@ -49,11 +49,10 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-// "value,low,high" in the stream's default format (±inf where the interval is unbounded).
+// "value,low,high" in the stream's default format (empty low and high where too few trials
+// bound the interval).
 std::string estimate(const Estimate& e) {
-  std::ostringstream text;
-  text << e.value << ',' << e.ci.low << ',' << e.ci.high;
-  return text.str();
+  return csvNumber(e.value) + ',' + csvNumber(e.ci.low) + ',' + csvNumber(e.ci.high);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ class Validate : public Command {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     addLoadOptions(o, load_);
     o.add_flag("--strict", strict_,
-               "treat warnings as errors (exit 2): a target's scripted path into a trunk or wall");
+               "treat warnings as errors (exit 2): a target's or ground robot's scripted path "
+               "into a trunk or wall");
   }
   int run() override;
 
@@ -56,7 +57,7 @@ int Validate::run() {
                  printable(crossings[i].message, 400).c_str());
   }
   if (crossings.size() > kShown) {
-    std::fprintf(stderr, "%s: %s: … and %zu more target paths into a trunk or wall\n",
+    std::fprintf(stderr, "%s: %s: … and %zu more scripted paths into a trunk or wall\n",
                  printable(spec.file.string(), 200).c_str(), kind, crossings.size() - kShown);
   }
   if (strict_ && !crossings.empty()) return kExitUsage;

@@ -80,10 +80,7 @@ int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesys
 
 int runSweepOverMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out,
                     int jobs) {
-  if (!experiments::mpiAvailable())
-    usageError("--mpi",
-               "this canopy was built without MPI: install the Debian packages "
-               "libopenmpi-dev and openmpi-bin, then rebuild (./canopy does both)");
+  if (!experiments::mpiAvailable()) usageError("--mpi", experiments::mpiProblem());
   checkSweepOutputs(sweep, out);
   return experiments::runSweepMpi(sweep, out, jobs);
 }
@@ -121,7 +118,7 @@ class Sweep : public Command {
                 "Monte Carlo trials of a sweep file on a thread pool, a shard or MPI ranks; "
                 "resumable.") {
     CLI::App& o = options();
-    o.add_option("SWEEP.json", file_, "the sweep file");
+    o.add_option("SWEEP.json", file_, "the sweep file, or a built-in sweep's name");
     addOutputDir(o, "--out", out_, "the sweep's folder (resumable)")->default_str("required");
     addValue(o, "--jobs", "N", jobs_, integerIn(1, 1024), "trials run at once")
         ->default_str("the number of cores");
@@ -153,7 +150,8 @@ int Sweep::run() {
   }
   if (file_.empty() || out_.empty()) usageError("sweep", "expected SWEEP.json and --out DIR");
   if (mpi_ && !shard_.whole()) usageError("--mpi", "expected either --mpi or --shard, not both");
-  const experiments::SweepSpec sweep = experiments::loadSweep(file_, load_);
+  const experiments::SweepSpec sweep =
+      experiments::loadSweep(experiments::resolveSweep(file_).string(), load_);
   const auto start = std::chrono::steady_clock::now();
   const int ran =
       mpi_ ? runSweepOverMpi(sweep, out_, jobs_) : runSweepWithProgress(sweep, out_, jobs_, shard_);

@@ -5,6 +5,9 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 get_property(canopy_libraries GLOBAL PROPERTY CANOPY_LIBRARIES)
+# Building the program builds every installed library, so that `cmake --install` works right
+# after the README's first command (tests/app/install_after_first_command_test.py).
+add_dependencies(canopy ${canopy_libraries})
 # canopy_warnings carries only our warning flags; it is linked privately but a static library's
 # private links still appear in the export.
 set_target_properties(canopy_warnings PROPERTIES EXPORT_NAME warnings)

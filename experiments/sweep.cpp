@@ -7,11 +7,14 @@
 #include <map>
 #include <set>
 
+#include "core/nearest_word.h"
 #include "core/printable.h"
 #include "core/random.h"
 #include "core/text_file.h"
 #include "spec/budget.h"
+#include "spec/error.h"
 #include "spec/json_reader.h"
+#include "spec/loader.h"
 
 namespace canopy::experiments {
 namespace fs = std::filesystem;
@@ -250,6 +253,39 @@ SweepSpec loadSweepText(const std::string& text, const std::string& file,
   effective["seed"] = sweep.seed;
   sweep.effective_json = effective.dump(2);
   return sweep;
+}
+
+std::vector<std::string> builtinSweeps() {
+  std::vector<std::string> names;
+  std::error_code error;
+  const fs::path dir = spec::builtinScenarioDir() / "sweeps";
+  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
+       it.increment(error)) {
+    std::error_code kind;
+    if (it->path().extension() == ".json" && it->is_regular_file(kind))
+      names.push_back(it->path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+fs::path resolveSweep(const std::string& sweep) {
+  std::error_code error;
+  if (fs::is_regular_file(sweep, error) || fs::exists(fs::symlink_status(sweep, error)))
+    return sweep;  // a file, or something the reader refuses with its own message
+  const fs::path dir = spec::builtinScenarioDir() / "sweeps";
+  if (fs::path(sweep).filename() == sweep && sweep != "." && sweep != "..") {
+    for (const fs::path& candidate : {dir / sweep, dir / (sweep + ".json")})
+      if (fs::is_regular_file(candidate, error)) return candidate;
+  }
+  const std::vector<std::string> builtin = builtinSweeps();
+  std::string names;
+  for (const std::string& name : builtin) names += (names.empty() ? "" : ", ") + name;
+  const std::string guess = nearestWord(sweep, builtin);
+  throw spec::ScenarioError(printable(sweep, 200), "",
+                            "no such sweep file, and no built-in sweep of that name" +
+                                (guess.empty() ? "" : "; did you mean " + guess + "?") +
+                                " (built-in: " + names + ")");
 }
 
 SweepSpec loadSweep(const std::string& path, const spec::LoadOptions& load) {

@@ -51,6 +51,12 @@ struct SweepConfig {
   std::vector<std::string> point;      // per axis "path-or-name=value", in axis order
 };
 
+/// A path for `sweep`: an existing file, else NAME or NAME.json in the built-in sweeps
+/// (spec::builtinScenarioDir() / "sweeps"), so that `canopy sweep handover_horizons` runs by name
+/// as scenarios do; a ScenarioError naming the built-in sweeps when neither exists.
+std::filesystem::path resolveSweep(const std::string& sweep);
+/// The names of the built-in sweeps, sorted.
+std::vector<std::string> builtinSweeps();
 /// Reads and validates a sweep file (ScenarioError: file, field, expectation): axes unique, no
 /// value twice on an axis, and the number of configurations and trials within the work budget
 /// (spec/budget.h, scaled by load.budget_scale) before any configuration is built.

@@ -1,52 +1,79 @@
+// experiments/sweep_mpi.h without linking MPI: the MPI code is the module canopy_mpi
+// (mpi_module.cpp), loaded on the first use with dlopen from beside the program (the build tree)
+// or from LIBDIR/canopy (an install). RTLD_GLOBAL: Open MPI's own plugins need libmpi's symbols.
 #include "experiments/sweep_mpi.h"
 
+#include <dlfcn.h>
+
 #include <stdexcept>
-
-#if CANOPY_HAVE_MPI
-#include <mpi.h>
-
-#include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <exception>
-#include <mutex>
-#include <vector>
-#endif
+#include <string>
+#include <system_error>
 
 namespace canopy::experiments {
-
-#if CANOPY_HAVE_MPI
-
+namespace fs = std::filesystem;
 namespace {
 
-void check(int code, const char* what) {
-  if (code != MPI_SUCCESS) throw std::runtime_error(std::string("MPI: ") + what + " failed");
+struct Module {
+  std::string problem;  // why it is not available; "" when it is
+  void (*world)(int*, int*) = nullptr;
+  int (*run)(const void*, const void*, int) = nullptr;
+  int (*sum)(int) = nullptr;
+};
+
+const Module& module() {
+  static const Module loaded = [] {
+    Module m;
+    const std::string name = CANOPY_MPI_MODULE;
+    if (name.empty()) {
+      m.problem =
+          "this canopy was built without MPI: install the Debian packages libopenmpi-dev and "
+          "openmpi-bin, then rebuild (./canopy does both)";
+      return m;
+    }
+    std::error_code error;
+    const fs::path program = fs::read_symlink("/proc/self/exe", error);
+    const fs::path beside = program.parent_path() / name;
+    const fs::path installed =
+        program.parent_path().parent_path() / CANOPY_MPI_MODULE_LIBDIR / name;
+    const fs::path path = fs::exists(beside, error) ? beside : installed;
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+    if (!handle) {
+      const char* why = ::dlerror();
+      m.problem = "MPI sweeps need " + path.string() + ", which could not be loaded (" +
+                  (why ? why : "unknown error") + ")";
+      return m;
+    }
+    m.world = reinterpret_cast<void (*)(int*, int*)>(::dlsym(handle, "canopy_mpi_world"));
+    m.run = reinterpret_cast<int (*)(const void*, const void*, int)>(
+        ::dlsym(handle, "canopy_mpi_run_sweep"));
+    m.sum = reinterpret_cast<int (*)(int)>(::dlsym(handle, "canopy_mpi_sum"));
+    if (!m.world || !m.run || !m.sum)
+      m.problem = path.string() + " is not canopy's MPI module (an entry point is missing)";
+    return m;
+  }();
+  return loaded;
 }
 
-// Rank 0's outcome of a collective step, shared with every rank so that none waits for a rank
-// that has given up.
-bool everyoneSucceeded(bool mine) {
-  int ok = mine ? 1 : 0, all = 0;
-  check(MPI_Allreduce(&ok, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
-  return all == 1;
+const Module& loadedModule() {
+  const Module& m = module();
+  if (!m.problem.empty()) throw std::runtime_error(m.problem);
+  return m;
 }
 
 }  // namespace
 
 bool mpiAvailable() {
-  return true;
+  return module().problem.empty();
+}
+
+std::string mpiProblem() {
+  return module().problem;
 }
 
 const MpiWorld& mpiWorld() {
   static const MpiWorld world = [] {
-    int provided = 0;
-    check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided), "MPI_Init_thread");
-    std::atexit([] { MPI_Finalize(); });
-    if (provided < MPI_THREAD_SERIALIZED)
-      throw std::runtime_error("MPI: this MPI library cannot serve several threads per rank");
     MpiWorld w;
-    check(MPI_Comm_rank(MPI_COMM_WORLD, &w.rank), "MPI_Comm_rank");
-    check(MPI_Comm_size(MPI_COMM_WORLD, &w.size), "MPI_Comm_size");
+    loadedModule().world(&w.rank, &w.size);
     return w;
   }();
   return world;
@@ -54,94 +81,11 @@ const MpiWorld& mpiWorld() {
 
 int runSweepMpi(const experiments::SweepSpec& sweep, const std::filesystem::path& out_dir,
                 int jobs) {
-  const MpiWorld& world = mpiWorld();
-  // Rank 0 checks the directory, writes its manifests and lists the missing trials; the others
-  // load the same configurations (their scenarios) without writing, and take rank 0's list.
-  experiments::PreparedSweep prepared;
-  std::exception_ptr failure;
-  if (world.rank == 0) {
-    try {
-      prepared = experiments::prepareSweep(sweep, out_dir, /*strict=*/true, /*write=*/true);
-    } catch (...) {
-      failure = std::current_exception();
-    }
-  }
-  if (!everyoneSucceeded(!failure)) {
-    if (failure) std::rethrow_exception(failure);
-    throw std::runtime_error("MPI: rank 0 could not prepare the sweep (its message says why)");
-  }
-  if (world.rank != 0) prepared = experiments::prepareSweep(sweep, out_dir, true, false);
-  long long count = static_cast<long long>(prepared.todo.size());
-  check(MPI_Bcast(&count, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD), "MPI_Bcast");
-  prepared.todo.resize(static_cast<std::size_t>(count));
-  check(MPI_Bcast(prepared.todo.data(), static_cast<int>(count), MPI_INT, 0, MPI_COMM_WORLD),
-        "MPI_Bcast");
-
-  // The shared counter: one long long at rank 0, advanced by MPI_Fetch_and_op.
-  long long* counter = nullptr;
-  MPI_Win window;
-  check(MPI_Win_allocate(world.rank == 0 ? sizeof(long long) : 0, sizeof(long long), MPI_INFO_NULL,
-                         MPI_COMM_WORLD, &counter, &window),
-        "MPI_Win_allocate");
-  if (world.rank == 0) *counter = 0;
-  check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
-  std::mutex mpi;  // MPI_THREAD_SERIALIZED: one thread of this rank at MPI at a time
-  const experiments::NextTrial next = [&]() -> std::optional<std::size_t> {
-    const long long one = 1;
-    long long taken = 0;
-    {
-      const std::lock_guard lock(mpi);
-      check(MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, window), "MPI_Win_lock");
-      check(MPI_Fetch_and_op(&one, &taken, MPI_LONG_LONG, 0, 0, MPI_SUM, window),
-            "MPI_Fetch_and_op");
-      check(MPI_Win_unlock(0, window), "MPI_Win_unlock");
-    }
-    if (taken >= count) return std::nullopt;
-    return static_cast<std::size_t>(taken);
-  };
-  int ran = 0;
-  failure = nullptr;
-  try {
-    experiments::SweepProgress progress;
-    progress.total = prepared.total;
-    ran = experiments::runTrials(sweep, prepared, out_dir, jobs, next, progress);
-  } catch (...) {
-    failure = std::current_exception();
-  }
-  const bool all_ran = everyoneSucceeded(!failure);  // also: every rank is done
-  check(MPI_Win_free(&window), "MPI_Win_free");
-  if (failure) std::rethrow_exception(failure);
-  if (!all_ran)
-    throw std::runtime_error("MPI: a trial failed on another rank (its message says why)");
-  if (world.rank == 0) experiments::finishSweep(out_dir);
-  check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");  // the summary exists when any rank returns
-  return ran;
+  return loadedModule().run(&sweep, &out_dir, jobs);
 }
 
 int sumOverRanks(int value) {
-  int sum = 0;
-  check(MPI_Allreduce(&value, &sum, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-  return sum;
+  return loadedModule().sum(value);
 }
-
-#else
-
-bool mpiAvailable() {
-  return false;
-}
-
-const MpiWorld& mpiWorld() {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-int runSweepMpi(const experiments::SweepSpec&, const std::filesystem::path&, int) {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-int sumOverRanks(int) {
-  throw std::runtime_error("this canopy was built without MPI");
-}
-
-#endif
 
 }  // namespace canopy::experiments

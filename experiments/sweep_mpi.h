@@ -8,13 +8,17 @@
 // runs exactly the missing ones. Results are the bytes of `--jobs 1`: a trial's file depends on
 // its seed only.
 #include <filesystem>
+#include <string>
 
 #include "experiments/sweep.h"
 
 namespace canopy::experiments {
 
-/// Whether this canopy was built with MPI (Open MPI found by CMake).
+/// Whether MPI sweeps can run: canopy was built with MPI (Open MPI found by CMake) and its MPI
+/// module (mpi_module.cpp, the only code that links libmpi) loads. The first call loads it.
 bool mpiAvailable();
+/// Why not, "" when they can: built without MPI, or the module that could not be loaded.
+std::string mpiProblem();
 
 /// The process's MPI session, initialised on first use (MPI_THREAD_SERIALIZED: the threads of a
 /// rank take turns at MPI) and finalised at exit. Throws std::runtime_error without MPI.

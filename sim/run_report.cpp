@@ -11,6 +11,10 @@ namespace {
 
 using Json = nlohmann::json;
 
+// Touching something for this long in a row gets a warning: sliding along a wall or brushing a
+// trunk while passing takes a second or two.
+constexpr double kStuckSeconds = 5.0;
+
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
   char buffer[200];
   std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
@@ -73,6 +77,22 @@ std::vector<std::string> runWarnings(const std::string& summary_json) {
           format("fusion had %g numerical failures (summary.json: "
                  "fusion_diagnostics.numerical_failures)",
                  failures));
+    }
+  }
+  // An agent against a wall, a trunk or another agent for seconds on end is most likely stuck
+  // (issue 51: a rover stayed against a wall for 170 steps and the run said nothing).
+  const double dt = number(summary, "dt");
+  for (const Json& uav : summary.at("uavs")) {
+    const double stuck = number(uav, "longest_contact_steps");
+    if (dt > 0.0 && stuck * dt >= kStuckSeconds) {
+      const double from = number(uav, "longest_contact_from_step");
+      warnings.push_back(printable(uav.at("name").get<std::string>(), 40) +
+                         format(": against something solid for %g steps in a row (%g s from "
+                                "t = %g s): stuck?",
+                                stuck, stuck * dt, from * dt) +
+                         " (summary.json: uavs[].longest_contact_steps; what it touched: "
+                         "record.jsonl uavs[].contacts; a scripted path into a wall: canopy "
+                         "validate)");
     }
   }
   for (const Json& uav : summary.at("uavs")) {

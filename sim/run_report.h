@@ -11,7 +11,8 @@ namespace canopy::sim {
 std::string runTable(const std::string& summary_json);
 
 /// One line per diagnostic of the summary that a user should look at (numerical failures in
-/// fusion or tracking); empty when there is none.
+/// fusion or tracking, an agent against something solid for 5 s or more in a row: stuck); empty
+/// when there is none.
 std::vector<std::string> runWarnings(const std::string& summary_json);
 
 }  // namespace canopy::sim

@@ -49,7 +49,14 @@ void SummaryBuilder::onStep(const StepRecord& record) {
   for (const UavRecord& uav : record.uavs) last_uav_position_.push_back(uav.position);
   for (std::size_t i = 0; i < uavs_.size(); ++i) {
     uavs_[i].contacts += record.uavs[i].contacts_begun;
-    uavs_[i].steps_in_contact += !record.uavs[i].contacts.empty();
+    UavTally& tally = uavs_[i];
+    const bool touching = !record.uavs[i].contacts.empty();
+    tally.steps_in_contact += touching;
+    tally.contact_run = touching ? tally.contact_run + 1 : 0;
+    if (tally.contact_run > tally.longest_contact) {
+      tally.longest_contact = tally.contact_run;
+      tally.longest_contact_from = record.step - tally.contact_run + 1;
+    }
   }
 
   visible_by_.assign(targets_.size(), 0);
@@ -143,7 +150,9 @@ std::string SummaryBuilder::json(double wall_seconds) const {
         {"false_track_steps", false_tracks_[i]},
         {"false_tracks_mean", static_cast<double>(false_tracks_[i]) / steps},
         {"contacts", uavs_[i].contacts},
-        {"steps_in_contact", uavs_[i].steps_in_contact}};
+        {"steps_in_contact", uavs_[i].steps_in_contact},
+        {"longest_contact_steps", uavs_[i].longest_contact},
+        {"longest_contact_from_step", uavs_[i].longest_contact_from}};
     if (i < counts_at_end_.size()) {
       const AgentCounts& end = counts_at_end_[i];
       uav["tracks_at_end"] = end.tracks;

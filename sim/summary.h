@@ -34,6 +34,9 @@ class SummaryBuilder final : public StepObserver {
     long observations = 0;  // target, clutter and tree detections
     long contacts = 0;      // contacts begun: a body touched that it did not touch the step before
     int steps_in_contact = 0;  // steps during which it touched something
+    int contact_run = 0;       // steps in contact up to the last step, in a row
+    int longest_contact = 0;   // the longest such run (steps), and the step it began
+    int longest_contact_from = 0;
   };
   const std::vector<TargetTally>& targets() const { return targets_; }
   const std::vector<UavTally>& uavs() const { return uavs_; }

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/nearest_word.h"
 #include "core/printable.h"
 #include "core/progress.h"
 #include "core/text_file.h"
@@ -183,7 +184,10 @@ int Field::choice(const std::vector<std::string>& choices) const {
       }
     }
   }
-  fail("expected one of " + options + ", got " + describe(*value_));
+  const std::string guess =
+      value_->is_string() ? nearestWord(value_->get<std::string>(), choices) : "";
+  fail("expected one of " + options + ", got " + describe(*value_) +
+       (guess.empty() ? "" : "; did you mean \"" + guess + "\"?"));
 }
 
 Vec2 Field::vec2(Bound bound) const {
@@ -362,8 +366,11 @@ void ObjectReader::finish() const {
     if (read_.count(key)) continue;
     std::string known;
     for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
+    const std::string guess = nearestWord(key, {read_.begin(), read_.end()});
     ScenarioError unknown(field_.file(), joinPath(field_.path(), key),
-                          "unknown field (expected one of: " + known + ")");
+                          "unknown field" +
+                              (guess.empty() ? "" : "; did you mean \"" + guess + "\"?") +
+                              " (expected one of: " + known + ")");
     if (!field_.context() || !field_.context()->errors) throw unknown;
     field_.context()->errors->push_back(std::move(unknown));  // and look for more
   }

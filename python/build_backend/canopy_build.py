@@ -170,6 +170,20 @@ def _dist_info_files(project):
 
 
 # --- PEP 517 hooks --------------------------------------------------------------------------
+def _require_numpy():
+    """canopy builds against the NumPy of the Python running pip (Debian's python3-numpy, seen
+    from a venv made with --system-site-packages). Without one pip would look for numpy on PyPI
+    and, offline, say only "No matching distribution found for numpy" (issue 51): say why."""
+    done = subprocess.run([sys.executable, "-c", "import numpy"], env=_cmake_env(),
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(
+            f"canopy: this Python ({sys.executable}) has no NumPy, which canopy builds against and "
+            "pip cannot fetch offline. canopy uses Debian's python3-numpy: make the venv from "
+            "Debian's Python, `/usr/bin/python3 -m venv --system-site-packages ~/canopy-env`, "
+            "and run its pip (a pyenv or conda Python needs `pip install numpy` first).")
+
+
 def get_requires_for_build_wheel(config_settings=None):
     return []  # CMake, a compiler, pybind11 and NumPy come from the system (./canopy installs them)
 
@@ -179,6 +193,9 @@ def get_requires_for_build_sdist(config_settings=None):
 
 
 def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
+    _require_numpy()
+    print("canopy build: the first build compiles canopy in Release (about 20 min on one core); "
+          "`pip install -v .` shows CMake's progress", file=sys.stderr, flush=True)
     project = _project()
     name = f"{_dist_name(project)}-{project['version']}.dist-info"
     os.makedirs(os.path.join(metadata_directory, name), exist_ok=True)
@@ -191,6 +208,7 @@ def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
 
 
 def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
+    _require_numpy()
     project = _project()
     build = _build()
     dist = f"{_dist_name(project)}-{project['version']}"

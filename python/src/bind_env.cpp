@@ -18,6 +18,7 @@
 
 #include "python/src/bindings.h"
 #include "python/src/env_core.h"
+#include "python/src/frame_render.h"
 #include "python/src/py_simulation.h"
 #include "python/src/scenario_source.h"
 #include "sim/simulation.h"
@@ -151,8 +152,9 @@ class VectorCore {
     });
   }
 
-  /// One step of every env with actions (n, n_agent, 2) m/s.
-  void step(const py::handle& actions) {
+  /// One step of every env with actions (n, n_agent, 2) m/s, but those in `hold` (their rows of
+  /// the outputs stay as they are: Gymnasium's next-step autoreset resets them instead).
+  void step(const py::handle& actions, const std::vector<int>& hold = {}) {
     using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
     const Array a = Array::ensure(actions);
     if (!a || a.ndim() != 3 || a.shape(0) != n_ || a.shape(1) != agents_ || a.shape(2) != 2) {
@@ -171,8 +173,13 @@ class VectorCore {
       }
       commands_[k] = v[k];
     }
+    std::vector<char> held(static_cast<std::size_t>(n_), 0);
+    for (const int e : hold) {
+      checkEnv(e);
+      held[static_cast<std::size_t>(e)] = 1;
+    }
     for (int e = 0; e < n_; ++e) {
-      if (ended_.data()[e])
+      if (ended_.data()[e] && !held[static_cast<std::size_t>(e)])
         throw std::runtime_error("VectorEnv.step: environment " + std::to_string(e) +
                                  " has ended; reset it first");
     }
@@ -182,6 +189,7 @@ class VectorCore {
     std::int64_t* steps = steps_.mutable_data();
     py::gil_scoped_release release;
     pool_.run(static_cast<std::size_t>(n_), [&](std::size_t e) {
+      if (held[e]) return;
       sim::Simulation& sim = *sims_[e];
       const double* c = commands_.data() + e * 2 * static_cast<std::size_t>(agents_);
       for (int i = 0; i < agents_; ++i) sim.commandNext(i, Vec2(c[2 * i], c[2 * i + 1]));
@@ -193,6 +201,15 @@ class VectorCore {
   /// Fresh copies of the step's outputs: (observations, rewards, ended, steps).
   py::tuple results() const {
     return py::make_tuple(copyOf(observations_), copyOf(rewards_), copyOf(ended_), copyOf(steps_));
+  }
+
+  /// Environment e's last step drawn as canopy.Simulation.render draws it, (height, width, 3).
+  py::array_t<std::uint8_t> render(int e, int width, int height) {
+    checkEnv(e);
+    if (!sims_[static_cast<std::size_t>(e)])
+      throw std::runtime_error("VectorEnv.render: environment " + std::to_string(e) +
+                               " has no episode yet; call reset() first");
+    return renderer_.render(*sims_[static_cast<std::size_t>(e)], width, height, "VectorEnv.render");
   }
 
   py::object observations() const { return observations_; }
@@ -238,6 +255,7 @@ class VectorCore {
   DoubleArray rewards_;
   py::array_t<bool> ended_;
   py::array_t<std::int64_t> steps_;
+  FrameRenderer renderer_;  // GL starts on the first render only
 };
 
 }  // namespace
@@ -270,15 +288,16 @@ void bindEnv(py::module_& m) {
            py::arg("scenario"), py::arg("n"), py::arg("observer"), py::arg("max_cycles"),
            py::arg("threads"))
       .def("reset", &VectorCore::reset, py::arg("envs"), py::arg("seeds"))
-      .def("step", &VectorCore::step, py::arg("actions"))
+      .def("step", &VectorCore::step, py::arg("actions"), py::arg("hold") = std::vector<int>{})
       .def(
           "step_results",
-          [](VectorCore& core, const py::handle& actions) {
-            core.step(actions);
+          [](VectorCore& core, const py::handle& actions, const std::vector<int>& hold) {
+            core.step(actions, hold);
             return core.results();
           },
-          py::arg("actions"),
-          "step(actions), then fresh copies of (observations, rewards, ended, steps)")
+          py::arg("actions"), py::arg("hold") = std::vector<int>{},
+          "step(actions, hold), then fresh copies of (observations, rewards, ended, steps)")
+      .def("render", &VectorCore::render, py::arg("env"), py::arg("width"), py::arg("height"))
       .def_property_readonly("observations", &VectorCore::observations)
       .def_property_readonly("rewards", &VectorCore::rewards)
       .def_property_readonly("ended", &VectorCore::ended)

@@ -116,26 +116,7 @@ void PySimulation::step(const py::handle& commands) {
 }
 
 py::array_t<std::uint8_t> PySimulation::render(int width, int height) {
-  if (width < render::kMinImageSide || width > render::kMaxImageSide ||
-      height < render::kMinImageSide || height > render::kMaxImageSide) {
-    throw spec::ScenarioError("Simulation.render", "width, height",
-                              "expected width and height in [" +
-                                  std::to_string(render::kMinImageSide) + ", " +
-                                  std::to_string(render::kMaxImageSide) + "] px, got " +
-                                  std::to_string(width) + " x " + std::to_string(height));
-  }
-  const render::ImageSize size{width, height};
-  if (!scene_model_)
-    scene_model_ = render::sceneModel(sim_->spec(), render::viewFor("action", sim_->spec()));
-  if (!canvas_ || canvas_->size() != size) canvas_.emplace(size);
-  world::WorldSnapshot truth;
-  sim::truthSnapshot(record(), truth);
-  const render::Scene scene =
-      render::buildScene(*scene_model_, truth, record().beliefs, render::TargetTrails{}, size);
-  canvas_->draw(scene, image_);
-  py::array_t<std::uint8_t> out({height, width, 3});
-  std::copy(image_.rgb.begin(), image_.rgb.end(), out.mutable_data());
-  return out;
+  return renderer_.render(*sim_, width, height, "Simulation.render");
 }
 
 void bindSimulation(py::module_& m) {
@@ -163,9 +144,17 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
           "steps",
           [](py::handle self) {
             const PySimulation& s = simulationOf(self);
+            return s.sim().spec().steps() + 1;
+          },
+          "The steps a run records, k = 0..K (K + 1: as `canopy validate` counts them and "
+          "record.jsonl holds lines).")
+      .def_property_readonly(
+          "last_step",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
             return s.sim().spec().steps();
           },
-          "K: the last step (states k = 0..K).")
+          "K = duration / dt: the last step, step_index when the run is done.")
       .def_property_readonly("dt",
                              [](py::handle self) {
                                const PySimulation& s = simulationOf(self);

@@ -12,9 +12,7 @@
 #include <optional>
 
 #include "agents/planning/team_planner.h"
-#include "render/canvas.h"
-#include "render/image.h"
-#include "render/scene_builder.h"
+#include "python/src/frame_render.h"
 #include "sim/simulation.h"
 
 namespace canopy::python {
@@ -55,9 +53,7 @@ class PySimulation {
   pybind11::object owner_;  // capsule holding a share of sim_
   Views views_;
   std::optional<agents::planning::TeamPlan> last_plan_;
-  std::optional<render::SceneModel> scene_model_;  // made on the first render
-  std::optional<render::Canvas> canvas_;           // GL starts on the first render only
-  render::Image image_;
+  FrameRenderer renderer_;  // GL starts on the first render only
 };
 
 /// The C++ object behind a canopy.Simulation; throws std::runtime_error when its __init__ has

@@ -59,7 +59,7 @@ def main():
     # The README's command, as printed (its venv in $HOME, pip with build isolation), offline.
     readme = open(os.path.join(source, "README.md"), encoding="utf-8").read()
     command = re.search(r"^## Python\n\n```sh\n(.*?)\n```", readme, re.M | re.S)[1]
-    assert command.startswith("python3 -m venv --system-site-packages ~/canopy-env"), command
+    assert command.startswith("/usr/bin/python3 -m venv --system-site-packages ~/canopy-env"), command
     home = os.path.join(work, "home")
     os.makedirs(home)
     path = os.pathsep.join([os.path.dirname(sys.executable), env.get("PATH", "")])

@@ -52,7 +52,7 @@ def _compare_step(sim, line):
 
 def _step_and_compare(sim, record_path):
     lines = record_path.read_text().splitlines()
-    assert len(lines) == sim.steps + 1
+    assert len(lines) == sim.steps
     _compare_step(sim, lines[0])
     for line in lines[1:]:
         sim.step()

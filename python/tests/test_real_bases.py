@@ -22,7 +22,21 @@ SHIM = {
                 return self
         SHIM = True
     """,
-    "gymnasium/__init__.py": "from . import spaces\nSHIM = True\n",
+    "gymnasium/__init__.py": "from . import spaces, vector\nSHIM = True\n",
+    "gymnasium/vector.py": """
+        import enum
+        class AutoresetMode(enum.Enum):
+            NEXT_STEP = "NextStep"
+            SAME_STEP = "SameStep"
+        class VectorEnv:
+            metadata = {}
+            spec = None
+            render_mode = None
+            closed = False
+            def close(self, **kwargs):
+                self.close_extras(**kwargs)
+                self.closed = True
+    """,
     "gymnasium/spaces.py": """
         import numpy as np
         class Box:
@@ -51,6 +65,8 @@ obs, _ = env.reset(seed=1)
 assert all(env.observation_space(a).contains(o) for a, o in obs.items())
 vec = canopy.VectorEnv(2, s)
 assert type(vec.single_observation_space) is gymnasium.spaces.Box
+assert isinstance(vec, gymnasium.vector.VectorEnv)  # Gymnasium's vector wrappers check this
+assert vec.metadata["autoreset_mode"] is gymnasium.vector.AutoresetMode.NEXT_STEP
 assert vec.observation_space.shape == (2,) + vec.single_observation_space.shape
 print("real bases taken")
 """

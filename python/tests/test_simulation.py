@@ -16,8 +16,9 @@ def demo():
 
 def test_construction_runs_step_zero(demo):
     assert demo.step_index == 0 and demo.time == 0.0 and not demo.done
-    # demo.json: clock.dt = 0.2, duration = 30 → K = 150.
-    assert demo.dt == 0.2 and demo.steps == 150
+    # demo.json: clock.dt = 0.2, duration = 30 → K = 150, and 151 steps k = 0..150 recorded: the
+    # number `canopy validate demo` prints (issue 51: Python said 150 where the CLI said 151).
+    assert demo.dt == 0.2 and demo.last_step == 150 and demo.steps == 151
     demo.step()
     demo.step()
     assert demo.step_index == 2 and demo.time == pytest.approx(0.4)

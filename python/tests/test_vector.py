@@ -21,7 +21,7 @@ def _actions(rng, n, agents):
 def test_eight_envs_equal_eight_single_envs_bit_for_bit(threads):
     n, seed, cycles = 8, 100, 4
     vec = canopy.VectorEnv(n, _scenario(), max_tracks=4, max_trees=4, max_cycles=cycles,
-                           threads=threads)
+                           threads=threads, agent_axis=True, autoreset_mode="SameStep")
     singles = [canopy.TrackingEnv(_scenario(), max_tracks=4, max_trees=4, max_cycles=cycles)
                for _ in range(n)]
     agents = vec.possible_agents
@@ -59,13 +59,13 @@ def test_eight_envs_equal_eight_single_envs_bit_for_bit(threads):
 
 
 def test_shapes_spaces_and_dtypes():
-    vec = canopy.VectorEnv(3, _scenario(), max_tracks=2, max_trees=1)
+    vec = canopy.VectorEnv(3, _scenario(), max_tracks=2, max_trees=1, agent_axis=True)
     size = 3 + 7 * 2 + 4
     assert vec.num_envs == len(vec) == 3 and vec.possible_agents == ["UAV1", "UAV2"]
     assert vec.single_observation_space.shape == (2, size)
     assert vec.observation_space.shape == (3, 2, size) and vec.action_space.shape == (3, 2, 2)
-    mode = vec.metadata["autoreset_mode"]  # gymnasium.vector.AutoresetMode.SAME_STEP, or its value
-    assert getattr(mode, "value", mode) == "SameStep"
+    mode = vec.metadata["autoreset_mode"]  # gymnasium.vector.AutoresetMode.NEXT_STEP, or its value
+    assert getattr(mode, "value", mode) == "NextStep"
     obs, _ = vec.reset(seed=0)
     assert obs.dtype == np.float32 and vec.observation_space.contains(obs)
     obs, rew, term, trunc, infos = vec.step(vec.action_space.sample())
@@ -128,7 +128,7 @@ def test_step_releases_the_gil():
         thread.join()
     finally:
         sys.setswitchinterval(old)
-    assert seen_busy > 0 and sim.step_index == sim.steps
+    assert seen_busy > 0 and sim.step_index == sim.last_step
 
 
 def test_simulations_step_in_parallel_threads_give_the_same_runs():

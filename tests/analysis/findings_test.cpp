@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <limits>
+#include <string_view>
 
 namespace canopy::analysis {
 namespace {
@@ -95,7 +98,7 @@ TEST(Findings, ReactionTimesAreTheFirstStepsBelowTheirThresholdsPerDecisionPerio
   EXPECT_EQ(f.reaction[0].map, "a_priori");
   EXPECT_DOUBLE_EQ(*f.reaction[0].onset.time_s, 13 * 0.2);
   EXPECT_FALSE(f.reaction[0].onset.ci.bounded());  // two alike trials: too few for [2.6, 2.6]
-  EXPECT_FALSE(f.reaction[1].onset.time_s);  // the dynamic map never leaves I
+  EXPECT_FALSE(f.reaction[1].onset.time_s);        // the dynamic map never leaves I
   EXPECT_DOUBLE_EQ(*f.reaction[2].onset.time_s, 10 * 0.2);
   // Two alike trials: a zero-width bootstrap interval from fewer than 5 trials is refused.
   EXPECT_EQ(*reactsBeforeHiding(f.reaction, second), Verdict::too_few_trials);
@@ -216,6 +219,29 @@ TEST(Report, TheHeaderCountsResumedTrialsTruly) {
   EXPECT_NE(reportMarkdown({r}, ctx).find("it **holds** when the intervals separate in the "
                                           "claimed direction"),
             std::string::npos);
+}
+
+// Every document report.md cites is in the repository (issue 51: it cited algorithms.md, which
+// is not).
+TEST(Report, CitesOnlyDocumentsThatExist) {
+  ExperimentResult r = experiment("some_study", {"I"});
+  r.analysis.specs.front().uavs.emplace_back();
+  r.analysis.configs = {configWith({"x=1"})};
+  const std::string md = reportMarkdown({r}, ReportContext{});
+  // Each ".md" with the path characters before it (no std::regex: GCC 12 warns inside it at -O1).
+  int documents = 0;
+  for (std::size_t at = md.find(".md"); at != std::string::npos; at = md.find(".md", at + 3)) {
+    std::size_t begin = at;
+    while (begin > 0 && (std::isalnum(static_cast<unsigned char>(md[begin - 1])) ||
+                         std::string_view("_./-").find(md[begin - 1]) != std::string_view::npos))
+      --begin;
+    const std::string name = md.substr(begin, at + 3 - begin);
+    if (name == "report.md") continue;  // the report itself
+    ++documents;
+    EXPECT_TRUE(std::filesystem::is_regular_file(std::filesystem::path(CANOPY_SOURCE_DIR) / name))
+        << "report.md cites " << name << ", which is not in the repository";
+  }
+  EXPECT_GE(documents, 2);  // docs/design-notes.md and docs/calibration.md at least
 }
 
 }  // namespace

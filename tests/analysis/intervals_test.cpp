@@ -113,5 +113,18 @@ TEST(BoundedMeanInterval, AtABoundIsThatPointAndTooFewAgreeingTrialsHaveNone) {
   EXPECT_FALSE(boundedMeanOf({0.3}, 0.0, 1.0).ci.bounded());
 }
 
+TEST(CsvNumber, AnUnboundedEndIsAnEmptyFieldNotInf) {
+  // One trial: no interval, ends ±inf; in a CSV they are empty fields (issue 51: pandas read
+  // "-inf,inf" as numbers and drew bands of infinite height).
+  const Estimate one = meanOf({2.5});
+  EXPECT_FALSE(one.ci.bounded());
+  EXPECT_EQ(csvNumber(one.value), "2.5");
+  EXPECT_EQ(csvNumber(one.ci.low), "");
+  EXPECT_EQ(csvNumber(one.ci.high), "");
+  EXPECT_EQ(csvNumber(one.ci.width()), "");
+  EXPECT_EQ(csvNumber(std::nan("")), "");
+  EXPECT_EQ(csvNumber(0.0876216), "0.0876216");
+}
+
 }  // namespace
 }  // namespace canopy::analysis

@@ -5,6 +5,8 @@
 
 #include <set>
 
+#include "analysis/figure_pdf.h"
+
 namespace canopy::analysis {
 namespace {
 
@@ -86,6 +88,25 @@ TEST(Figure, DashPiecesCutALineByItsPattern) {
   EXPECT_DOUBLE_EQ(pieces[1][1].x(), 20.0);  // the corner is kept
   EXPECT_DOUBLE_EQ(pieces[1].back().x(), 25.0);
   EXPECT_EQ(dashPieces(Line{{Vec2(0, 0), Vec2(5, 0)}, 1, {}, Dash::solid}).size(), 1u);
+}
+
+// A figure as PDF (issue 51: figures for a paper): one page of the figure's size in points,
+// the same bytes for the same figure (no creation date), and the shapes inside it.
+TEST(FigurePdf, OnePageOfTheFiguresSizeAndTheSameBytesEveryTime) {
+  Figure figure;
+  figure.width = 320;
+  figure.height = 200;
+  addRect(figure, 10, 10, 100, 60, seriesColour(1));
+  figure.shapes.emplace_back(Line{{Vec2(0, 0), Vec2(300, 190)}, 2, kInk, Dash::dash_dot});
+  figure.shapes.emplace_back(Label{Vec2(160, 100), "coverage", 12, Anchor::middle, kInk});
+  const std::string pdf = toPdf(figure);
+  EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u);
+  EXPECT_NE(pdf.find("/MediaBox [ 0 0 320 200 ]"), std::string::npos) << pdf.substr(0, 2000);
+  EXPECT_EQ(pdf.find("/CreationDate"), std::string::npos);
+  EXPECT_EQ(toPdf(figure), pdf);
+  Figure empty = figure;
+  empty.shapes.clear();
+  EXPECT_LT(toPdf(empty).size(), pdf.size());
 }
 
 }  // namespace

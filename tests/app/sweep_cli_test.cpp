@@ -114,13 +114,54 @@ TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
   ASSERT_EQ(run("sweep " + file.string() + " --out " + dir.string() + " --jobs 2"), 0);
   ASSERT_EQ(run("analyze " + dir.string()), 0);
   const fs::path map = dir / "analysis" / "heatmap_horizon_vs_v_max";
-  for (const char* extension : {".csv", ".svg", ".png"})
+  for (const char* extension : {".csv", ".svg", ".pdf", ".png"})
     EXPECT_TRUE(fs::exists(map.string() + extension)) << extension;
+  // Every figure also as PDF for a paper (issue 51), and no CSV field is ever inf: two trials per
+  // configuration leave some intervals unbounded, whose ends are empty fields.
+  int pdfs = 0, csvs = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "analysis")) {
+    if (entry.path().extension() == ".svg") {
+      fs::path pdf = entry.path();
+      pdf.replace_extension(".pdf");
+      ASSERT_TRUE(fs::exists(pdf)) << pdf;
+      EXPECT_EQ(slurp(pdf).rfind("%PDF-", 0), 0u) << pdf;
+      ++pdfs;
+    } else if (entry.path().extension() == ".csv") {
+      EXPECT_EQ(slurp(entry.path()).find("inf"), std::string::npos) << entry.path();
+      ++csvs;
+    }
+  }
+  EXPECT_GE(pdfs, 3);  // the map, the coverage curves and a Sankey diagram per configuration
+  EXPECT_GE(csvs, 6);
   const std::string csv = slurp(map.string() + ".csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // the header and 2 × 2 cells
   ASSERT_EQ(run("analyze " + dir.string() + " --out " + (dir / "again").string()), 0);
   EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.svg"), slurp(map.string() + ".svg"));
+  EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.pdf"), slurp(map.string() + ".pdf"));
   EXPECT_EQ(run("analyze " + dir.string() + " --state nonsense"), 2);
+}
+
+}  // namespace
+
+namespace {
+
+// A built-in sweep runs by its name, as scenarios do (issue 51: "no such file"); one shard of
+// one trial keeps it short. An unknown name exits with 2 and lists the built-in sweeps.
+TEST(SweepCommand, ABuiltInSweepRunsByName) {
+  const fs::path dir = fresh("sweep_by_name");
+  const canopy::cli_test::Outcome ran = canopy::cli_test::runIn(
+      fs::temp_directory_path(),
+      "sweep handover_horizons --out " + dir.string() + " --shard 0/40 --jobs 1");
+  EXPECT_EQ(ran.code, 0) << ran.err;
+  EXPECT_NE(ran.out.find("handover_horizons: shard 0/40 ran 1 trials"), std::string::npos)
+      << ran.out;
+  EXPECT_EQ(countTrials(dir), 1);
+  const canopy::cli_test::Outcome unknown = canopy::cli_test::runIn(
+      fs::temp_directory_path(), "sweep handover_horizon --out " + dir.string() + "_x");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("no built-in sweep of that name"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("did you mean handover_horizons?"), std::string::npos) << unknown.err;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -191,6 +191,16 @@ TEST_F(CanopyCli, CoverageCheckCatchesAChangeAndNamesTheRow) {
   EXPECT_EQ(canopy("coverage " + run("r") + " --tolerance 0.1").code, 2);
   EXPECT_EQ(
       canopy("coverage " + run("r") + " --check " + run("golden.csv") + " --tolerance -1").code, 2);
+  // Checked at another --size: said so, not "11 of 11 rows outside tolerance" (issue 51).
+  const Outcome other_size =
+      canopy("coverage " + run("r") + " --size 240x160 --check " + run("golden.csv"));
+  EXPECT_EQ(other_size.code, 2) << other_size.out;
+  EXPECT_NE(other_size.err.find("golden.csv: rendered at another size (aoi_px 153600, the run's "
+                                "coverage "),
+            std::string::npos)
+      << other_size.err;
+  EXPECT_NE(other_size.err.find("pass the --size the golden was made with"), std::string::npos);
+  EXPECT_EQ(other_size.out.find("rows outside tolerance"), std::string::npos) << other_size.out;
 }
 
 TEST_F(CanopyCli, CoverageOfABadRunDirectoryIsAClearError) {

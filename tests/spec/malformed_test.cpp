@@ -48,6 +48,13 @@ const std::vector<Case>& cases() {
       {"UnknownTopLevelField",
        base("[{\"start\": [10, 10]}]", "[]", R"(, "speed": 3)"),
        {"speed: unknown field"}},
+      // A near miss gets a "did you mean" (issue 51: "qualty" listed the valid fields only).
+      {"MistypedFieldGetsASuggestion",
+       base(R"([{"start": [10, 10], "qualty": 0.5}])"),
+       {"uavs[0].qualty: unknown field; did you mean \"quality\"? (expected one of: "}},
+      {"MistypedChoiceGetsASuggestion",
+       base("[{\"start\": [10, 10]}]", "[]", R"(, "planner": {"algorithm": "dec_pomdb"})"),
+       {"got the string \"dec_pomdb\"; did you mean \"dec_pomdp\"?"}},
       {"UnknownNestedField",
        base(R"([{"start": [10, 10], "fov": {"sise": [10, 10]}}])"),
        {"uavs[0].fov.sise: unknown field"}},
