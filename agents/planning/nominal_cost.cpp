@@ -297,7 +297,6 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     }
   }
   preparePenalty(is_free);
-  prepareReplay(problem.uavs);
   prepareClearance(problem, free_agents, is_free, fixed_pos);
   uncovered_.assign(n_targets, 0);
   charged_uavs_.assign(n_targets, 0);

@@ -160,11 +160,6 @@ class NominalCost {
   // addTerminalPenalty() with many tracks or fixed UAVs (preparePenalty's penalty_merge_,
   // penalty_nearest_): the same order and charges, the same bits, with fewer instructions.
   double addTerminalPenaltyAtScale(int lane, double J);
-  // addTerminalPenaltyAtScale() by a replay (penalty_replay_): the charges of the tracks no
-  // candidate changes, as prepareReplay() made them with the free UAVs where they start, kept
-  // wherever the candidate cannot change them; the same bits (agents/planning/terminal_penalty.cpp).
-  double addTerminalPenaltyByReplay(int lane, double J);
-  void prepareReplay(std::span<const UavState> uavs);
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
   // free, and the fixed UAVs' distances to each track at m = H.
   void preparePenalty(const std::vector<char>& is_free);
@@ -233,15 +228,6 @@ class NominalCost {
   bool penalty_nearest_ = true;
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;
-  // The replay (prepareReplay): per position c of penalty_fixed_order_, the fixed entry with the
-  // least D_i + distance, that bid and its distance, and whether a free entry (at its start)
-  // bid less; per entry, D_i of the replay so far and whether the candidate's D_i differs from
-  // it (dirty: free entries always).
-  std::vector<int> replay_entry_;
-  std::vector<double> replay_total_, replay_distance_, replay_charged_;
-  std::vector<char> replay_free_won_, dirty_;
-  std::vector<int> dirty_entries_, varying_order_;
-  bool penalty_replay_ = false;
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
   std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
