@@ -244,10 +244,9 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     // A cost evaluation runs the recursion of every track in scope over H·S samples against each
     // free UAV, and the terminal penalty charges each uncovered track among the UAVs in scope:
     // all of them when every UAV is free (global_best, local_best); with one free UAV, the
-    // plain loop looks at each of fewer than eight and, from eight fixed ones on, the replay of
-    // the fixed charges and the nearest-first search look at a few (agents/planning/
-    // terminal_penalty.cpp), estimated as kPenaltyEntriesSearched. Scope "team": every track and
-    // UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
+    // plain loop looks at each of fewer than eight and, from eight fixed ones on, the
+    // nearest-first search at a few (agents/planning/terminal_penalty.cpp), estimated as
+    // kPenaltyEntriesSearched. Scope "team": every track and UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
     // reach radii R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the
     // larger of the team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean
     // density (people cluster), and the teammates within 2R likewise.
