@@ -26,9 +26,10 @@ OcclusionMap::OcclusionMap(std::vector<world::TreeDef> trees) : trees_(std::move
   // Cells about one crown wide keep a lookup to a handful of trees; sparse or thin maps get
   // wider cells, so that cols · rows ≤ kMaxSide² and ≈ min(kMaxCells, kCellsPerTree · trees) at
   // most (the index's memory and the work of building it). The answers do not depend on the cell.
-  const double cells = std::min<double>(kMaxCells, kCellsPerTree * static_cast<double>(trees_.size()));
-  cell_ = std::max({max_extent, 1e-3, std::sqrt(bounds_.area() / cells),
-                    bounds_.width() / kMaxSide, bounds_.height() / kMaxSide});
+  const double cells =
+      std::min<double>(kMaxCells, kCellsPerTree * static_cast<double>(trees_.size()));
+  cell_ = std::max({max_extent, 1e-3, std::sqrt(bounds_.area() / cells), bounds_.width() / kMaxSide,
+                    bounds_.height() / kMaxSide});
   cols_ = std::max(1, static_cast<int>(std::ceil(bounds_.width() / cell_)));
   rows_ = std::max(1, static_cast<int>(std::ceil(bounds_.height() / cell_)));
 

@@ -236,8 +236,8 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     const double swarms_per_call = blocks ? p.joint_rounds * uavs : 1.0;
     // The iterations a swarm runs: the stall rule stops it after stall_iterations without a
     // relative gain of ftol, which took 1.2–2.5 × stall_iterations on average in every measured
-    // run (bench/RESULTS.md, "Work budget at swarm size"); 3 × stall_iterations estimates them,
-    // max_iterations bounds them.
+    // run (bench/RESULTS.md, "Swarms with the defaults, second step"); 3 × stall_iterations
+    // estimates them, max_iterations bounds them.
     const double iterations = std::min(static_cast<double>(p.pso.max_iterations),
                                        kIterationsPerStallWindow * p.pso.stall_iterations);
     const double evaluations = epochs * uavs * swarms_per_call * particles * iterations;
@@ -246,10 +246,11 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     // all of them when every UAV is free (global_best, local_best); with one free UAV, the
     // plain loop looks at each of fewer than eight and, from eight fixed ones on, the
     // nearest-first search at a few (agents/planning/terminal_penalty.cpp), estimated as
-    // kPenaltyEntriesSearched. Scope "team": every track and UAV. Scope "reach" (docs/design-notes.md): the tracks and teammates within a few
-    // reach radii R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the
-    // larger of the team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean
-    // density (people cluster), and the teammates within 2R likewise.
+    // kPenaltyEntriesSearched. Scope "team": every track and UAV. Scope "reach"
+    // (docs/design-notes.md): the tracks and teammates within a few reach radii
+    // R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the larger of the
+    // team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean density
+    // (people cluster), and the teammates within 2R likewise.
     double scope_targets = std::max(1.0, targets), scope_uavs = uavs;
     if (p.cost_scope == agents::CostScope::reach) {
       double reach = 0.0;
@@ -264,8 +265,8 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     const double free_uavs = p.algorithm != agents::PlannerAlgorithm::sma && !blocks ? uavs : 1.0;
     const double penalty_entries =
         free_uavs > 1.0 ? scope_uavs : std::min(scope_uavs, kPenaltyEntriesSearched);
-    work.planning_units = evaluations * scope_targets *
-                          (p.horizon * p.cost_substeps * free_uavs + penalty_entries);
+    work.planning_units =
+        evaluations * scope_targets * (p.horizon * p.cost_substeps * free_uavs + penalty_entries);
   }
   return work;
 }

@@ -162,11 +162,13 @@ TEST(WorkBudget, ReachScopeAndCommRangeCountTheNeighbourhood) {
 // And a 64-UAV team over 256 people written with the defaults (team scope, 20 s) is admitted.
 TEST(WorkBudget, PlanningFollowsTheStallRuleAndAdmitsASwarmWrittenWithTheDefaults) {
   auto planning = [](const std::string& pso) {
-    return estimateWork(loadScenarioText(
-                            R"({"aoi": [0, 0, 100, 100], "uavs": [{"start": [10, 10]}, {"start": [20, 10]}],
+    return estimateWork(
+               loadScenarioText(
+                   R"({"aoi": [0, 0, 100, 100], "uavs": [{"start": [10, 10]}, {"start": [20, 10]}],
                                 "targets": [{"path": {"start": [30, 30], "velocity": [1, 0]}}],
-                                "planner": {"algorithm": "sma", "pso": )" + pso + "}}",
-                            "pso.json"))
+                                "planner": {"algorithm": "sma", "pso": )" +
+                       pso + "}}",
+                   "pso.json"))
         .planning_units;
   };
   const double base = planning(R"({"stall_iterations": 50})");
@@ -176,17 +178,17 @@ TEST(WorkBudget, PlanningFollowsTheStallRuleAndAdmitsASwarmWrittenWithTheDefault
   // 21 epochs × 64 UAVs × 100 particles × 150 iterations × 256 tracks × (5 + 8) ≈ 6.7e10.
   std::string uavs, targets;
   for (int i = 0; i < 64; ++i) {
-    uavs += std::string(i ? "," : "") + R"({"start": [)" + std::to_string(50 + 100 * (i % 8)) + ", " +
-            std::to_string(50 + 100 * (i / 8)) + R"(], "fov": {"size": [20, 20]}})";
+    uavs += std::string(i ? "," : "") + R"({"start": [)" + std::to_string(50 + 100 * (i % 8)) +
+            ", " + std::to_string(50 + 100 * (i / 8)) + R"(], "fov": {"size": [20, 20]}})";
   }
   for (int j = 0; j < 256; ++j) {
     targets += std::string(j ? "," : "") + R"({"path": {"start": [)" +
-               std::to_string(45 + 100 * (j % 64 % 8)) + ", " + std::to_string(45 + 100 * (j % 64 / 8)) +
-               R"(], "velocity": [1, 0]}})";
+               std::to_string(45 + 100 * (j % 64 % 8)) + ", " +
+               std::to_string(45 + 100 * (j % 64 / 8)) + R"(], "velocity": [1, 0]}})";
   }
   const ScenarioSpec swarm = loadScenarioText(
-      R"({"aoi": [0, 0, 800, 800], "clock": {"duration": 20}, "uavs": [)" + uavs + R"(], "targets": [)" +
-          targets + R"(], "planner": {"algorithm": "sma", "horizon": 5}})",
+      R"({"aoi": [0, 0, 800, 800], "clock": {"duration": 20}, "uavs": [)" + uavs +
+          R"(], "targets": [)" + targets + R"(], "planner": {"algorithm": "sma", "horizon": 5}})",
       "swarm.json");
   EXPECT_NEAR(estimateWork(swarm).planning_units, 21.0 * 64 * 100 * 150 * 256 * (5 + 8), 1.0);
 }

@@ -35,7 +35,8 @@ Scene randomScene(RandomStream& rng, int n_uavs, int n_targets, int horizon) {
     u.footprint.size = Vec2(20, 20);
     scene.uavs.push_back(u);
     Plan plan;
-    for (int m = 0; m < horizon; ++m) plan.velocities.emplace_back(rng.uniform(-5, 5), rng.uniform(-5, 5));
+    for (int m = 0; m < horizon; ++m)
+      plan.velocities.emplace_back(rng.uniform(-5, 5), rng.uniform(-5, 5));
     scene.plans.push_back(plan);
   }
   for (int j = 0; j < n_targets; ++j) {
@@ -101,7 +102,8 @@ TEST(TerminalPenaltyAtScale, AgreesWithThePlainLoopOnRandomSwarms) {
 TEST(TerminalPenaltyAtScale, BreaksExactTiesAsThePlainLoopDoes) {
   RandomStream rng(49, "terminal-penalty-ties-test");
   for (const int self : {0, 4, 12}) {
-    expectBothPathsAgree(tiedScene(4, 3), self, 20, rng, "tied scene, free UAV " + std::to_string(self));
+    expectBothPathsAgree(tiedScene(4, 3), self, 20, rng,
+                         "tied scene, free UAV " + std::to_string(self));
   }
 }
 
