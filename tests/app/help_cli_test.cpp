@@ -126,8 +126,9 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
     for (std::sregex_iterator o(rest.begin(), rest.end(), option_name); o != end; ++o)
       readme_options[(*m)[1]].insert(o->str());
   }
-  const std::set<std::string> commands = {"run",     "validate",  "coverage", "view",   "sweep",
-                                          "analyze", "reproduce", "forest",   "schema", "list"};
+  const std::set<std::string> commands = {"run",   "validate", "coverage",  "view",
+                                          "record", "sweep",   "analyze",   "reproduce",
+                                          "forest", "schema",  "list"};
   std::set<std::string> in_readme;
   for (const auto& [command, options] : readme_options) in_readme.insert(command);
   EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
@@ -141,6 +142,9 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
                                                       {"L", "0.01"},
                                                       {"WxH", "64x48"},
                                                       {"I/N", "0/2"},
+                                                      {"I", "0"},
+                                                      {"A:B", "0:2"},
+                                                      {"auto|jsonl|compact", "jsonl"},
                                                       {"NAME", "x"},
                                                       {"GOLDEN.csv", "g.csv"},
                                                       {"FILE", "page.html"},
