@@ -54,6 +54,8 @@ CompactRecordWriter::CompactRecordWriter(Sink sink, BlockSize block)
   if (zstd_->cctx == nullptr) throw std::bad_alloc();
   ZSTD_CCtx_setParameter(zstd_->cctx, ZSTD_c_compressionLevel, kRecordZstdLevel);
   ZSTD_CCtx_setParameter(zstd_->cctx, ZSTD_c_checksumFlag, 1);
+  ZSTD_CCtx_setParameter(zstd_->cctx, ZSTD_c_windowLog, kRecordWindowLog);
+  ZSTD_CCtx_setParameter(zstd_->cctx, ZSTD_c_enableLongDistanceMatching, 1);
 }
 
 CompactRecordWriter::~CompactRecordWriter() = default;

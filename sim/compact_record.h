@@ -33,13 +33,16 @@ struct RecordBlock {
 
 /// When a block is closed: once it holds `bytes` of text or `lines` lines, whichever comes first.
 struct BlockSize {
-  std::size_t bytes = std::size_t{8} << 20;
+  std::size_t bytes = std::size_t{32} << 20;
   std::uint32_t lines = 256;
 };
 
-/// zstd's level for the record (3, zstd's default: at city_swarm's size the record's share of a
-/// run's instructions, bench/RESULTS.md).
+/// zstd's settings for the record (bench/RESULTS.md, "Records at city scale", measured on
+/// city_swarm's lines): level 3 (zstd's default), a window of 2^25 bytes (a whole block) with long
+/// distance matching, so a map entry or track that did not change since the step before, about
+/// 0.8 MB earlier at city scale, is stored as a reference to it.
 inline constexpr int kRecordZstdLevel = 3;
+inline constexpr int kRecordWindowLog = 25;
 
 /// Writes the compact form through `sink` (e.g. an AtomicFile's write, committed after finish()).
 class CompactRecordWriter {
