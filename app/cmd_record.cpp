@@ -16,32 +16,6 @@
 namespace canopy::app {
 namespace {
 
-// "A:B" (steps A to B − 1), "A:" (from A) or ":B" (before B), A < B.
-std::optional<sim::LineRange> parseSteps(const std::string& text) {
-  const std::size_t colon = text.find(':');
-  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
-    return std::nullopt;
-  sim::LineRange range;
-  const auto number = [](const std::string& digits) -> std::optional<std::uint64_t> {
-    if (digits.empty() || digits.size() > 12 ||
-        digits.find_first_not_of("0123456789") != std::string::npos)
-      return std::nullopt;
-    return std::stoull(digits);
-  };
-  const std::string first = text.substr(0, colon), end = text.substr(colon + 1);
-  if (!first.empty()) {
-    const std::optional<std::uint64_t> a = number(first);
-    if (!a) return std::nullopt;
-    range.first = *a;
-  }
-  if (!end.empty()) {
-    const std::optional<std::uint64_t> b = number(end);
-    if (!b || *b <= range.first) return std::nullopt;
-    range.end = *b;
-  }
-  return range;
-}
-
 class Record : public Command {
  public:
   explicit Record(CLI::App& canopy)
@@ -51,8 +25,7 @@ class Record : public Command {
                 "record.jsonl.zst (for jq, pandas and scripts).") {
     CLI::App& o = options();
     o.add_option("RUN_DIR", run_dir_, "the --out directory of `canopy run`");
-    addValue(o, "--steps", "A:B", steps_,
-             Reader<sim::LineRange>{parseSteps, "A:B, A: or :B with integers A < B"},
+    addValue(o, "--steps", "A:B", steps_, stepRange(),
              "steps A to B − 1 only (the compact record decodes only their blocks)")
         ->default_str("every step");
     addValue(o, "--agent", "I", agent_, integerIn(0, std::numeric_limits<int>::max()),

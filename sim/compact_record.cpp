@@ -173,10 +173,11 @@ std::string CompactRecordReader::readAt(std::uint64_t offset, std::size_t bytes)
   std::string out(bytes, '\0');
   std::size_t done = 0;
   while (done < bytes) {
-    const ssize_t n = ::pread(fd_, out.data() + done, bytes - done,
-                              static_cast<off_t>(offset + done));
+    const ssize_t n =
+        ::pread(fd_, out.data() + done, bytes - done, static_cast<off_t>(offset + done));
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail("", "bytes up to " + std::to_string(offset + bytes) + " (the file is shorter)");
+    if (n <= 0)
+      fail("", "bytes up to " + std::to_string(offset + bytes) + " (the file is shorter)");
     done += static_cast<std::size_t>(n);
   }
   return out;
@@ -192,7 +193,8 @@ std::string CompactRecordReader::decode(std::size_t i) const {
     fail(where, "one zstd frame of " + std::to_string(b.compressed) + " bytes");
   std::string text(b.decoded, '\0');
   const std::size_t n = ZSTD_decompress(text.data(), text.size(), frame.data(), frame.size());
-  if (ZSTD_isError(n)) fail(where, std::string("a valid zstd frame (") + ZSTD_getErrorName(n) + ")");
+  if (ZSTD_isError(n))
+    fail(where, std::string("a valid zstd frame (") + ZSTD_getErrorName(n) + ")");
   if (n != text.size() || text.back() != '\n')
     fail(where, std::to_string(b.decoded) + " bytes of whole lines");
   std::size_t newlines = 0;

@@ -65,9 +65,9 @@ class CompactRecordWriter {
   BlockSize block_size_;
   struct Context;
   std::unique_ptr<Context> zstd_;
-  std::string text_;        // the open block's lines
+  std::string text_;         // the open block's lines
   std::uint32_t lines_ = 0;  // in text_
-  std::string compressed_;  // reused
+  std::string compressed_;   // reused
   std::vector<RecordBlock> index_;
   std::uint64_t offset_ = 0;
   std::uint32_t next_line_ = 0;

@@ -47,8 +47,8 @@ void forEachRecordLine(const std::filesystem::path& path, const LineRange& range
                        const std::function<void(const std::string&, int)>& line_fn) {
   int number = 0;
   if (path.extension() != ".zst") {
-    const std::string text = spec::readResultText(
-        path, "the record that `canopy run` writes", spec::kMaxResultBytes);
+    const std::string text =
+        spec::readResultText(path, "the record that `canopy run` writes", spec::kMaxResultBytes);
     eachLine(text, number, 0, range, line_fn);
     return;
   }

@@ -1,5 +1,6 @@
 #pragma once
-// record.jsonl (or record.jsonl.zst, the same lines compact): one JSON line per step with the truth, every UAV's pose and command, every scan
+// record.jsonl (or record.jsonl.zst, the same lines compact): one JSON line per step with the
+// truth, every UAV's pose and command, every scan
 // (footprint membership, visibility, observations), every agent's fused tracks and occlusion map,
 // and on planning epochs the team's plans and intention messages. Same seed, same bytes: wall
 // times, which differ from run to run, go to timings.jsonl instead.

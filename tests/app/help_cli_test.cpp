@@ -22,7 +22,8 @@ TEST(HelpCli, EveryCommandHasHelpListingItsOptionsWithDefaults) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
       {"run", {"--out DIR", "--seed N", "--json", "--frames", "--fps F", "--budget K"}},
       {"validate", {"--set PATH=VALUE", "--allow-path DIR"}},
-      {"coverage", {"--size WxH", "--check GOLDEN.csv", "--tolerance F"}},
+      {"coverage", {"--size WxH", "--steps A:B", "--check GOLDEN.csv", "--tolerance F"}},
+      {"record", {"--steps A:B", "--agent I"}},
       {"sweep", {"--jobs N", "--shard I/N", "--mpi", "--status DIR"}},
       {"analyze", {"--out DIR", "--state NAME", "--before-hiding S"}},
       {"reproduce", {"--trials N", "--seed S"}},

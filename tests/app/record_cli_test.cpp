@@ -10,7 +10,7 @@
 
 #include "tests/app/cli.h"
 
-namespace canopy::cli_test {
+namespace canopy::cli_test::record_cli {  // named: the sanitizer's unity build merges files
 namespace {
 
 // Lines from..to−1 of `text`.
@@ -59,14 +59,19 @@ TEST(RecordCli, PrintsThePlainLinesFromEitherFormAndEveryReaderReadsBoth) {
   const Outcome coverage = runIn(dir, "coverage c");
   EXPECT_EQ(coverage.code, 0) << coverage.err;
   EXPECT_EQ(coverage.out, runIn(dir, "coverage j").out);
+  // coverage --steps: the header and the rows of those steps.
+  const std::string all = coverage.out, header = all.substr(0, all.find('\n') + 1);
+  const std::string rows = all.substr(header.size());
+  EXPECT_EQ(runIn(dir, "coverage c --steps 3:7").out, header + lines(rows, 3, 7));
+  EXPECT_EQ(runIn(dir, "coverage j --steps 3:7").out, header + lines(rows, 3, 7));
   const Outcome page = runIn(dir, "view c --out -");
   EXPECT_EQ(page.code, 0) << page.err;
   EXPECT_EQ(page.out, runIn(dir, "view j --out -").out);
 
-  for (const auto& [args, says] :
-       std::vector<std::pair<std::string, std::string>>{
+  for (const auto& [args, says] : std::vector<std::pair<std::string, std::string>>{
            {"record c --steps 5:2", "--steps: expected A:B"},
            {"record c --agent 3", "--agent"},
+           {"coverage c --steps 1:2 --check g.csv", "--steps: does not apply with --check"},
            {"record missing", "missing: no such directory"},
            {"run demo --record zip", "--record: expected auto, jsonl or compact"}}) {
     const Outcome o = runIn(dir, args);
@@ -77,4 +82,4 @@ TEST(RecordCli, PrintsThePlainLinesFromEitherFormAndEveryReaderReadsBoth) {
 }
 
 }  // namespace
-}  // namespace canopy::cli_test
+}  // namespace canopy::cli_test::record_cli

@@ -25,7 +25,7 @@
 #include "spec/error.h"
 #include "spec/loader.h"
 
-namespace canopy::sim {
+namespace canopy::sim::compact_record_test {  // named: the sanitizer's unity build merges files
 namespace {
 namespace fs = std::filesystem;
 
@@ -66,8 +66,8 @@ std::string linesOf(const fs::path& record, const LineRange& range = {}) {
 }
 
 struct BothForms {
-  std::string plain;    // record.jsonl of the --record jsonl recorder
-  fs::path compact;     // the run's record.jsonl.zst
+  std::string plain;  // record.jsonl of the --record jsonl recorder
+  fs::path compact;   // the run's record.jsonl.zst
   fs::path dir;
 };
 
@@ -109,8 +109,8 @@ TEST(CompactRecord, DecodesToThePlainLinesOfThePaperScenariosAndMixedTeam) {
     EXPECT_EQ(zstdDecodeAll(bytes), both.plain);
     EXPECT_LT(bytes.size(), both.plain.size() / 4);  // compressed, not copied
     const CompactRecordReader reader(both.compact);
-    const auto steps = static_cast<std::uint64_t>(
-        std::count(both.plain.begin(), both.plain.end(), '\n'));
+    const auto steps =
+        static_cast<std::uint64_t>(std::count(both.plain.begin(), both.plain.end(), '\n'));
     EXPECT_EQ(reader.lines(), steps);
     EXPECT_EQ(reader.blocks().size(), (steps + 15) / 16);
     fs::remove_all(both.dir);
@@ -171,7 +171,8 @@ TEST(CompactRecord, BrokenFilesAreErrorsNamingTheFileAndThePart) {
   EXPECT_EQ(zstdDecodeAll(good), jsonl);
   EXPECT_NE(errorOf("").find("record.jsonl.zst: expected a step index"), std::string::npos);
   EXPECT_NE(errorOf(good.substr(0, good.size() - 1)).find("index"), std::string::npos);
-  EXPECT_NE(errorOf(good.substr(1)).find("expected a frame that ends before the index"), std::string::npos);
+  EXPECT_NE(errorOf(good.substr(1)).find("expected a frame that ends before the index"),
+            std::string::npos);
   std::string lines = good;
   const std::size_t count = lines.size() - 12 - 24 + 20;  // entry 1's line count
   lines[count] = 5;
@@ -224,4 +225,4 @@ TEST(CompactRecord, AnAgentsSliceIsItsEntryOfTheWholeLine) {
 }
 
 }  // namespace
-}  // namespace canopy::sim
+}  // namespace canopy::sim::compact_record_test
