@@ -114,19 +114,16 @@ std::string compactRecordOf(std::string_view jsonl, BlockSize block) {
 }
 
 CompactRecordReader::CompactRecordReader(const std::filesystem::path& path) : path_(path) {
-  fd_ = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (fd_ < 0) {
+  file_.fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (file_.fd < 0) {
     const int error = errno;
     fail("", error == ELOOP    ? "a regular file, not a symbolic link"
              : error == ENOENT ? "the compact record of `canopy run` (missing)"
                                : std::string("a readable file (") + std::strerror(error) + ")");
   }
   struct stat st {};
-  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd_);
-    fd_ = -1;
+  if (::fstat(file_.fd, &st) != 0 || !S_ISREG(st.st_mode))
     fail("", "a regular file (not a FIFO, device or directory)");
-  }
   size_ = static_cast<std::uint64_t>(st.st_size);
   if (size_ < kHeaderBytes + kTrailerBytes) fail("", "a step index at its end (too short)");
   const std::string trailer = readAt(size_ - kTrailerBytes, kTrailerBytes);
@@ -157,8 +154,10 @@ CompactRecordReader::CompactRecordReader(const std::filesystem::path& path) : pa
   if (offset != frames_end) fail("index", "frames that fill the file up to the index");
 }
 
-CompactRecordReader::~CompactRecordReader() {
-  if (fd_ >= 0) ::close(fd_);
+CompactRecordReader::~CompactRecordReader() = default;
+
+CompactRecordReader::Descriptor::~Descriptor() {
+  if (fd >= 0) ::close(fd);
 }
 
 std::uint64_t CompactRecordReader::lines() const {
@@ -174,7 +173,7 @@ std::string CompactRecordReader::readAt(std::uint64_t offset, std::size_t bytes)
   std::size_t done = 0;
   while (done < bytes) {
     const ssize_t n =
-        ::pread(fd_, out.data() + done, bytes - done, static_cast<off_t>(offset + done));
+        ::pread(file_.fd, out.data() + done, bytes - done, static_cast<off_t>(offset + done));
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0)
       fail("", "bytes up to " + std::to_string(offset + bytes) + " (the file is shorter)");

@@ -93,8 +93,18 @@ class CompactRecordReader {
   [[noreturn]] void fail(const std::string& where, const std::string& expected) const;
   std::string readAt(std::uint64_t offset, std::size_t bytes) const;
 
+  // Closed by its own destructor, so also when the constructor throws (a member is destroyed
+  // then, the reader is not).
+  struct Descriptor {
+    int fd = -1;
+    Descriptor() = default;
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor();
+  };
+
   std::filesystem::path path_;
-  int fd_ = -1;
+  Descriptor file_;
   std::uint64_t size_ = 0;
   std::vector<RecordBlock> blocks_;
 };

@@ -177,7 +177,14 @@ TEST(CompactRecord, BrokenFilesAreErrorsNamingTheFileAndThePart) {
   const std::size_t count = lines.size() - 12 - 24 + 20;  // entry 1's line count
   lines[count] = 5;
   EXPECT_NE(errorOf(lines).find("frame 1: expected 5 lines"), std::string::npos) << errorOf(lines);
-  // A link where the record goes is refused, not followed.
+  // A refused file is closed: no descriptor is left open by a reader that threw.
+  const auto open_files = [] {
+    return std::distance(fs::directory_iterator("/proc/self/fd"), fs::directory_iterator{});
+  };
+  const auto before = open_files();
+  for (int i = 0; i < 20; ++i) errorOf(good.substr(0, good.size() - 1));
+  EXPECT_EQ(open_files(), before);
+    // A link where the record goes is refused, not followed.
   const fs::path dir = freshDir("link");
   fs::create_directories(dir);
   std::ofstream(dir / "real.zst", std::ios::binary) << good;
