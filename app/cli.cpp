@@ -42,6 +42,39 @@ Reader<std::uint64_t> nonNegativeInteger() {
   return {wholeInteger<std::uint64_t>, "a non-negative integer"};
 }
 
+namespace {
+
+std::optional<sim::LineRange> stepRangeOf(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
+    return std::nullopt;
+  sim::LineRange range;
+  const auto number = [](const std::string& digits) -> std::optional<std::uint64_t> {
+    if (digits.empty() || digits.size() > 12 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      return std::nullopt;
+    return std::stoull(digits);
+  };
+  const std::string first = text.substr(0, colon), end = text.substr(colon + 1);
+  if (!first.empty()) {
+    const std::optional<std::uint64_t> a = number(first);
+    if (!a) return std::nullopt;
+    range.first = *a;
+  }
+  if (!end.empty()) {
+    const std::optional<std::uint64_t> b = number(end);
+    if (!b || *b <= range.first) return std::nullopt;
+    range.end = *b;
+  }
+  return range;
+}
+
+}  // namespace
+
+Reader<sim::LineRange> stepRange() {
+  return {stepRangeOf, "A:B, A: or :B with integers A < B"};
+}
+
 Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range) {
   return {[in_range = std::move(in_range)](const std::string& text) -> std::optional<double> {
             // JSON's grammar: no blanks, '+', hexadecimal, inf or nan.

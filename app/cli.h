@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/printable.h"
+#include "sim/record_lines.h"
 #include "spec/loader.h"
 
 namespace canopy::app {
@@ -33,6 +34,8 @@ struct Reader {
 
 Reader<int> integerIn(int min_value, int max_value);
 Reader<std::uint64_t> nonNegativeInteger();
+/// `--steps A:B`: "A:B" (steps A to B − 1), "A:" (from A) or ":B" (before B), integers A < B.
+Reader<sim::LineRange> stepRange();
 /// A finite number for which `in_range` holds; `expected` names the range.
 Reader<double> finiteNumber(std::string expected, std::function<bool(double)> in_range);
 

@@ -1,6 +1,7 @@
-// `canopy coverage RUN_DIR [--size WxH] [--check GOLDEN.csv [--tolerance F]]`: the rendered
-// coverage of a finished run as CSV on stdout, or compared with a golden CSV (exit 0 when every
-// row matches within the tolerance, 1 with the first differing rows, 2 on bad input).
+// `canopy coverage RUN_DIR [--size WxH] [--steps A:B] [--check GOLDEN.csv [--tolerance F]]`:
+// the rendered coverage of a finished run (or of steps A to B − 1) as CSV on stdout, or compared
+// with a golden CSV (exit 0 when every row matches within the tolerance, 1 with the first
+// differing rows, 2 on bad input).
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -60,6 +61,9 @@ class Coverage : public Command {
                           [](double f) { return f >= 0.0 && f <= 1.0; }),
              "with --check: pixel counts may differ by F·aoi_px, fractions by F")
         ->default_str(tolerance);
+    addValue(o, "--steps", "A:B", steps_, stepRange(),
+             "the rows of steps A to B − 1 only (a compact record decodes only their blocks)")
+        ->default_str("every step");
   }
   int run() override;
 
@@ -67,13 +71,16 @@ class Coverage : public Command {
   std::string run_dir_, golden_;
   std::optional<double> tolerance_;
   std::optional<render::ImageSize> size_;
+  std::optional<sim::LineRange> steps_;
 };
 
 int Coverage::run() {
   if (run_dir_.empty())
     usageError("coverage", "expected RUN_DIR, the --out directory of `canopy run`");
   if (tolerance_ && golden_.empty()) usageError("--tolerance", "only applies with --check");
-  const std::string csv = render::coverageCsvOfRun(run_dir_, size_);
+  if (steps_ && !golden_.empty()) usageError("--steps", "does not apply with --check (every step)");
+  const std::string csv =
+      render::coverageCsvOfRun(run_dir_, size_, steps_.value_or(sim::LineRange{}));
   if (!golden_.empty())
     return check(csv, golden_, tolerance_.value_or(render::kDefaultCoverageTolerance));
   std::fputs(csv.c_str(), stdout);

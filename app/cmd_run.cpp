@@ -43,7 +43,7 @@ class Run : public Command {
   Run(CLI::App& canopy, std::string command_line)
       : Command(canopy, "run", "canopy run [SCENARIO] [options]",
                 "Runs a scenario (a path or a built-in name; default demo) and writes "
-                "manifest.json, record.jsonl, timings.jsonl and summary.json; prints a short "
+                "manifest.json, record.jsonl (or record.jsonl.zst), timings.jsonl and summary.json; prints a short "
                 "table of the outcome."),
         command_line_(std::move(command_line)) {
     CLI::App& o = options();
@@ -82,6 +82,19 @@ class Run : public Command {
              "frames per second of the video")
         ->default_str("real time, 1/(dt·K)");
     o.add_flag("--html", html_, "also write DIR/replay.html (as `canopy view DIR`)");
+    addValue(o, "--record", "auto|jsonl|compact", record_,
+             Reader<sim::RecordFormat>{
+                 [](const std::string& text) -> std::optional<sim::RecordFormat> {
+                   if (text == "auto") return sim::RecordFormat::automatic;
+                   if (text == "jsonl") return sim::RecordFormat::jsonl;
+                   if (text == "compact") return sim::RecordFormat::compact;
+                   return std::nullopt;
+                 },
+                 "auto, jsonl or compact"},
+             "record.jsonl (JSON lines), record.jsonl.zst (the same lines in zstd frames with a "
+             "step index; `canopy record DIR` prints them), or auto: compact when the record is "
+             "estimated above 64 MB")
+        ->default_str("auto");
     addLoadOptions(o, load_);
   }
 
@@ -98,6 +111,7 @@ class Run : public Command {
   std::optional<double> fps_;
   std::optional<std::string> view_;
   std::optional<render::ImageSize> size_;
+  sim::RecordFormat record_ = sim::RecordFormat::automatic;
 };
 
 int Run::run() {
@@ -125,6 +139,7 @@ int Run::run() {
   options.out_dir = out_dir_;
   options.command_line = command_line_;
   options.threads = threads_.value_or(1);
+  options.record = record_;
   // Without --frames nothing of the renderer is made, so no GL context is ever created.
   std::optional<render::FrameWriter> writer;
   std::optional<render::FrameObserver> frame_observer;
@@ -147,11 +162,13 @@ int Run::run() {
     for (std::string line; std::getline(summary, line);)
       std::printf("%s\n", printable(line).c_str());
   } else {
-    std::printf(
-        "%s: %d steps in %.3f s → %s/ (manifest.json, record.jsonl, timings.jsonl, "
-        "summary.json)\n%s",
-        printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
-        printable(out_dir_).c_str(), sim::runTable(result.summary_json).c_str());
+    std::printf("%s: %d steps in %.3f s → %s/ (manifest.json, %s, timings.jsonl, summary.json)\n%s",
+                printable(spec.name, 200).c_str(), result.steps, result.wall_seconds,
+                printable(out_dir_).c_str(),
+                sim::resolveRecordFormat(record_, spec) == sim::RecordFormat::compact
+                    ? sim::kRecordCompactName
+                    : sim::kRecordJsonlName,
+                sim::runTable(result.summary_json).c_str());
   }
   if (html_) {
     const std::filesystem::path page = options.out_dir / "replay.html";

@@ -44,6 +44,7 @@ std::unique_ptr<Command> makeRun(CLI::App& canopy, const std::string& command_li
 std::unique_ptr<Command> makeValidate(CLI::App& canopy);
 std::unique_ptr<Command> makeCoverage(CLI::App& canopy);
 std::unique_ptr<Command> makeView(CLI::App& canopy);
+std::unique_ptr<Command> makeRecord(CLI::App& canopy);
 std::unique_ptr<Command> makeSweep(CLI::App& canopy);
 std::unique_ptr<Command> makeAnalyze(CLI::App& canopy);
 std::unique_ptr<Command> makeReproduce(CLI::App& canopy);

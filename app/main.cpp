@@ -26,6 +26,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& canopy,
   commands.push_back(makeValidate(canopy));
   commands.push_back(makeCoverage(canopy));
   commands.push_back(makeView(canopy));
+  commands.push_back(makeRecord(canopy));
   commands.push_back(makeSweep(canopy));
   commands.push_back(makeAnalyze(canopy));
   commands.push_back(makeReproduce(canopy));

@@ -29,7 +29,9 @@ out, timing, duration = sys.argv[1], open(sys.argv[2]).read(), float(sys.argv[3]
 user = float(re.search(r"User time \(seconds\): ([\d.]+)", timing).group(1))
 system = float(re.search(r"System time \(seconds\): ([\d.]+)", timing).group(1))
 rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", timing).group(1))
-record = os.path.getsize(os.path.join(out, "record.jsonl"))
+# the record as written: record.jsonl.zst at scale (--record auto), else record.jsonl
+record = next(os.path.getsize(os.path.join(out, name)) for name in ("record.jsonl.zst", "record.jsonl")
+              if os.path.exists(os.path.join(out, name)))
 cpu = user + system
 print(f"| {sys.argv[4]} | {sys.argv[5]} | {sys.argv[6]} | {cpu / duration:.3f} | {rss / 1024:.0f} | "
       f"{record / 1e6 / duration:.1f} | {sys.argv[7]} |")

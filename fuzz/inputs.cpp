@@ -11,6 +11,7 @@
 #include "experiments/trial.h"
 #include "render/coverage_check.h"
 #include "replay/run_folder.h"
+#include "sim/compact_record.h"
 #include "sim/record_reader.h"
 #include "sim/run.h"
 #include "spec/error.h"
@@ -160,16 +161,34 @@ bool readResultInput(std::string_view data) {
   return true;
 }
 
+namespace {
+
+// The steps the truth reader reads from `path`, or −1 when it refuses the file.
+long stepsRead(const fs::path& path) {
+  try {
+    return static_cast<long>(sim::readRecordTruth(path, demo()).size());
+  } catch (const spec::ScenarioError&) {
+    return -1;
+  }
+}
+
+}  // namespace
+
 bool readRecordInput(std::string_view data) {
   const fs::path dir = sandboxDir() / "record";
   fs::create_directories(dir);
   writeFile(dir / "record.jsonl", data);
-  try {
-    sim::readRecordTruth(dir / "record.jsonl", demo());
-  } catch (const spec::ScenarioError&) {
-    return false;
-  }
-  return true;
+  const long plain = stepsRead(dir / "record.jsonl");
+  // The same lines in the compact form are read alike: the same steps, or refused too.
+  std::string lines(data);
+  if (!lines.empty() && lines.back() != '\n') lines += '\n';
+  writeFile(dir / "record.jsonl.zst", sim::compactRecordOf(lines, {4096, 3}));
+  if (stepsRead(dir / "record.jsonl.zst") != plain)
+    throw std::logic_error("the compact record read otherwise than its plain lines");
+  // The bytes themselves as a compact record: refused or read, never a crash.
+  writeFile(dir / "raw.jsonl.zst", data);
+  stepsRead(dir / "raw.jsonl.zst");
+  return plain >= 0;
 }
 
 bool readReplayInput(std::string_view data) {

@@ -22,7 +22,9 @@ bool parseTrackInput(std::string_view data);
 /// sandbox for the readers that take a path).
 bool readResultInput(std::string_view data);
 /// A record.jsonl read back by the truth reader (sim::readRecordTruth) against the demo's
-/// scenario: the bytes are the file.
+/// scenario: the bytes are the file. The same lines written compact (record.jsonl.zst, small
+/// blocks) must be read alike (the same number of steps, or refused too), and the bytes read as
+/// a compact record are refused or read, never a crash.
 bool readRecordInput(std::string_view data);
 /// A run folder read back by the replay's reader (replay::readRunFolder): the demo's manifest,
 /// the bytes up to the first NUL as record.jsonl, and after it summary.json (without a NUL, a

@@ -9,8 +9,8 @@
 namespace canopy::render {
 
 std::string coverageCsvOfRun(const std::filesystem::path& run_dir,
-                             std::optional<render::ImageSize> size) {
-  const sim::RunRecord run = sim::readRun(run_dir);
+                             std::optional<render::ImageSize> size, const sim::LineRange& steps) {
+  const sim::RunRecord run = sim::readRun(run_dir, steps);
   const spec::ScenarioSpec& spec = run.spec;
 
   std::vector<sensing::SensorDef> sensors;

@@ -214,7 +214,7 @@ RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpe
 
 std::vector<RecordedStep> readRecord(const fs::path& path, const spec::ScenarioSpec& spec) {
   std::vector<RecordedStep> steps;
-  sim::forEachRecordLine(readText(path, "record"), [&](const std::string& line, int number) {
+  sim::forEachRecordLine(path, {}, [&](const std::string& line, int number) {
     const LineReader r(path, number);
     if (line.size() > spec::kMaxResultLineBytes)
       r.fail("", "a line of at most 256 MiB (one step of `canopy run`)");
@@ -262,7 +262,7 @@ RunFolder readRunFolder(const fs::path& dir) {
   RunFolder run;
   run.dir = dir;
   run.spec = sim::readManifest(dir / "manifest.json");
-  run.steps = readRecord(dir / "record.jsonl", run.spec);
+  run.steps = readRecord(sim::recordFileOf(dir), run.spec);
   run.ospa = readOspa(dir / "summary.json", run.spec.uavs.size(), run.steps.size());
   return run;
 }

@@ -19,11 +19,11 @@ namespace fs = std::filesystem;
 using spec::Json;
 using spec::ScenarioError;
 
-// Bounded like a scenario file: a regular file (not a FIFO, device, directory or link), a
-// manifest at most kMaxJsonBytes, a record at most kMaxResultBytes.
+// Bounded like a scenario file: a regular file (not a FIFO, device, directory or link) of at
+// most kMaxJsonBytes.
 std::string readResultFile(const fs::path& path, const std::string& what) {
   return spec::readResultText(path, "the " + what + " that `canopy run` writes",
-                              what == "record" ? spec::kMaxResultBytes : spec::kMaxJsonBytes);
+                              spec::kMaxJsonBytes);
 }
 
 // One record line's field, or a ScenarioError naming the line and the field.
@@ -94,9 +94,10 @@ spec::ScenarioSpec readManifest(const fs::path& path) {
 }
 
 std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
-                                                  const spec::ScenarioSpec& spec) {
+                                                  const spec::ScenarioSpec& spec,
+                                                  const LineRange& range) {
   std::vector<world::WorldSnapshot> steps;
-  forEachRecordLine(readResultFile(path, "record"), [&](const std::string& line, int number) {
+  forEachRecordLine(path, range, [&](const std::string& line, int number) {
     const LineReader r(path, number);
     if (line.size() > spec::kMaxResultLineBytes)
       r.fail("", "a line of at most 256 MiB (one step of `canopy run`)");
@@ -135,7 +136,7 @@ std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
   return steps;
 }
 
-RunRecord readRun(const fs::path& run_dir) {
+RunRecord readRun(const fs::path& run_dir, const LineRange& range) {
   std::error_code error;
   if (!fs::is_directory(run_dir, error)) {
     throw ScenarioError(run_dir.string(), "",
@@ -143,7 +144,7 @@ RunRecord readRun(const fs::path& run_dir) {
   }
   RunRecord run;
   run.spec = readManifest(run_dir / "manifest.json");
-  run.truth = readRecordTruth(run_dir / "record.jsonl", run.spec);
+  run.truth = readRecordTruth(recordFileOf(run_dir), run.spec, range);
   return run;
 }
 

@@ -270,10 +270,18 @@ std::string recordLine(const std::vector<std::string>& labels, const StepRecord&
   return line;
 }
 
-Recorder::Recorder(const std::filesystem::path& dir, const spec::ScenarioSpec& spec)
-    : record_(dir / "record.jsonl"),
+Recorder::Recorder(const std::filesystem::path& dir, const spec::ScenarioSpec& spec,
+                   RecordFormat format, BlockSize block)
+    : record_(dir / (resolveRecordFormat(format, spec) == RecordFormat::compact
+                         ? kRecordCompactName
+                         : kRecordJsonlName)),
       timings_(dir / "timings.jsonl"),
-      lines_(std::make_unique<RecordLineWriter>(spec.labels)) {}
+      lines_(std::make_unique<RecordLineWriter>(spec.labels)) {
+  if (resolveRecordFormat(format, spec) == RecordFormat::compact) {
+    compact_ = std::make_unique<CompactRecordWriter>(
+        [this](std::string_view bytes) { record_.write(bytes); }, block);
+  }
+}
 
 Recorder::~Recorder() = default;
 
@@ -281,7 +289,11 @@ void Recorder::onStep(const StepRecord& record) {
   line_.clear();  // keeps its capacity: no allocation per step once the longest line was seen
   lines_->write(record, line_);
   line_ += '\n';
-  record_.write(line_);
+  if (compact_) {
+    compact_->append(line_);
+  } else {
+    record_.write(line_);
+  }
   if (record.plan) {
     using Json = nlohmann::json;
     Json seconds = Json::array();
@@ -293,6 +305,7 @@ void Recorder::onStep(const StepRecord& record) {
 }
 
 void Recorder::commit() {
+  if (compact_) compact_->finish();
   record_.commit();
   timings_.commit();
 }

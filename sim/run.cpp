@@ -55,15 +55,15 @@ namespace {
 
 // What a run writes in its directory. summary.json, the mark of a finished run, comes first: it
 // is removed before anything else and written after everything else.
-constexpr std::array<const char*, 4> kRunFiles = {"summary.json", "manifest.json", "record.jsonl",
-                                                  "timings.jsonl"};
+constexpr std::array<const char*, 5> kRunFiles = {"summary.json", "manifest.json", kRecordJsonlName,
+                                                  kRecordCompactName, "timings.jsonl"};
 
 RunResult simulate(const spec::ScenarioSpec& spec, const RunOptions& options) {
   writeFileAtomically(options.out_dir / "manifest.json",
                       manifestJson(spec, options.command_line) + "\n");
   const auto start = std::chrono::steady_clock::now();
   Simulation sim(spec, options.threads);
-  Recorder recorder(options.out_dir, spec);
+  Recorder recorder(options.out_dir, spec, options.record, options.record_blocks);
   SummaryBuilder summary(spec);
   std::vector<StepObserver*> observers = {&recorder, &summary};
   // With threads to spare, the record and summary are written one step behind, on their own

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/compact_record.h"
+#include "sim/record_lines.h"
 #include "sim/step_observer.h"
 #include "spec/scenario_spec.h"
 
@@ -14,6 +16,9 @@ struct RunOptions {
   std::string command_line;              // recorded in the manifest
   std::vector<StepObserver*> observers;  // after the record and summary, e.g. the frames
   int threads = 1;  // Simulation's threads (1..Simulation::kMaxThreads): the same bits at any count
+  /// record.jsonl, record.jsonl.zst, or by the estimated size (record_lines.h)
+  RecordFormat record = RecordFormat::automatic;
+  BlockSize record_blocks{};  // the compact form's blocks
 };
 
 struct RunResult {
@@ -22,7 +27,8 @@ struct RunResult {
   std::string summary_json;
 };
 
-/// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl and
+/// Runs the scenario to its end and writes the outputs: manifest.json, then record.jsonl (or
+/// record.jsonl.zst, options.record) and
 /// timings.jsonl (streamed, published when the run ends), then summary.json. An earlier run's
 /// files in out_dir are removed first; a run that fails (WriteError on any write, or an exception
 /// from an observer, a state that is not finite) removes whatever of these it wrote, frames
@@ -30,7 +36,7 @@ struct RunResult {
 /// a summary of a run that did not finish. checkRunOutputs runs before anything is removed.
 RunResult runScenario(const spec::ScenarioSpec& spec, const RunOptions& options);
 
-/// Refuses (OutputRefused) a run folder where a file of the run (manifest.json, record.jsonl,
+/// Refuses (OutputRefused) a run folder where a file of the run (manifest.json, record.jsonl[.zst],
 /// timings.jsonl, summary.json, replay.html, frames.mp4, frames/*) exists and is not a regular
 /// file or a link: a device, FIFO, socket or directory there is not the run's to replace.
 /// runScenario calls it first; the command line calls it before anything else is built.

@@ -22,11 +22,11 @@ if _os.path.isdir(_os.path.join(_BUILTIN, "library")):
 from ._canopy import ScenarioError, Simulation, library_scenarios  # noqa: E402
 from .scenario import Scenario, load  # noqa: E402
 from . import forest  # noqa: E402
-from .jobs import analyze, read_run, run, sweep  # noqa: E402
+from .jobs import analyze, read_record, read_run, run, sweep  # noqa: E402
 from .env import TrackingEnv  # noqa: E402
 from .vector import VectorEnv  # noqa: E402
 
 __version__ = "0.1.0"
 
 __all__ = ["ScenarioError", "Simulation", "Scenario", "load", "forest", "library_scenarios",
-           "run", "sweep", "analyze", "read_run", "TrackingEnv", "VectorEnv"]
+           "run", "sweep", "analyze", "read_run", "read_record", "TrackingEnv", "VectorEnv"]

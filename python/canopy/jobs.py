@@ -11,7 +11,8 @@ from .scenario import Scenario, load
 
 def run(scenario, out, seed=None, frames=False, frame_every=1, size=None):
     """Runs ``scenario`` (a Scenario, a built-in name or a file) to its end and writes what
-    ``canopy run`` writes into ``out``: manifest.json, record.jsonl, timings.jsonl, summary.json
+    ``canopy run`` writes into ``out``: manifest.json, record.jsonl (record.jsonl.zst at city
+    scale, read it with read_record), timings.jsonl, summary.json
     and, with ``frames``, frames/frame_NNNNNN.png every ``frame_every`` steps (``size`` = (width,
     height) px, default the CLI's). Returns summary.json as a dict."""
     fn = "canopy.run"
@@ -38,12 +39,39 @@ def sweep(file, out, jobs=1, allowed_roots=()):
     return _canopy._sweep(file, out, jobs, roots)
 
 
-def read_run(dir):
+_ALL_STEPS = 2**64 - 1
+
+
+def _steps(steps, fn):
+    """(first, end) of ``steps``: None (every step) or a pair (A, B) of integers, steps A..B-1."""
+    if steps is None:
+        return 0, _ALL_STEPS
+    if (not isinstance(steps, tuple) or len(steps) != 2
+            or not all(isinstance(s, int) and not isinstance(s, bool) for s in steps)
+            or not 0 <= steps[0] < steps[1] <= _ALL_STEPS):
+        raise _args.error(fn, "steps", "expected None or a pair (A, B) of integers with "
+                          f"0 <= A < B, got {_args._shown(steps)}")
+    return steps
+
+
+def read_run(dir, steps=None):
     """The truth of a finished run (the --out folder of canopy.run or ``canopy run``), read back
-    from manifest.json and record.jsonl: a dict of numpy arrays k (K), t (K), uav_positions
-    (K, U, 2), uav_yaw (K, U) and target_positions (K, T, 2). Raises ScenarioError naming the
-    file, the line and the field when the folder is not a finished run."""
-    return _canopy.read_run(_args.path(dir, "canopy.read_run", "dir"))
+    from manifest.json and the record (record.jsonl or the compact record.jsonl.zst): a dict of
+    numpy arrays k (K), t (K), uav_positions (K, U, 2), uav_yaw (K, U) and target_positions
+    (K, T, 2). ``steps`` = (A, B): steps A..B-1 only (the compact record decodes only their
+    blocks). Raises ScenarioError naming the file, the line and the field when the folder is not
+    a finished run."""
+    fn = "canopy.read_run"
+    return _canopy._read_run(_args.path(dir, fn, "dir"), *_steps(steps, fn))
+
+
+def read_record(dir, steps=None):
+    """The record of a finished run as a list of dicts, one per step: the JSON lines of
+    record.jsonl (``canopy record DIR`` prints them), from either form. ``steps`` = (A, B):
+    steps A..B-1 only."""
+    fn = "canopy.read_record"
+    lines = _canopy._record_lines(_args.path(dir, fn, "dir"), *_steps(steps, fn))
+    return [json.loads(line) for line in lines]
 
 
 def _column(values):

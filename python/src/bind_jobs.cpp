@@ -84,11 +84,11 @@ void analyzeJob(const std::string& dir, const std::string& out,
 
 /// The truth of a finished run through the one record reader (sim/record_reader.h), as arrays:
 /// k (K), t (K), uav_positions (K, U, 2), uav_yaw (K, U), target_positions (K, T, 2).
-py::dict readRunJob(const std::string& dir) {
+py::dict readRunJob(const std::string& dir, std::uint64_t first, std::uint64_t end) {
   sim::RunRecord run;
   {
     py::gil_scoped_release release;
-    run = sim::readRun(dir);
+    run = sim::readRun(dir, {first, end});
   }
   const auto K = static_cast<py::ssize_t>(run.truth.size());
   const auto U = static_cast<py::ssize_t>(run.spec.uavs.size());
@@ -180,11 +180,22 @@ void bindJobs(py::module_& m) {
       py::arg("file"), py::arg("out"), py::arg("jobs"), py::arg("roots"));
   m.def("_image_sides",
         [] { return std::make_pair(render::kMinImageSide, render::kMaxImageSide); });
-  m.def("read_run", &readRunJob, py::arg("dir"),
-        R"(The truth of a finished run (the --out folder of canopy.run or `canopy run`), read back
-from manifest.json and record.jsonl: a dict of numpy arrays k (K), t (K), uav_positions (K, U, 2),
-uav_yaw (K, U) and target_positions (K, T, 2). Raises ScenarioError naming the file, the line and
-the field when the folder is not a finished run.)");
+  m.def("_read_run", &readRunJob, py::arg("dir"), py::arg("first"), py::arg("end"));
+  // The record's lines [first, end) as bytes, from either form (sim/record_lines.h).
+  m.def(
+      "_record_lines",
+      [](const std::string& dir, std::uint64_t first, std::uint64_t end) {
+        std::vector<std::string> lines;
+        {
+          py::gil_scoped_release release;
+          sim::forEachRecordLine(sim::recordFileOf(dir), {first, end},
+                                 [&](const std::string& line, int) { lines.push_back(line); });
+        }
+        py::list out;
+        for (const std::string& line : lines) out.append(py::bytes(line));
+        return out;
+      },
+      py::arg("dir"), py::arg("first"), py::arg("end"));
   m.def("_analyze", &analyzeJob, py::arg("dir"), py::arg("out"), py::arg("roots"),
         py::arg("figures"));
 }

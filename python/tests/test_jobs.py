@@ -38,6 +38,24 @@ def test_read_run_gives_the_records_truth(tmp_path):
             assert list(run["target_positions"][s, j]) == target["p"]
 
 
+def test_read_record_and_read_run_read_the_compact_form_as_the_plain_one(tmp_path, cli):
+    for form in ("jsonl", "compact"):
+        cli("run", "demo", "--set", "clock.duration=4", "--record", form, "--out", tmp_path / form)
+    assert (tmp_path / "compact" / "record.jsonl.zst").exists()
+    plain = [json.loads(line) for line in (tmp_path / "jsonl" / "record.jsonl").read_bytes().splitlines()]
+    assert len(plain) == 21
+    assert canopy.read_record(tmp_path / "compact") == plain
+    assert canopy.read_record(tmp_path / "jsonl") == plain
+    assert canopy.read_record(tmp_path / "compact", steps=(5, 8)) == plain[5:8]
+    whole, part = canopy.read_run(tmp_path / "compact"), canopy.read_run(tmp_path / "compact", steps=(5, 8))
+    assert list(part["k"]) == [5, 6, 7]
+    assert np.array_equal(part["uav_positions"], whole["uav_positions"][5:8])
+    assert np.array_equal(whole["target_positions"], canopy.read_run(tmp_path / "jsonl")["target_positions"])
+    for bad in ((3, 3), (-1, 2), [0, 2], (0.5, 2), "0:2"):
+        with np.testing.assert_raises_regex(canopy.ScenarioError, "canopy.read_record: steps: expected"):
+            canopy.read_record(tmp_path / "compact", steps=bad)
+
+
 def test_read_run_names_the_file_it_cannot_read(tmp_path):
     with np.testing.assert_raises_regex(canopy.ScenarioError, "manifest.json: missing"):
         canopy.read_run(str(tmp_path))

@@ -22,7 +22,8 @@ TEST(HelpCli, EveryCommandHasHelpListingItsOptionsWithDefaults) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> commands = {
       {"run", {"--out DIR", "--seed N", "--json", "--frames", "--fps F", "--budget K"}},
       {"validate", {"--set PATH=VALUE", "--allow-path DIR"}},
-      {"coverage", {"--size WxH", "--check GOLDEN.csv", "--tolerance F"}},
+      {"coverage", {"--size WxH", "--steps A:B", "--check GOLDEN.csv", "--tolerance F"}},
+      {"record", {"--steps A:B", "--agent I"}},
       {"sweep", {"--jobs N", "--shard I/N", "--mpi", "--status DIR"}},
       {"analyze", {"--out DIR", "--state NAME", "--before-hiding S"}},
       {"reproduce", {"--trials N", "--seed S"}},
@@ -126,8 +127,9 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
     for (std::sregex_iterator o(rest.begin(), rest.end(), option_name); o != end; ++o)
       readme_options[(*m)[1]].insert(o->str());
   }
-  const std::set<std::string> commands = {"run",     "validate",  "coverage", "view",   "sweep",
-                                          "analyze", "reproduce", "forest",   "schema", "list"};
+  const std::set<std::string> commands = {"run",   "validate", "coverage",  "view",
+                                          "record", "sweep",   "analyze",   "reproduce",
+                                          "forest", "schema",  "list"};
   std::set<std::string> in_readme;
   for (const auto& [command, options] : readme_options) in_readme.insert(command);
   EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
@@ -141,6 +143,9 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
                                                       {"L", "0.01"},
                                                       {"WxH", "64x48"},
                                                       {"I/N", "0/2"},
+                                                      {"I", "0"},
+                                                      {"A:B", "0:2"},
+                                                      {"auto|jsonl|compact", "jsonl"},
                                                       {"NAME", "x"},
                                                       {"GOLDEN.csv", "g.csv"},
                                                       {"FILE", "page.html"},

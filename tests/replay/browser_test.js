@@ -11,6 +11,7 @@ const expect = require("./record.js");
 const { stepTimes } = require("./step_time.js");
 
 const [canopy, source, work] = process.argv.slice(2);
+expect.setCanopy(canopy);
 const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
 if (!fs.existsSync(chromium)) {
   console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");

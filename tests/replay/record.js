@@ -1,5 +1,5 @@
-// What the browser tests expect, derived from a run's own files (record.jsonl, summary.json,
-// manifest.json), never from the page.
+// What the browser tests expect, derived from a run's own files (record.jsonl or, at city scale,
+// `canopy record` of record.jsonl.zst; summary.json, manifest.json), never from the page.
 "use strict";
 
 const fs = require("fs");
@@ -9,8 +9,21 @@ const path = require("path");
 const PALETTE = [[31, 119, 180], [230, 120, 20], [148, 103, 189], [214, 39, 40],
   [23, 170, 190], [140, 86, 75], [227, 119, 194], [188, 170, 34]];
 
+// The canopy program, for `canopy record DIR`: a run at city scale writes record.jsonl.zst.
+let canopyBinary = null;
+function setCanopy(binary) { canopyBinary = binary; }
+
+// The record's JSON lines: record.jsonl, or what `canopy record` prints of record.jsonl.zst.
+function recordText(dir) {
+  if (fs.existsSync(path.join(dir, "record.jsonl"))) return fs.readFileSync(path.join(dir, "record.jsonl"), "utf8");
+  const r = require("child_process").spawnSync(canopyBinary, ["record", dir],
+    { encoding: "utf8", maxBuffer: 1 << 30 });
+  if (r.status !== 0) throw new Error("canopy record " + dir + ": " + r.stderr);
+  return r.stdout;
+}
+
 function readRun(dir) {
-  const record = fs.readFileSync(path.join(dir, "record.jsonl"), "utf8").split("\n")
+  const record = recordText(dir).split("\n")
     .filter((l) => l.trim()).map((l) => JSON.parse(l));
   const summary = JSON.parse(fs.readFileSync(path.join(dir, "summary.json"), "utf8"));
   const config = JSON.parse(fs.readFileSync(path.join(dir, "manifest.json"), "utf8")).effective_config;
@@ -94,4 +107,4 @@ function footprint(run, k, i) {
   return out;
 }
 
-module.exports = { PALETTE, readRun, owners, trackOf, targetAt, footprint };
+module.exports = { PALETTE, setCanopy, readRun, owners, trackOf, targetAt, footprint };
