@@ -160,6 +160,15 @@ class NominalCost {
   // addTerminalPenalty() with many tracks or fixed UAVs (preparePenalty's penalty_merge_,
   // penalty_nearest_): the same order and charges, the same bits, with fewer instructions.
   double addTerminalPenaltyAtScale(int lane, double J);
+  // Their shared parts: the uncovered tracks by decreasing trace into uncovered_ (their count),
+  // and the least D_i + distance over the penalty's UAVs by index.
+  struct Charge {
+    std::size_t entry;
+    double total, distance;  // m, D_i + |p_{i,H} − z_{j,H}| and |p_{i,H} − z_{j,H}|
+  };
+  int sortUncovered(int lane);
+  Charge leastChargeByIndex(const Vec2* final_position, const Vec2& z,
+                            const double* fixed_distance) const;
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
   // free, and the fixed UAVs' distances to each track at m = H.
   void preparePenalty(const std::vector<char>& is_free);

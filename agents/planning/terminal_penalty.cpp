@@ -8,15 +8,11 @@
 
 namespace canopy::agents::planning {
 
-double NominalCost::addTerminalPenalty(int lane, double J) {
-  if (!terminal_ || charged_.empty()) return J;
-  // Many tracks or UAVs: the same bits by a merge and a nearest-first search.
-  if (penalty_merge_ || penalty_nearest_) return addTerminalPenaltyAtScale(lane, J);
-  const int T = horizon_ * substeps_;
+// Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the order J
+// sums them), into uncovered_ by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
+// insertion sort); their count.
+inline int NominalCost::sortUncovered(int lane) {
   auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
-  // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
-  // order J sums them), by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
-  // insertion sort).
   int count = 0;
   for (const int j : penalty_tracks_) {
     if (in_view_final_[kLanes * j + lane] != 0) continue;
@@ -26,6 +22,35 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
     }
     uncovered_[slot] = j;
   }
+  return count;
+}
+
+// The entry of penalty_uavs_ with the least D_i + |p_{i,H} − z_{j,H}|, every entry by index (the
+// first least one wins): the free UAVs' distances from this lane's final positions, the fixed
+// ones' from prepare().
+inline NominalCost::Charge NominalCost::leastChargeByIndex(const Vec2* final_position,
+                                                           const Vec2& z,
+                                                           const double* fixed_distance) const {
+  Charge least{0, std::numeric_limits<double>::infinity(), 0.0};
+  for (std::size_t k = 0; k < penalty_uavs_.size(); ++k) {
+    // |p_{i,H} − z_{j,H}|
+    const double distance =
+        penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
+    if (charged_[k] + distance < least.total) least = {k, charged_[k] + distance, distance};
+  }
+  return least;
+}
+
+double NominalCost::addTerminalPenalty(int lane, double J) {
+  if (!terminal_ || charged_.empty()) return J;
+  // Many tracks or UAVs: the same bits by a merge and a nearest-first search.
+  if (penalty_merge_ || penalty_nearest_) return addTerminalPenaltyAtScale(lane, J);
+  const int T = horizon_ * substeps_;
+  auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
+  // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
+  // order J sums them), by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
+  // insertion sort).
+  const int count = sortUncovered(lane);
   // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
   const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   const std::size_t n_charged = penalty_uavs_.size();
@@ -34,19 +59,10 @@ double NominalCost::addTerminalPenalty(int lane, double J) {
     const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
     // |p_{i,H} − z_{j,H}| of the fixed UAVs, the same for every candidate: from prepare().
     const double* fixed_distance = &terminal_distance_[j * n_charged];
-    std::size_t best = 0;
-    double best_total = std::numeric_limits<double>::infinity(), best_distance = 0.0;
     // The UAVs the penalty charges (team scope: every UAV, by index, the paper's loop).
-    for (std::size_t k = 0; k < n_charged; ++k) {
-      // |p_{i,H} − z_{j,H}|
-      const double distance =
-          penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
-      if (charged_[k] + distance < best_total) {
-        best = k;
-        best_total = charged_[k] + distance;
-        best_distance = distance;
-      }
-    }
+    const Charge least = leastChargeByIndex(final_position, z, fixed_distance);
+    const std::size_t best = least.entry;
+    const double best_total = least.total, best_distance = least.distance;
     J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
     charged_[best] += best_distance;            // D_i += |p_{i,H} − z_{j,H}|
     charged_uavs_[c] = static_cast<int>(best);
@@ -90,16 +106,7 @@ double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
       }
     }
   }
-  if (!merged) {
-    for (const int j : penalty_tracks_) {
-      if (in_view_final_[kLanes * j + lane] != 0) continue;
-      int slot = count++;
-      for (; slot > 0 && traceFinal(uncovered_[slot - 1]) < traceFinal(j); --slot) {
-        uncovered_[slot] = uncovered_[slot - 1];
-      }
-      uncovered_[slot] = j;
-    }
-  }
+  if (!merged) count = sortUncovered(lane);
   // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
   const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   const std::size_t n_charged = penalty_uavs_.size();
@@ -129,17 +136,11 @@ double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
         if (fixed_distance[*k] > best_total) break;
         consider(*k, fixed_distance[*k]);
       }
-    } else {
-      for (std::size_t k = 0; k < n_charged; ++k) {  // by entry: the first least one wins
-        // |p_{i,H} − z_{j,H}|
-        const double distance =
-            penalty_free_[k] ? (final_position[penalty_uavs_[k]] - z).norm() : fixed_distance[k];
-        if (charged_[k] + distance < best_total) {
-          best = k;
-          best_total = charged_[k] + distance;
-          best_distance = distance;
-        }
-      }
+    } else {  // by entry: the first least one wins
+      const Charge least = leastChargeByIndex(final_position, z, fixed_distance);
+      best = least.entry;
+      best_total = least.total;
+      best_distance = least.distance;
     }
     J += weight_ * best_total * traceFinal(j);  // w (D_i + |p_{i,H} − z_{j,H}|) tr(P_{j,H}[pos])
     charged_[best] += best_distance;            // D_i += |p_{i,H} − z_{j,H}|
