@@ -9,6 +9,7 @@
 
 #include "agents/planning/nominal_cost.h"
 #include "core/random.h"
+#include "tests/agents/planning/cost_test_support.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -19,12 +20,7 @@ struct Scene {
   std::vector<Plan> plans;
 };
 
-TargetGaussian gaussian(Vec2 position, Vec2 velocity, double variance) {
-  TargetGaussian t;
-  t.x << position, velocity;
-  t.P = variance * Mat4::Identity();
-  return t;
-}
+using cost_test::target;
 
 // UAVs and people spread over a square; people in groups, with traces from certain to lost.
 Scene randomScene(RandomStream& rng, int n_uavs, int n_targets, int horizon) {
@@ -41,7 +37,7 @@ Scene randomScene(RandomStream& rng, int n_uavs, int n_targets, int horizon) {
   }
   for (int j = 0; j < n_targets; ++j) {
     const Vec2 near = scene.uavs[j % n_uavs].position;
-    scene.targets.push_back(gaussian(near + Vec2(rng.uniform(-40, 40), rng.uniform(-40, 40)),
+    scene.targets.push_back(target(near + Vec2(rng.uniform(-40, 40), rng.uniform(-40, 40)),
                                      Vec2(rng.uniform(-1.4, 1.4), rng.uniform(-1.4, 1.4)),
                                      std::exp(rng.uniform(-2.0, 5.0))));
   }
@@ -59,8 +55,8 @@ Scene tiedScene(int side, int horizon) {
       u.footprint.size = Vec2(20, 20);
       scene.uavs.push_back(u);
       scene.plans.push_back(Plan{std::vector<Vec2>(horizon, Vec2::Zero())});
-      scene.targets.push_back(gaussian(Vec2(100.0 * c + 50, 100.0 * r), Vec2::Zero(), 4.0));
-      scene.targets.push_back(gaussian(Vec2(100.0 * c, 100.0 * r + 50), Vec2::Zero(), 4.0));
+      scene.targets.push_back(target(Vec2(100.0 * c + 50, 100.0 * r), Vec2::Zero(), 4.0));
+      scene.targets.push_back(target(Vec2(100.0 * c, 100.0 * r + 50), Vec2::Zero(), 4.0));
     }
   }
   return scene;
