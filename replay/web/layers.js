@@ -19,6 +19,22 @@
   const widths = new Map();   // font and text → width (px)
   const sprites = new Map();  // small canvases drawn once and copied: names, a person's disc
 
+  // The sprite under `key`, drawn by draw(c) into a canvas of w × h CSS px at `ratio` device
+  // pixels per px the first time it is asked for, and copied from the cache after.
+  function cachedSprite(key, w, h, ratio, draw) {
+    let sprite = sprites.get(key);
+    if (!sprite) {
+      sprite = document.createElement("canvas");
+      sprite.width = Math.ceil(w * ratio);
+      sprite.height = Math.ceil(h * ratio);
+      const c = sprite.getContext("2d");
+      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+      draw(c);
+      sprites.set(key, sprite);
+    }
+    return sprite;
+  }
+
   // The layers a user toggles: key (the keyboard's digit is its place), id and label.
   CanopyReplay.LAYERS = [
     { id: "trees", label: "trees and walls" },
@@ -408,13 +424,8 @@
   function drawTargets(ctx, view, run, k) {
     // A person's disc is drawn once into a small canvas and copied (stroking a few hundred
     // circles a step costs milliseconds).
-    const ratio = view.ratio, key = "person " + ratio;
-    let sprite = sprites.get(key);
-    if (!sprite) {
-      sprite = document.createElement("canvas");
-      sprite.width = sprite.height = Math.ceil(14 * ratio);
-      const c = sprite.getContext("2d");
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+    const ratio = view.ratio;
+    const sprite = cachedSprite("person " + ratio, 14, 14, ratio, function (c) {
       c.beginPath();
       c.arc(7, 7, 5, 0, 2 * Math.PI);
       c.fillStyle = C.target;
@@ -422,8 +433,7 @@
       c.strokeStyle = C.white;
       c.lineWidth = 1.5;
       c.stroke();
-      sprites.set(key, sprite);
-    }
+    });
     for (let t = 0; t < run.targets.length; t++) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
       ctx.drawImage(sprite, s.x - 7, s.y - 7, sprite.width / ratio, sprite.height / ratio);
@@ -450,17 +460,10 @@
   // An agent's dart (18 px, heading along +x) drawn once per colour into a small canvas and
   // copied turned to its heading: stroking 64 outlines a step costs more than 64 copies.
   function dartSprite(ctx, s, yaw, colour, ratio) {
-    const key = "dart " + ratio + " " + colour;
-    let sprite = sprites.get(key);
-    if (!sprite) {
-      sprite = document.createElement("canvas");
-      sprite.width = sprite.height = Math.ceil(24 * ratio);
-      const c = sprite.getContext("2d");
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+    const sprite = cachedSprite("dart " + ratio + " " + colour, 24, 24, ratio, function (c) {
       c.lineJoin = "round";
       dart(c, { x: 12, y: 12 }, 0, 18, colour);
-      sprites.set(key, sprite);
-    }
+    });
     const cos = Math.cos(yaw), sin = Math.sin(yaw);
     // Screen y points down: a heading yaw turns the sprite by -yaw on the screen.
     ctx.setTransform(ratio * cos, -ratio * sin, ratio * sin, ratio * cos, ratio * s.x, ratio * s.y);
@@ -488,14 +491,7 @@
   // copies, not text layout.
   function label(ctx, s, text, dx, dy, ratio) {
     const key = ratio + "\n" + text;
-    let sprite = sprites.get(key);
-    if (!sprite) {
-      sprite = document.createElement("canvas");
-      const w = textWidth(ctx, text) + 6;
-      sprite.width = Math.ceil(w * ratio);
-      sprite.height = Math.ceil(20 * ratio);
-      const c = sprite.getContext("2d");
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
+    const sprite = sprites.get(key) || cachedSprite(key, textWidth(ctx, text) + 6, 20, ratio, function (c) {
       c.font = ctx.font;
       c.lineJoin = "round";
       c.lineWidth = 3;
@@ -503,8 +499,7 @@
       c.strokeText(text, 3, 15);
       c.fillStyle = C.text;
       c.fillText(text, 3, 15);
-      sprites.set(key, sprite);
-    }
+    });
     ctx.drawImage(sprite, Math.round((s.x + dx - 3) * ratio) / ratio, Math.round((s.y + dy - 15) * ratio) / ratio,
       sprite.width / ratio, sprite.height / ratio);
   }
