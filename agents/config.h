@@ -57,6 +57,9 @@ struct TrackingConfig {
   // track becomes lost (tr(P_pos) > delete_trace) and its velocity's σ stays within walk_speed,
   // its position's within the area's (a uniform spread over it), its mean inside the area.
   double walk_speed = 2.0;  // m/s
+  // A target track that a scan gave no measurement loses the mass its camera would have seen
+  // (agents/tracking/missed_detection.h); false: it keeps its prediction (plain JPDA).
+  bool negative_information = false;
   // Not a scenario field: the scenario's area of interest (the loader's aoi), the bound above.
   Aabb area{Vec2(-1e6, -1e6), Vec2(1e6, 1e6)};
 };

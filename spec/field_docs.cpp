@@ -140,6 +140,9 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"tracking.walk_speed", "m/s",
        "a known (pre-seeded) person's speed at most: bounds the velocity of a lost track, which "
        "is never deleted"},
+      {"tracking.negative_information", "",
+       "a target track that a scan gives no measurement loses the probability mass its camera "
+       "would have seen (P_D × P_G of it), moment-matched; false: it keeps its prediction"},
       {"fusion", "", "consensus fusion between agents"},
       {"fusion.method", "", "ci, hcmci or observer_average"},
       {"fusion.rounds", "", "L consensus rounds per step"},

@@ -5,6 +5,7 @@
 #include "agents/tracking/existence.h"
 #include "agents/tracking/known_people.h"
 #include "agents/tracking/measurement_model.h"
+#include "agents/tracking/missed_detection.h"
 #include "agents/tracking/motion_model.h"
 
 namespace canopy::agents::tracking {
@@ -146,6 +147,15 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     if constexpr (N == 3) {  // a crown's outline, from the measurement most likely its own
       const int l = jpdaf_.likelyMeasurement(k);
       if (l >= 0) track.outline.observe(scan.observations[obs_ids_[l]].outline);
+    }
+    if constexpr (N == 4) {
+      // Nothing of it in this scan: the camera's view says where it is not.
+      if (!track.detected && track.visibility > 0.0 && config_.negative_information) {
+        const double p_miss_visible = config_.p_detect * config_.gate_probability;  // P_D P_G
+        track.posterior = afterMissedDetection(track.prior, p_miss_visible, [&](const Vec2& p) {
+          return targetVisible(p, own_footprint, own_map, camera, scan.sensor_position);
+        });
+      }
     }
     if (track.detected) {
       track.expected_misses = 0;

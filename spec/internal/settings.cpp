@@ -119,6 +119,7 @@ void readTracking(ObjectReader& root, ScenarioSpec& spec) {
   t.merge_scans = reader.integer("merge_scans", t.merge_scans, 0, 1000);
   t.merge_distance = reader.number("merge_distance", t.merge_distance, Bound::positive);
   t.walk_speed = reader.number("walk_speed", t.walk_speed, Bound::positive);
+  t.negative_information = reader.boolean("negative_information", t.negative_information);
   checkExistenceThresholds(reader, t);
   reader.finish();
 }

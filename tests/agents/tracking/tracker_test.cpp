@@ -324,3 +324,33 @@ TEST(Tracker, ManyMeasurementsInOneGateBeyondCap) {
 
 }  // namespace
 }  // namespace canopy::agents::tracking
+
+namespace canopy::agents::tracking {
+namespace {
+
+// tracking.negative_information: a known person whose scan saw nothing, with the camera on one
+// side of where it could be, is moved away from what the camera saw (symmetric about the x axis:
+// y stays); off, it keeps its prediction exactly.
+TEST(Tracker, NegativeInformationMovesAMissedTrackAwayFromTheView) {
+  const sensing::Footprint right = discFootprint(Vec2(3.0, 0.0), 3.0);  // sees x ∈ [0, 6]
+  for (const bool negative : {false, true}) {
+    TrackingConfig config;
+    config.negative_information = negative;
+    config.preseed_variance = Vec4(4.0, 4.0, 0.25, 0.25);
+    Tracker tracker(0, config);
+    tracker.preseed(0, 1, Vec4(0.0, 0.0, 0.0, 0.0));
+    step(tracker, sensing::Scan{}, right);
+    const TargetTrack& t = tracker.targets()[0];
+    if (!negative) {
+      EXPECT_EQ(t.posterior.x, t.prior.x);
+      EXPECT_EQ(t.posterior.P, t.prior.P);
+      continue;
+    }
+    EXPECT_LT(t.posterior.x(0), t.prior.x(0) - 0.5);        // pushed to the unseen side
+    EXPECT_NEAR(t.posterior.x(1), t.prior.x(1), 1e-9);      // the view is symmetric in y
+    EXPECT_LT(t.posterior.P(0, 0), t.prior.P(0, 0));        // half the spread is ruled out
+  }
+}
+
+}  // namespace
+}  // namespace canopy::agents::tracking
