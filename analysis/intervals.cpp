@@ -4,8 +4,9 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <sstream>
+
+#include <boost/math/distributions/students_t.hpp>
 
 namespace canopy::analysis {
 
@@ -25,49 +26,10 @@ ConfidenceInterval wilsonInterval(int k, int n) {
   return {k == 0 ? 0.0 : std::max(0.0, centre - half), k == n ? 1.0 : std::min(1.0, centre + half)};
 }
 
-namespace {
-
-// A(t | ν) = P(|T| < t) for integer ν ≥ 1 (Abramowitz & Stegun 26.7.3 odd ν, 26.7.4 even ν), with
-// θ = atan(t / √ν):
-//   ν odd:  A = (2/π) [θ + sin θ (cos θ + (2/3) cos³θ + … + (2·4…(ν−3))/(1·3…(ν−2)) cos^{ν−2}θ)]
-//   ν even: A = sin θ [1 + (1/2) cos²θ + (1·3)/(2·4) cos⁴θ + … + (1·3…(ν−3))/(2·4…(ν−2))
-//   cos^{ν−2}θ]
-double centralProbability(double t, int df) {
-  const double theta = std::atan(t / std::sqrt(static_cast<double>(df)));
-  const double s = std::sin(theta), c = std::cos(theta), c2 = c * c;
-  if (df % 2 == 1) {
-    double sum = 0.0;
-    if (df > 1) {
-      double term = c;  // cos θ, then each next term × (j − 1)/j · cos²θ for j = 3, 5, …, ν − 2
-      sum = term;
-      for (int j = 3; j <= df - 2; j += 2) {
-        term *= (j - 1.0) / j * c2;
-        sum += term;
-      }
-    }
-    return 2.0 / std::numbers::pi * (theta + s * sum);
-  }
-  double term = 1.0, sum = 1.0;  // each next term × (j − 1)/j · cos²θ for j = 2, 4, …, ν − 2
-  for (int j = 2; j <= df - 2; j += 2) {
-    term *= (j - 1.0) / j * c2;
-    sum += term;
-  }
-  return s * sum;
-}
-
-}  // namespace
-
 double studentTQuantile(double p, int df) {
   assert(df >= 1 && p >= 0.5 && p < 1.0);
-  if (p == 0.5) return 0.0;
-  const double target = 2.0 * p - 1.0;  // P(|T| < t) = 2p − 1
-  double lo = 0.0, hi = 1.0;
-  while (centralProbability(hi, df) < target) hi *= 2.0;
-  for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (centralProbability(mid, df) < target ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
+  // Boost.Math (Debian libboost-dev): the inverse of the regularised incomplete beta function.
+  return boost::math::quantile(boost::math::students_t(static_cast<double>(df)), p);
 }
 
 void SampleMoments::add(double x) {

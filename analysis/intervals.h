@@ -25,7 +25,7 @@ struct ConfidenceInterval {
 ConfidenceInterval wilsonInterval(int k, int n);
 
 /// The p-quantile of Student's t distribution with df ≥ 1 degrees of freedom, for 0.5 ≤ p < 1,
-/// by bisection on its exact CDF for integer df (Abramowitz & Stegun 26.7.3–4).
+/// by Boost.Math's students_t.
 double studentTQuantile(double p, int df);
 
 /// Count, mean and variance of a sample, accumulated one value at a time (Welford 1962), so that
