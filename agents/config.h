@@ -145,6 +145,10 @@ struct PlannerConfig {
   OcclusionMapMode occlusion_map = OcclusionMapMode::dynamic;
   double discount = 1.0;    // γ
   bool full_trace = false;  // cost on tr(P) instead of tr(P_pos)
+  // cost_trace "custody": the stage cost is exp(−r²/tr(P_pos)), the probability that a track is
+  // more than r = custody_radius off (agents/planning/nominal_cost.h).
+  bool custody = false;
+  double custody_radius = 5.0;  // m
   bool terminal_penalty = true;
   double terminal_penalty_weight = 0.5;  // w
   CostScope cost_scope = CostScope::team;

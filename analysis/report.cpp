@@ -98,7 +98,10 @@ void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& r
      << (pso.warm_start ? ", warm start" : "") << "); terminal penalty "
      << (spec.planner.terminal_penalty ? "on, w = " + num(spec.planner.terminal_penalty_weight)
                                        : "off")
-     << "; cost on " << (spec.planner.full_trace ? "tr(P)" : "tr(P_pos)")
+     << "; cost on "
+     << (spec.planner.custody
+             ? "exp(−r²/tr(P_pos)), r = " + num(spec.planner.custody_radius) + " m"
+             : (spec.planner.full_trace ? "tr(P)" : "tr(P_pos)"))
      << "; γ = " << spec.planner.discount << ".\n";
   md << "- Sensing: range-bearing noise α " << quality.alpha << ", r0 " << quality.r0
      << " m, noise drawn from R itself (truth_noise_scale " << spec.sensing.truth_noise_scale

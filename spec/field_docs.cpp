@@ -167,7 +167,12 @@ const std::vector<FieldDoc>& fieldDocs() {
        "the occlusion map the cost uses: a_priori (the true crowns), dynamic (crowns seen so far) "
        "or none"},
       {"planner.discount", "", "γ, discount per action"},
-      {"planner.cost_trace", "", "position (tr P_pos) or full (tr P)"},
+      {"planner.cost_trace", "",
+       "position (tr P_pos), full (tr P) or custody (exp(−r²/tr P_pos): the probability that a "
+       "track is more than custody_radius off)"},
+      {"planner.custody_radius", "m",
+       "cost_trace custody: the distance r within which a track holds its person (the team "
+       "measure's 5 m by default)"},
       {"planner.terminal_penalty", "", "add w × the distance to the tracks at the horizon's end"},
       {"planner.terminal_penalty_weight", "", "w of the terminal penalty"},
       {"planner.clearance", "m",

@@ -107,6 +107,7 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   s.period = config.plan_period;
   s.discount = config.discount;
   s.full_trace = config.full_trace;
+  s.custody_radius = config.custody ? config.custody_radius : 0.0;
   s.terminal_penalty = config.terminal_penalty;
   s.terminal_penalty_weight = config.terminal_penalty_weight;
   s.substeps = config.cost_substeps;
@@ -125,6 +126,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   const double dt = period_ = s.period;
   const double tau = dt / S;  // s, between samples
   full_trace_ = s.full_trace;
+  custody_r2_ = s.custody_radius * s.custody_radius;
   terminal_ = s.terminal_penalty;
   weight_ = s.terminal_penalty_weight;
   scope_ = s.scope;
@@ -291,7 +293,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   for (const int j : scope_tracks_) {
     for (int lane = 0; lane < kLanes; ++lane) {
       trace_final_[kLanes * j + lane] =
-          fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T].positionTrace();
+          penaltyWeight(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + T]);
       in_view_final_[kLanes * j + lane] =
           fixed_seen_[static_cast<std::size_t>(j) * T + T - 1] ? -1 : 0;
     }

@@ -2,6 +2,7 @@
 // The NBO cost of a joint plan (algorithms.md §6; paper eqs. 5–6), evaluated on nominal target
 // trajectories. Built once per planning call (prepare), then evaluated many times by the swarm
 // without allocating.
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -26,6 +27,7 @@ struct CostSettings {
   double period = 1.0;                   // s, Δ between planning steps
   double discount = 1.0;                 // γ (dimensionless)
   bool full_trace = false;               // tr(P) instead of tr(P_pos) in the stage cost
+  double custody_radius = 0.0;           // m, r > 0: the stage cost is exp(−r²/tr(P_pos))
   bool terminal_penalty = true;          // Miller et al. 2009 penalty at m = H
   double terminal_penalty_weight = 0.5;  // w, 1/m
   int substeps = 1;        // S samples per action (1: the plan instants only, the paper's setting)
@@ -47,6 +49,12 @@ struct PlanningProblem {
 
 /// J(a) = Σ_{m=1..H} γ^{m−1} Σ_j tr(P_{j,m}) + terminal penalty, as a function of the actions of
 /// the "free" UAVs; the other UAVs follow fixed plans given to prepare().
+///
+/// With cost_trace "custody" (custody_radius r > 0) each tr(P_{j,m}) becomes exp(−r²/tr(P_{j,m}[pos])),
+/// the probability that track j is more than r off its person (a Rayleigh tail: the position error
+/// taken isotropic), so J counts the people expected not held, and the terminal penalty weighs a
+/// track by that probability at m = H instead of its trace. A track already lost costs about 1
+/// whatever the plan; one at risk of being lost costs the most to neglect (docs/design-notes.md).
 ///
 /// The covariance recursion is the information update
 ///   P_{j,m} = (P⁻_{j,m}⁻¹ + Σ_{i∈V_{j,m}} Hᵀ R_i⁻¹ H)⁻¹,  P⁻_{j,m} = F P_{j,m−1} Fᵀ + Q(Δ),
@@ -146,10 +154,25 @@ class NominalCost {
   // fly() of a UAV that is not a ground robot for four plans at once, lane l flying plans[l]
   // (H actions each), into poses[t] for the H·S samples t; each lane gets fly()'s bits.
   void flyLanes(const Mover& uav, const Vec2* const (&plans)[kLanes], PoseLanes* poses) const;
-  // tr(P) or tr(P_pos), as full_trace_ says; Cov: SymmetricCov4 or CovarianceLanes.
+  // tr(P) or tr(P_pos), as full_trace_ says, or the custody loss of tr(P_pos); Cov:
+  // SymmetricCov4 or CovarianceLanes.
   template <class Cov>
   [[gnu::always_inline]] auto stageTrace(const Cov& P) const {
+    if (custody_r2_ > 0.0) return custodyLoss(P.positionTrace());
     return full_trace_ ? P.trace() : P.positionTrace();
+  }
+  // What the terminal penalty weighs a track by at m = H: tr(P_pos), or its custody loss.
+  template <class Cov>
+  [[gnu::always_inline]] auto penaltyWeight(const Cov& P) const {
+    return custody_r2_ > 0.0 ? custodyLoss(P.positionTrace()) : P.positionTrace();
+  }
+  // Custody: with the position error isotropic, each axis of variance tr/2, |e| is Rayleigh and
+  // P(|e| > r) = exp(−r²/tr): the chance that the track is more than r off its person.
+  double custodyLoss(double trace) const { return std::exp(-custody_r2_ / trace); }
+  V4 custodyLoss(const V4& trace) const {
+    V4 loss;
+    for (int lane = 0; lane < kLanes; ++lane) loss[lane] = std::exp(-custody_r2_ / trace[lane]);
+    return loss;
   }
   // evaluate()'s body, compiled once per instruction set.
   void evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs);
@@ -184,6 +207,7 @@ class NominalCost {
   int substeps_ = 1;                   // S samples per action
   double period_ = 1.0;                // s, Δ
   bool full_trace_ = false;            // stage cost on tr(P) rather than tr(P_pos)
+  double custody_r2_ = 0.0;            // m², r² of the custody cost (0: the trace)
   bool terminal_ = true;               // add the terminal penalty
   double weight_ = 0.5;                // 1/m, w
   CostScope scope_ = CostScope::team;  // what J sums over (CostSettings::scope)

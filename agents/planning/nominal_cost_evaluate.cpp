@@ -130,7 +130,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         }
         if (t == T - 1) seen_final = seen;
       }
-      store(&trace_final_[kLanes * j], P.positionTrace());  // tr(P_{j,H}[pos])
+      store(&trace_final_[kLanes * j], penaltyWeight(P));  // tr(P_{j,H}[pos]) or its custody loss
       std::memcpy(&in_view_final_[kLanes * j], &seen_final, sizeof seen_final);
     }
     // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.

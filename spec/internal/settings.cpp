@@ -166,7 +166,11 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.occlusion_map =
       reader.enumeration("occlusion_map", agents::kOcclusionMapModeNames, p.occlusion_map);
   p.discount = reader.number("discount", p.discount, Bound::unit_interval);
-  p.full_trace = reader.choice("cost_trace", {"position", "full"}, p.full_trace ? 1 : 0) == 1;
+  const int trace = reader.choice("cost_trace", {"position", "full", "custody"},
+                                  p.custody ? 2 : (p.full_trace ? 1 : 0));
+  p.full_trace = trace == 1;
+  p.custody = trace == 2;
+  p.custody_radius = reader.number("custody_radius", p.custody_radius, Bound::positive);
   p.terminal_penalty = reader.boolean("terminal_penalty", p.terminal_penalty);
   p.terminal_penalty_weight =
       reader.number("terminal_penalty_weight", p.terminal_penalty_weight, Bound::non_negative);

@@ -204,11 +204,44 @@ double literalCost(const std::vector<TargetGaussian>& targets, const std::vector
       }
       P = information.inverse();
       if ((k + 1) % S == 0) {
-        J += std::pow(s.discount, k / S) * (s.full_trace ? P.trace() : P(0, 0) + P(1, 1));
+        const double stage =
+            s.custody_radius > 0.0
+                ? std::exp(-s.custody_radius * s.custody_radius / (P(0, 0) + P(1, 1)))
+                : (s.full_trace ? P.trace() : P(0, 0) + P(1, 1));
+        J += std::pow(s.discount, k / S) * stage;
       }
     }
   }
   return J;
+}
+
+// cost_trace "custody": each stage term is exp(−r²/tr(P_pos)) of the literal recursion's P, and
+// the terminal penalty weighs an unseen track by that probability at m = H: w·d·exp(−r²/tr_H).
+TEST(NominalCost, CustodyIsTheRayleighTailOfTheLiteralRecursion) {
+  std::vector<UavState> uavs(1);
+  uavs[0].position = Vec2(-3, 1);
+  uavs[0].footprint.size = Vec2(12, 8);
+  std::vector<Plan> plans(1);
+  plans[0].velocities = {Vec2(3, 0), Vec2(2, 1), Vec2(0, 0)};
+  // One walker the footprint passes over, one it never holds (30 m off, variance 4 m²).
+  const std::vector<TargetGaussian> targets{target({-2, 0}, {2.5, 0}),
+                                            target({30, 0}, {0, 0}, 4.0)};
+  const OcclusionMap map;
+  CostSettings s = settings(3, false);
+  s.custody_radius = 5.0;
+  const double expected = literalCost(targets, uavs, plans, s, map);
+  EXPECT_NEAR(nominalCost({targets, uavs, &map, s}, plans), expected, 1e-12 + 1e-9 * expected);
+  // The unseen track's P_pos at m = H = 3 by hand, per axis: 4 + 3²·4 from P₀ (no cross term),
+  // and the noise of each step i = 1, 2, 3 carried n = 3 − i steps on, σ_a² (Δ⁴/4 + n Δ³ + n² Δ²)
+  // with σ_a = Δ = 1: 6.25 + 2.25 + 0.25.
+  const double per_axis = 4.0 + 9.0 * 4.0 + (6.25 + 2.25 + 0.25);
+  const double loss = std::exp(-25.0 / (2.0 * per_axis));
+  // The UAV ends at (−3, 1) + (3, 0) + (2, 1) + (0, 0) = (2, 2); the walker at 30 m stays put.
+  const double distance = (Vec2(30, 0) - Vec2(2, 2)).norm();
+  CostSettings with_penalty = s;
+  with_penalty.terminal_penalty = true;
+  const double J_penalty = nominalCost({targets, uavs, &map, with_penalty}, plans);
+  EXPECT_NEAR(J_penalty - expected, with_penalty.terminal_penalty_weight * distance * loss, 1e-9);
 }
 
 TEST(NominalCost, SubstepsMatchTheLiteralRecursionAndPartialPreparation) {
