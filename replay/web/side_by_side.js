@@ -1,12 +1,14 @@
 // Two replay pages side by side (each in an iframe of its own, written whole into `srcdoc`) on
 // one clock: moving either page's step, or the slider above them, sets the other page to the step
-// of the same time (k = round(t / dt), clamped to its run). CanopySideBySide is what the browser
-// tests drive and read.
+// of the same time (k = round(t / dt), clamped to its run). Their views are linked (while "link
+// the views" is ticked): both open on the box of both runs, and a pan or zoom in one moves the
+// other to the same centre and scale. CanopySideBySide is what the browser tests drive and read.
 (function () {
   "use strict";
 
   const frames = [document.getElementById("run-a"), document.getElementById("run-b")];
   const slider = document.getElementById("clock-slider"), clock = document.getElementById("clock");
+  const link = document.getElementById("link-views");
   const side = { apps: [], time: 0 };
   window.CanopySideBySide = side;
 
@@ -36,8 +38,38 @@
     syncing = false;
   };
 
+  let linking = false;
+  // Moves every page's view but `from`'s to the centre and scale of `from`'s.
+  side.linkViews = function (from) {
+    if (linking || !link.checked) return;
+    linking = true;
+    const v = from.view;
+    side.apps.forEach(function (app) {
+      if (app === from || (app.view.cx === v.cx && app.view.cy === v.cy && app.view.scale === v.scale)) return;
+      app.view.cx = v.cx;
+      app.view.cy = v.cy;
+      app.view.scale = v.scale;
+      app.draw();
+    });
+    linking = false;
+  };
+
   side.ready = Promise.all(frames.map(readyOf)).then(function (apps) {
     side.apps = apps;
+    // Both pages open on the box that holds both runs.
+    const box = apps.map(function (app) { return app.box; }).reduce(function (a, b) {
+      return [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];
+    });
+    apps.forEach(function (app) {
+      app.box = box;
+      const ownDraw = app.draw.bind(app);
+      app.draw = function () {
+        ownDraw();
+        side.linkViews(app);
+      };
+    });
+    apps[0].fit();
+    link.addEventListener("change", function () { side.linkViews(apps[0]); });
     apps.forEach(function (app, n) {
       const own = app.setStep.bind(app);
       app.setStep = function (k) {

@@ -5,49 +5,18 @@
 
 const fs = require("fs");
 const path = require("path");
-const { spawnSync } = require("child_process");
 const { Browser, Page } = require("./cdp.js");
 const expect = require("./record.js");
 const { stepTimes } = require("./step_time.js");
+const { setCanopy, check, assert, canopyRun, mapPixels, finish, crashed } = require("./harness.js");
 
 const [canopy, source, work] = process.argv.slice(2);
 expect.setCanopy(canopy);
+setCanopy(canopy);
 const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
 if (!fs.existsSync(chromium)) {
   console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
   process.exit(77);
-}
-
-const results = [];
-async function check(name, body) {
-  try {
-    await body();
-    results.push(name);
-    console.log("ok - " + name);
-  } catch (e) {
-    results.push(null);
-    console.log("not ok - " + name + "\n    " + String(e && e.stack || e).split("\n").join("\n    "));
-  }
-}
-function assert(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
-function canopyRun(args) {
-  const r = spawnSync(canopy, args, { encoding: "utf8" });
-  if (r.status !== 0) throw new Error("canopy " + args.join(" ") + ": " + r.stderr);
-  return r;
-}
-
-// The map canvas's pixels (RGBA) as a Buffer, with its width and height.
-async function mapPixels(page) {
-  const r = await page.evaluate(`(() => {
-    const c = document.getElementById("map"), d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
-    let s = "";
-    for (let i = 0; i < d.length; i += 0x8000) s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
-    return { w: c.width, h: c.height, data: btoa(s) };
-  })()`);
-  return { w: r.w, h: r.h, data: Buffer.from(r.data, "base64") };
 }
 
 // Distance (px) from (x, y) to the polygon's boundary, negative inside.
@@ -505,13 +474,7 @@ async function main() {
   } finally {
     await browser.close();
   }
-  const failed = results.filter((r) => r === null).length;
-  console.log(`${results.length - failed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
+  finish();
 }
 
-main().catch((e) => {
-  console.log("not ok - the harness itself: " + (e && e.stack || e));
-  console.log("0 passed, 1 failed");
-  process.exit(1);
-});
+main().catch(crashed);
