@@ -172,23 +172,28 @@
   }
   CanopyReplay.drawWalls = drawWalls;
 
+  // A footprint narrower than SHADOW_PX on the screen shows no shadows: they would fill a few
+  // pixels at most (a city seen whole), and each costs a clip and a query of the trees.
+  const SHADOW_PX = 8;
+
   function drawSensors(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
-      const p = run.uav(k, i), f = agent.footprint;
-      ctx.save();
+      const p = run.uav(k, i), f = agent.footprint, r = reach(f), s = view.toScreen(p.x, p.y), rs = r * view.scale;
+      if (s.x + rs < -2 || s.y + rs < -2 || s.x - rs > view.width + 2 || s.y - rs > view.height + 2) return;  // off the map
+      const shadows = agent.los && 2 * rs >= SHADOW_PX;
+      if (shadows) ctx.save();
       footprintPath(ctx, view, f, p, p.yaw);
       ctx.fillStyle = rgba(agent.colour, 0.235);
       ctx.fill();
-      if (agent.los) {
+      if (shadows) {
         // The shadows of every crown near the footprint, kept inside it.
         ctx.clip();
         ctx.beginPath();
-        const r = reach(f);
         crownsNear(run, p, r).forEach(function (crown) { addShadow(ctx, view, p, crown, 2 * r + 1); });
         ctx.fillStyle = C.shadow;
         ctx.fill("nonzero");
+        ctx.restore();
       }
-      ctx.restore();
       footprintPath(ctx, view, f, p, p.yaw);
       ctx.strokeStyle = agent.colour;
       ctx.lineWidth = 1.5;
@@ -240,9 +245,12 @@
     ctx.stroke();
   }
 
-  // A trail lying within HIDDEN_PX of its person's symbol is under the disc (radius 5 px, drawn
-  // over it) even with its line's half-width: it is left out, as is a trail wholly off the map.
-  const HIDDEN_PX = 3.5;
+  // A trail lying within TRAIL_HIDDEN_PX of its person's symbol is under the disc (radius 5 px,
+  // drawn over it) even with its line's half-width: it is left out, as is a trail wholly off
+  // the map. trailStats counts, for the last draw, the trails drawn, those under their disc and
+  // those off the map.
+  CanopyReplay.TRAIL_HIDDEN_PX = 3.5;
+  CanopyReplay.trailStats = { drawn: 0, under: 0, off: 0 };
 
   function drawTrails(ctx, view, run, k) {
     const first = Math.max(0, k - Math.round(TRAIL_SECONDS / run.dt));
@@ -250,7 +258,8 @@
     ctx.lineWidth = 2;
     ctx.lineJoin = "round";
     if (k - first < 1) return;
-    const n = k - first + 1, xs = new Float64Array(n), ys = new Float64Array(n);
+    const n = k - first + 1, xs = new Float64Array(n), ys = new Float64Array(n), stats = { drawn: 0, under: 0, off: 0 };
+    CanopyReplay.trailStats = stats;
     ctx.beginPath();  // every person's trail in one path, stroked once
     for (let t = 0; t < run.targets.length; t++) {
       let far = 0, x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -261,7 +270,15 @@
         x0 = Math.min(x0, s.x); y0 = Math.min(y0, s.y); x1 = Math.max(x1, s.x); y1 = Math.max(y1, s.y);
       }
       for (let m = 0; m < n; m++) far = Math.max(far, Math.hypot(xs[m] - xs[n - 1], ys[m] - ys[n - 1]));
-      if (far <= HIDDEN_PX || x1 < -2 || y1 < -2 || x0 > view.width + 2 || y0 > view.height + 2) continue;
+      if (x1 < -2 || y1 < -2 || x0 > view.width + 2 || y0 > view.height + 2) {
+        stats.off++;
+        continue;
+      }
+      if (far <= CanopyReplay.TRAIL_HIDDEN_PX) {
+        stats.under++;
+        continue;
+      }
+      stats.drawn++;
       let lx = 0, ly = 0;
       for (let m = 0; m < n; m++) {
         // A point under a pixel from the last one drawn is left out (but never the newest).

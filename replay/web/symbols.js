@@ -6,22 +6,27 @@
   "use strict";
 
   const C = CanopyReplay.COLOURS;
-  const sprites = new Map();  // small canvases drawn once and copied: names, a person's disc
+  const sprites = new Map();  // key → the sprite drawn once and copied: names, a person's disc
 
   // The sprite under `key`, drawn by draw(c) into a canvas of w × h CSS px at `ratio` device
-  // pixels per px the first time it is asked for, and copied from the cache after.
+  // pixels per px the first time it is asked for, and copied from the cache after. The canvas
+  // is turned into an ImageBitmap in the background, which the browser copies faster; until it
+  // is ready the canvas (the same pixels) is copied.
   function cachedSprite(key, w, h, ratio, draw) {
-    let sprite = sprites.get(key);
-    if (!sprite) {
-      sprite = document.createElement("canvas");
-      sprite.width = Math.ceil(w * ratio);
-      sprite.height = Math.ceil(h * ratio);
-      const c = sprite.getContext("2d");
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
-      draw(c);
-      sprites.set(key, sprite);
+    const known = sprites.get(key);
+    if (known) return known.bitmap || known.canvas;
+    const canvas = document.createElement("canvas");
+    canvas.width = Math.ceil(w * ratio);
+    canvas.height = Math.ceil(h * ratio);
+    const c = canvas.getContext("2d");
+    c.setTransform(ratio, 0, 0, ratio, 0, 0);
+    draw(c);
+    const entry = { canvas: canvas, bitmap: null };
+    sprites.set(key, entry);
+    if (typeof createImageBitmap === "function") {
+      createImageBitmap(canvas).then(function (bitmap) { entry.bitmap = bitmap; }, function () {});
     }
-    return sprite;
+    return canvas;
   }
 
   function personDisc(c, x, y) {
@@ -121,7 +126,7 @@
       return;
     }
     const key = ratio + "\n" + font + "\n" + text;
-    const sprite = sprites.get(key) || cachedSprite(key, CanopyReplay.textWidth(ctx, text, font) + 6, 20, ratio, function (c) {
+    const sprite = cachedSprite(key, CanopyReplay.textWidth(ctx, text, font) + 6, 20, ratio, function (c) {
       c.font = font;
       haloText(c, text, 3, 15);
     });

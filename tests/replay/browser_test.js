@@ -376,6 +376,28 @@ async function main() {
         "close up: " + JSON.stringify(near));
       assert(near.stepped === near.before && near.after === near.before + 1, "renders: " + JSON.stringify(near));
       assert(cityTab.errors.length === 0, cityTab.errors.join("\n"));
+      // Trails lying under their person's disc are left out, and leaving them out changes no
+      // pixel: the map with them drawn (no trail left out) is the same, at the fit view and
+      // zoomed in 5- and 8-fold (where more and more trails show).
+      const seen = { under: 0, drawn: 0 };
+      const threshold = await cityTab.evaluate("CanopyReplay.TRAIL_HIDDEN_PX");
+      for (const zoom of [1, 5, 8]) {
+        await cityTab.evaluate(`(() => { const app = CanopyReplay.app, v = app.view; app.fit();
+          v.zoom(${zoom}, v.width / 2, v.height / 2); app.setStep(12); })()`);
+        const culled = await mapPixels(cityTab), stats = await cityTab.evaluate("Object.assign({}, CanopyReplay.trailStats)");
+        await cityTab.evaluate("CanopyReplay.TRAIL_HIDDEN_PX = -1; CanopyReplay.app.draw()");
+        const whole = await mapPixels(cityTab), all = await cityTab.evaluate("Object.assign({}, CanopyReplay.trailStats)");
+        await cityTab.evaluate(`CanopyReplay.TRAIL_HIDDEN_PX = ${threshold}; CanopyReplay.app.draw()`);
+        let differ = 0;
+        for (let o = 0; o < whole.data.length; o++) if (whole.data[o] !== culled.data[o]) differ++;
+        console.log(`    zoom ${zoom}: ${stats.under} trails under their disc, ${stats.off} off the map, ${stats.drawn} drawn; ${differ} bytes differ`);
+        assert(all.under === 0 && all.off === stats.off && all.drawn === stats.drawn + stats.under,
+          "trails " + JSON.stringify([stats, all]));
+        assert(differ === 0, differ + " bytes differ with the hidden trails drawn");
+        seen.under += stats.under;
+        seen.drawn += stats.drawn;
+      }
+      assert(seen.under > 0 && seen.drawn > 0, "no trail under its disc, or none drawn: " + JSON.stringify(seen));
     });
 
     await check("64 agents: a colour each, a person's timeline lists only the agents that held it, an axis in seconds", async () => {
