@@ -141,7 +141,7 @@
       (n.sent.length ? " (plans of " + n.sent.map(function (m) { return m.about; }).join(", ") + ")" : ""), "mono"));
     const status = {};
     n.held.forEach(function (h) { status[h.status] = (status[h.status] || 0) + 1; });
-    box.appendChild(element("div", "teammates' plans held: " + (n.held.length
+    box.appendChild(element("div", "received (teammates' plans held): " + (n.held.length
       ? Object.keys(status).sort().map(function (s) { return status[s] + " " + s; }).join(", ") : "none"), "mono"));
     box.appendChild(element("div", n.tracks.length + " tracks, " + n.inFootprint + " people in its footprint, " +
       n.visible + " seen", "mono"));

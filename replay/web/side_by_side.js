@@ -2,7 +2,9 @@
 // one clock: moving either page's step, or the slider above them, sets the other page to the step
 // of the same time (k = round(t / dt), clamped to its run). Their views are linked (while "link
 // the views" is ticked): both open on the box of both runs, and a pan or zoom in one moves the
-// other to the same centre and scale. CanopySideBySide is what the browser tests drive and read.
+// other to the same centre and scale. The address's fragment (#t=SECONDS&view=CX,CY,SCALE) holds
+// the time and the left page's view, and opening it restores them. CanopySideBySide is what the
+// browser tests drive and read.
 (function () {
   "use strict";
 
@@ -36,7 +38,38 @@
     slider.value = String(t);
     clock.textContent = "t = " + t.toFixed(2) + " s";
     syncing = false;
+    noteState();
   };
+
+  // Writes the fragment a moment after the last change (as share.js does for one page).
+  let timer = null;
+  function noteState() {
+    clearTimeout(timer);
+    timer = setTimeout(function () {
+      if (!side.apps.length) return;
+      const v = side.apps[0].view;
+      history.replaceState(null, "", "#t=" + String(+side.time.toPrecision(12)) + "&view=" +
+        [v.cx, v.cy, v.scale].map(function (x) { return String(+x.toPrecision(12)); }).join(","));
+    }, 150);
+  }
+
+  // The time and view of a fragment, where it holds them.
+  function applyFragment(apps) {
+    const fields = {};
+    location.hash.replace(/^#/, "").split("&").forEach(function (part) {
+      const at = part.indexOf("=");
+      if (at > 0) fields[part.slice(0, at)] = part.slice(at + 1);
+    });
+    const view = (fields.view || "").split(",").map(Number);
+    if (view.length === 3 && view.every(isFinite) && view[2] > 0) {
+      apps[0].view.cx = view[0];
+      apps[0].view.cy = view[1];
+      apps[0].view.scale = view[2];
+      apps[0].draw();
+    }
+    const t = Number(fields.t);
+    if (fields.t !== undefined && isFinite(t) && t >= 0) side.setTime(t);
+  }
 
   let linking = false;
   // Moves every page's view but `from`'s to the centre and scale of `from`'s.
@@ -66,6 +99,7 @@
       app.draw = function () {
         ownDraw();
         side.linkViews(app);
+        noteState();
       };
     });
     apps[0].fit();
@@ -81,5 +115,6 @@
     slider.max = String(end);
     slider.addEventListener("input", function () { side.setTime(+slider.value); });
     side.setTime(0);
+    applyFragment(apps);
   });
 })();

@@ -256,7 +256,7 @@ async function main() {
       assert(page.errors.length === 0, page.errors.join("\n"));
     });
 
-    await check("side by side: a zoom or a drag in one page moves the other's view with it", async () => {
+    await check("side by side: a zoom or a drag in one page moves the other's view with it; a link keeps time and view", async () => {
       const b = path.join(work, "probe_fine"), out = path.join(work, "side_by_side.html");
       canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--set", "clock.dt=0.1",
         "--set", "uavs.0.start=[-35,25]", "--out", b]);
@@ -290,6 +290,20 @@ async function main() {
       await tab.drag(Math.round(right.x), Math.round(right.y), Math.round(right.x) - 60, Math.round(right.y) + 30);
       const dragged = await views();
       assert(dragged[1][0] !== zoomed[1][0] && same(dragged), "after a drag on the right: " + JSON.stringify(dragged));
+      // The address holds the time and the view: a link opens both pages at the same steps and views.
+      await tab.evaluate(`(() => { const s = document.getElementById("clock-slider"); s.value = "5.1"; s.dispatchEvent(new Event("input")); })()`);
+      await new Promise((r) => setTimeout(r, 400));
+      const hash = await tab.evaluate("location.hash"), steps = () => "CanopySideBySide.apps.map((a) => a.state.k)";
+      const before = { steps: await tab.evaluate(steps()), views: await views() };
+      const link = await Page.open(browser, 1600, 900);
+      await link.navigate("file://" + path.resolve(out) + hash);
+      await link.evaluate("CanopySideBySide.ready.then(() => true)");
+      const after = { steps: await link.evaluate(steps()),
+        views: await link.evaluate("CanopySideBySide.apps.map((a) => [a.view.cx, a.view.cy, a.view.scale])") };
+      assert(/^#t=5\.1&view=/.test(hash) && JSON.stringify(after.steps) === JSON.stringify(before.steps) &&
+        after.views.every((v, n) => v.every((x, c) => near(x, before.views[n][c], 1e-9 * Math.abs(x) + 1e-9))),
+      `link ${hash}: ${JSON.stringify(after)}, shared ${JSON.stringify(before)}`);
+      await link.send("Page.close").catch(() => {});
       // Unlinked, a zoom moves one page only.
       await tab.evaluate(`(() => { const box = document.getElementById("link-views"); box.checked = false;
         box.dispatchEvent(new Event("change")); })()`);
