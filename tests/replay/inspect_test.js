@@ -163,6 +163,14 @@ async function main() {
           assert(Number.isNaN(w) ? g === null : near(g, w, 0.02), `person ${id} at k=${k}: ${g}, the record ${w}`);
         }
       }
+      // The person's numbers beside the map: the shown agent's track of it and its error.
+      for (const k of [5, 33, K - 1]) {
+        await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+        const got = await page.evaluate("Object.assign({}, document.getElementById('numbers').dataset)");
+        const w = person.error(k);
+        assert(got.kind === "target" && (Number.isNaN(w) ? got.error === "" : near(+got.error, w, 0.02)),
+          `person's numbers at k=${k}: error ${got.error}, the record ${w}`);
+      }
     });
 
     await check("the URL fragment holds step, layers, view, beliefs, selection and plot; opening it restores them", async () => {
