@@ -219,6 +219,7 @@
     app.draw();
     app.stats.firstPaintMs = performance.now() - started;
     app.stats.firstPaintSinceNavigation = performance.now();
+    CanopyReplay.warmNames(app.ctx, run, app.view.ratio);
   }
 
   // Resolves once the first step is drawn (the tests wait for it).

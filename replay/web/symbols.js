@@ -54,7 +54,9 @@
     for (let t = 0; t < run.targets.length; t++) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
       if (s.x < -7 || s.y < -7 || s.x > view.width + 7 || s.y > view.height + 7) continue;  // off the map
-      ctx.drawImage(sprite, s.x - 7, s.y - 7, sprite.width / ratio, sprite.height / ratio);
+      // At whole device pixels: a copy that needs no resampling (half a pixel at most off).
+      ctx.drawImage(sprite, Math.round((s.x - 7) * ratio) / ratio, Math.round((s.y - 7) * ratio) / ratio,
+        sprite.width / ratio, sprite.height / ratio);
     }
   }
 
@@ -117,6 +119,23 @@
     c.fillText(text, x, y);
   }
 
+  // The sprite of a name in bold on a white halo (baseline at 15 px, left end at 3 px).
+  function nameSprite(ctx, text, ratio, font) {
+    return cachedSprite(ratio + "\n" + font + "\n" + text, CanopyReplay.textWidth(ctx, text, font) + 6, 20, ratio,
+      function (c) {
+        c.font = font;
+        haloText(c, text, 3, 15);
+      });
+  }
+
+  // Draws the sprites of the run's names (agents and people, at most MAX_WARM) at the page's start,
+  // so that stepping through the run never stops to draw one.
+  const MAX_WARM = 4096;
+  CanopyReplay.warmNames = function (ctx, run, ratio) {
+    const font = "bold " + CanopyReplay.FONT;
+    run.agents.concat(run.targets).slice(0, MAX_WARM).forEach(function (x) { nameSprite(ctx, x.name, ratio, font); });
+  };
+
   // A name in bold on a white halo, its baseline's left end at (s.x + dx, s.y + dy). Drawn once
   // into a small canvas of its own and copied from there: a few hundred names a step cost
   // copies, not text layout.
@@ -125,11 +144,7 @@
       haloText(ctx, text, s.x + dx, s.y + dy);
       return;
     }
-    const key = ratio + "\n" + font + "\n" + text;
-    const sprite = cachedSprite(key, CanopyReplay.textWidth(ctx, text, font) + 6, 20, ratio, function (c) {
-      c.font = font;
-      haloText(c, text, 3, 15);
-    });
+    const sprite = nameSprite(ctx, text, ratio, font);
     ctx.drawImage(sprite, Math.round((s.x + dx - 3) * ratio) / ratio, Math.round((s.y + dy - 15) * ratio) / ratio,
       sprite.width / ratio, sprite.height / ratio);
   }
