@@ -22,6 +22,17 @@ if (!fs.existsSync(chromium)) {
 
 const near = (a, b, tol) => Math.abs(a - b) <= tol;
 
+// The page's address fragment once it holds `part` (the page writes it 150 ms after the last
+// change; a loaded machine may take longer), or what it holds after 10 s.
+async function fragmentHolding(page, part) {
+  for (let waited = 0; waited < 10000; waited += 50) {
+    const hash = await page.evaluate("location.hash");
+    if (hash.indexOf(part) >= 0) return hash;
+    await new Promise((r) => setTimeout(r, 50));
+  }
+  return page.evaluate("location.hash");
+}
+
 // The plan line in force at step k (the last line at or before k that planned), or null.
 function planLine(run, k) {
   for (let h = k; h >= 0; h--) if (run.record[h].plan) return run.record[h];
@@ -178,8 +189,7 @@ async function main() {
         app.setAgent(2); app.select({ kind: "target", index: 3 }); app.setPlot("error");
         app.setLayer("links", false); app.setLayer("map", false);
         app.view.zoom(2.5, 200, 150); app.view.pan(-30, 20); app.setStep(41); })()`);
-      await new Promise((r) => setTimeout(r, 400));
-      const hash = await page.evaluate("location.hash");
+      const hash = await fragmentHolding(page, "k=41&");
       const fields = new URLSearchParams(hash.slice(1));
       assert(fields.get("k") === "41" && fields.get("agent") === "2" && fields.get("sel") === "t3" && fields.get("plot") === "error" &&
         fields.get("layers") === "trees,truth,sensors,tracks,plans", "fragment " + hash);
@@ -300,8 +310,7 @@ async function main() {
       assert(dragged[1][0] !== zoomed[1][0] && same(dragged), "after a drag on the right: " + JSON.stringify(dragged));
       // The address holds the time and the view: a link opens both pages at the same steps and views.
       await tab.evaluate(`(() => { const s = document.getElementById("clock-slider"); s.value = "5.1"; s.dispatchEvent(new Event("input")); })()`);
-      await new Promise((r) => setTimeout(r, 400));
-      const hash = await tab.evaluate("location.hash"), steps = () => "CanopySideBySide.apps.map((a) => a.state.k)";
+      const hash = await fragmentHolding(tab, "t=5.1&"), steps = () => "CanopySideBySide.apps.map((a) => a.state.k)";
       const before = { steps: await tab.evaluate(steps()), views: await views() };
       const link = await Page.open(browser, 1600, 900);
       await link.navigate("file://" + path.resolve(out) + hash);
