@@ -235,14 +235,21 @@ int Analyze::run() {
     }
     std::printf("\n");
   }
-  const std::vector<replay::TrialReplay> replays = replay::writeTrialReplays(result, out_);
-  for (const replay::TrialReplay& r : replays) {
+  const replay::TrialReplays replays = replay::writeTrialReplays(result, out_);
+  for (const replay::TrialReplay& r : replays.replays) {
     std::printf("replay of %s, %s at L: %s/%s\n", printable(r.config, 200).c_str(),
                 printable(r.state, 100).c_str(), printable(out_).c_str(),
                 printable(r.page.string()).c_str());
   }
-  std::printf("tables and figures → %s/ (replays.html links one replay per behaviour)\n",
-              printable(out_).c_str());
+  for (const replay::TrialPair& p : replays.pairs) {
+    std::printf("trial %d under %s and %s side by side: %s/%s\n", p.trial,
+                printable(p.config_a, 200).c_str(), printable(p.config_b, 200).c_str(),
+                printable(out_).c_str(), printable(p.page.string()).c_str());
+  }
+  std::printf(
+      "tables and figures → %s/ (replays.html links one replay per behaviour, and pairs of "
+      "trials side by side)\n",
+      printable(out_).c_str());
   return kExitOk;
 }
 

@@ -7,7 +7,10 @@
 //
 // With --step, the time of one step (→) on written pages, opened in one chromium session in
 // turn, REPEATS rounds (tests/replay/step_time.js: key press to pixels ready, 30 steps a round,
-// every layer on, a person's timeline open); prints each page's size and the median per round:
+// every layer on, a person's timeline open); prints each page's size, the median per round and,
+// on Linux, the CPU time the renderer's main threads used per step over the 30 steps (from
+// /proc: user + system, in 10 ms ticks; less sensitive than the wall time to other programs on
+// the machine, and including the page's own painting between the steps):
 //   node bench/replay_speed.js --step PAGE.html [PAGE.html ...] [--repeats N]
 "use strict";
 
@@ -15,10 +18,44 @@ const fs = require("fs");
 const path = require("path");
 const { spawnSync } = require("child_process");
 const { Browser, Page } = require("../tests/replay/cdp.js");
-const { stepTimes } = require("../tests/replay/step_time.js");
+const { prepare, pressTimes } = require("../tests/replay/step_time.js");
 
 const [canopy, scenario, work, repeatsText] = process.argv.slice(2);
 const repeats = +(repeatsText || 3);
+
+// The CPU time (ms) used so far by the main threads of the renderer processes under `pid` (the
+// browser), or NaN where /proc cannot tell.
+function rendererMainCpuMs(pid) {
+  try {
+    const stat = (p, file) => {
+      const s = fs.readFileSync(`/proc/${p}/${file}`, "utf8");
+      return s.slice(s.lastIndexOf(")") + 2).split(" ");  // fields from the state on
+    };
+    const procs = fs.readdirSync("/proc").filter((d) => /^\d+$/.test(d)).map((d) => {
+      try {
+        return { pid: +d, ppid: +stat(d, "stat")[1], cmd: fs.readFileSync(`/proc/${d}/cmdline`, "utf8") };
+      } catch (e) {
+        return null;  // gone meanwhile
+      }
+    }).filter(Boolean);
+    let ticks = 0;
+    const stack = [pid];
+    while (stack.length) {
+      const parent = stack.pop();
+      for (const q of procs) {
+        if (q.ppid !== parent) continue;
+        stack.push(q.pid);
+        if (q.cmd.includes("--type=renderer")) {
+          const f = stat(q.pid, `task/${q.pid}/stat`);
+          ticks += +f[11] + +f[12];  // utime, stime
+        }
+      }
+    }
+    return ticks * 10;  // 100 ticks a second (Linux's USER_HZ)
+  } catch (e) {
+    return NaN;
+  }
+}
 
 async function stepMain(args) {
   let rounds = 3;
@@ -28,15 +65,19 @@ async function stepMain(args) {
     else pages.push(path.resolve(args[i]));
   }
   const browser = new Browser(process.env.CANOPY_CHROMIUM);
-  const rows = pages.map((p) => ({ page: p, bytes: fs.statSync(p).size, median_step_ms: [] }));
+  const rows = pages.map((p) => ({ page: p, bytes: fs.statSync(p).size, median_step_ms: [], cpu_ms_per_step: [] }));
   try {
     for (let r = 0; r < rounds; r++) {
       for (const row of rows) {
         const tab = await Page.open(browser, 1280, 900);
         await tab.navigate("file://" + row.page);
         await tab.evaluate("CanopyReplay.ready || null");
-        const s = await stepTimes(tab, 30);
+        await prepare(tab);
+        const cpu0 = rendererMainCpuMs(browser.process.pid);
+        const s = await pressTimes(tab, 30);
+        const cpu1 = rendererMainCpuMs(browser.process.pid);
         row.median_step_ms.push(+s.median.toFixed(1));
+        row.cpu_ms_per_step.push(+((cpu1 - cpu0) / s.times.length).toFixed(2));
         row.backdrop = s.backdrop;
         await tab.send("Page.close").catch(() => {});
       }

@@ -75,13 +75,21 @@
   }
 
   Backdrop.prototype.render = function (view, treesOn) {
-    const t0 = performance.now(), run = this.run, canvas = this.canvas, C = CanopyReplay.COLOURS;
-    const W = view.canvas.width, H = view.canvas.height, ratio = view.ratio;
-    if (canvas.width !== W || canvas.height !== H) {
-      canvas.width = W;
-      canvas.height = H;
+    const t0 = performance.now(), canvas = this.canvas;
+    if (canvas.width !== view.canvas.width || canvas.height !== view.canvas.height) {
+      canvas.width = view.canvas.width;
+      canvas.height = view.canvas.height;
     }
-    const ctx = canvas.getContext("2d");
+    const counts = this.paint(canvas.getContext("2d"), view, treesOn);
+    this.stats = { renders: this.stats.renders + 1, discs: counts.discs, raster: counts.raster,
+      ms: performance.now() - t0 };
+  };
+
+  // Draws the static layers of this view onto ctx (the cache's canvas, or an SVG export's
+  // context), returning how many crowns became discs and how many went to the raster.
+  Backdrop.prototype.paint = function (ctx, view, treesOn) {
+    const run = this.run, C = CanopyReplay.COLOURS;
+    const W = view.canvas.width, H = view.canvas.height, ratio = view.ratio;
     ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
     ctx.lineJoin = "round";
     CanopyReplay.drawGround(ctx, view, run);
@@ -125,8 +133,7 @@
       }
       CanopyReplay.drawWalls(ctx, view, run);
     }
-    this.stats = { renders: this.stats.renders + 1, discs: discs, raster: raster,
-      ms: performance.now() - t0 };
+    return { discs: discs, raster: raster };
   };
 
   // Copies the static layers for this view onto ctx, rendering them first when the view or the

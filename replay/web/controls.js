@@ -144,7 +144,11 @@
       canvas.setPointerCapture(e.pointerId);
     });
     canvas.addEventListener("pointermove", function (e) {
-      if (!drag) return;
+      if (!drag) {
+        const rect = canvas.getBoundingClientRect();
+        app.hover(e.clientX - rect.left, e.clientY - rect.top);
+        return;
+      }
       const dx = e.clientX - drag.x, dy = e.clientY - drag.y;
       if (!drag.moved && Math.hypot(dx, dy) < 3) return;
       drag.moved = true;
@@ -167,6 +171,7 @@
       app.view.zoom(Math.exp(-e.deltaY * 0.0015), e.clientX - rect.left, e.clientY - rect.top);
       app.draw();
     }, { passive: false });
+    canvas.addEventListener("pointerleave", function () { app.hover(null, null); });
     canvas.addEventListener("dblclick", function () { app.fit(); });
   }
 
@@ -223,6 +228,9 @@
       app.pause();
       app.setStep(app.timeline.stepAt(e.clientX - rect.left, rect.width));
     });
+    const plot = document.getElementById("plot-field");
+    plot.addEventListener("change", function () { app.setPlot(plot.value); });
+    CanopyReplay.bindExport(app);
     buildLayers(app);
     buildLegend(app);
     bindMap(app);

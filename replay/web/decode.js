@@ -88,8 +88,26 @@ const CanopyReplay = {};
   }
   CanopyReplay.spreadColour = spreadColour;
 
+  // track_of_target [k][a][t] (the index of agent a's track standing for person t, or -1) in one
+  // Int32Array; each [k][a] is a view of its T numbers (indexOf and [t] as before). As nested
+  // arrays it was the largest part of a city run's memory (301 × 64 × 256 numbers).
+  function packTrackOfTarget(nested, S, A, T) {
+    const flat = new Int32Array(S * A * T), out = [];
+    for (let k = 0; k < S; k++) {
+      const perAgent = [];
+      for (let a = 0; a < A; a++) {
+        const o = (k * A + a) * T;
+        flat.set(nested[k][a], o);
+        perAgent.push(flat.subarray(o, o + T));
+      }
+      out.push(perAgent);
+    }
+    return out;
+  }
+
   CanopyReplay.decode = function (raw) {
-    const A = raw.agents.length, T = raw.targets.length, S = raw.steps;
+    const A = raw.agents.length, T = raw.targets.length, S = raw.steps, keys = raw.keys;
+    // No function kept by the run refers to `raw`, so that the parsed data can be collected.
     // Up to 8 agents keep the frames' colours; more get one colour each.
     if (A > 8) raw.agents.forEach(function (agent, i) { agent.colour = spreadColour(i); });
     const run = {
@@ -99,8 +117,8 @@ const CanopyReplay = {};
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
       tracks: unpackTracks(raw.tracks, raw.keys, raw.labels),
-      trackOfTarget: raw.track_of_target,
-      maps: raw.maps.map(function (changes) { return unpackMaps(changes, raw.keys); }),
+      trackOfTarget: packTrackOfTarget(raw.track_of_target, S, A, T),
+      maps: raw.maps.map(function (changes) { return unpackMaps(changes, keys); }),
       paths: raw.paths.map(unpackPaths),
       epochs: unpackEpochs(raw.epochs),
       epochIndex: new Map(),
@@ -122,9 +140,11 @@ const CanopyReplay = {};
       while (e + 1 < run.epochs.length && run.epochs[e + 1].k <= k) e++;
       run.epochAt[k] = e;
     }
+    // Poses and positions in typed arrays; the closures keep these, not the raw data.
+    const uav = Float64Array.from(raw.uav), target = Float64Array.from(raw.target), dt = raw.dt;
     run.uav = function (k, i) {
       const o = (k * A + i) * 3;
-      return { x: raw.uav[o], y: raw.uav[o + 1], yaw: raw.uav[o + 2] };
+      return { x: uav[o], y: uav[o + 1], yaw: uav[o + 2] };
     };
     // What agent i's body touched over step k ("wall:3", "uav:1", …), or null.
     const contacts = new Map();
@@ -133,9 +153,9 @@ const CanopyReplay = {};
     run.anyContact = contacts.size > 0;
     run.target = function (k, t) {
       const o = (k * T + t) * 2;
-      return { x: raw.target[o], y: raw.target[o + 1] };
+      return { x: target[o], y: target[o + 1] };
     };
-    run.time = function (k) { return k * raw.dt; };
+    run.time = function (k) { return k * dt; };
     return run;
   };
 })();

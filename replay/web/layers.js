@@ -16,24 +16,6 @@
   };
   const TRAIL_SECONDS = 5;  // as the frames (render/trails.h)
   const FONT = "11px 'DejaVu Sans', sans-serif";
-  const widths = new Map();   // font and text → width (px)
-  const sprites = new Map();  // small canvases drawn once and copied: names, a person's disc
-
-  // The sprite under `key`, drawn by draw(c) into a canvas of w × h CSS px at `ratio` device
-  // pixels per px the first time it is asked for, and copied from the cache after.
-  function cachedSprite(key, w, h, ratio, draw) {
-    let sprite = sprites.get(key);
-    if (!sprite) {
-      sprite = document.createElement("canvas");
-      sprite.width = Math.ceil(w * ratio);
-      sprite.height = Math.ceil(h * ratio);
-      const c = sprite.getContext("2d");
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
-      draw(c);
-      sprites.set(key, sprite);
-    }
-    return sprite;
-  }
 
   // The layers a user toggles: key (the keyboard's digit is its place), id and label.
   CanopyReplay.LAYERS = [
@@ -46,6 +28,7 @@
     { id: "links", label: "communication links in range" }
   ];
   CanopyReplay.COLOURS = C;
+  CanopyReplay.FONT = FONT;
 
   function rgba(hex, alpha) {
     const n = parseInt(hex.slice(1), 16);
@@ -87,6 +70,8 @@
     });
     if (closed) ctx.closePath();
   }
+
+  CanopyReplay.pathOf = pathOf;
 
   function footprintPath(ctx, view, f, p, yaw) {
     const outline = footprintOutline(f, p, yaw);
@@ -187,23 +172,28 @@
   }
   CanopyReplay.drawWalls = drawWalls;
 
+  // A footprint narrower than SHADOW_PX on the screen shows no shadows: they would fill a few
+  // pixels at most (a city seen whole), and each costs a clip and a query of the trees.
+  const SHADOW_PX = 8;
+
   function drawSensors(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
-      const p = run.uav(k, i), f = agent.footprint;
-      ctx.save();
+      const p = run.uav(k, i), f = agent.footprint, r = reach(f), s = view.toScreen(p.x, p.y), rs = r * view.scale;
+      if (s.x + rs < -2 || s.y + rs < -2 || s.x - rs > view.width + 2 || s.y - rs > view.height + 2) return;  // off the map
+      const shadows = agent.los && 2 * rs >= SHADOW_PX;
+      if (shadows) ctx.save();
       footprintPath(ctx, view, f, p, p.yaw);
       ctx.fillStyle = rgba(agent.colour, 0.235);
       ctx.fill();
-      if (agent.los) {
+      if (shadows) {
         // The shadows of every crown near the footprint, kept inside it.
         ctx.clip();
         ctx.beginPath();
-        const r = reach(f);
         crownsNear(run, p, r).forEach(function (crown) { addShadow(ctx, view, p, crown, 2 * r + 1); });
         ctx.fillStyle = C.shadow;
         ctx.fill("nonzero");
+        ctx.restore();
       }
-      ctx.restore();
       footprintPath(ctx, view, f, p, p.yaw);
       ctx.strokeStyle = agent.colour;
       ctx.lineWidth = 1.5;
@@ -255,101 +245,12 @@
     ctx.stroke();
   }
 
-  // A plan's ground points: from `start`, each action's velocity held for one plan period.
-  function integrate(run, start, velocities) {
-    const period = run.planSteps * run.dt, out = [{ x: start.x, y: start.y }];
-    velocities.forEach(function (v) {
-      const last = out[out.length - 1];
-      out.push({ x: last.x + period * v.x, y: last.y + period * v.y });
-    });
-    return out;
-  }
-
-  // The intentions agent a planned against at the epoch of step k (SMA-NBO), per teammate j:
-  // {from, epoch, path, status}. The record says which epoch's plan of j it held (joint_epoch);
-  // it expected this epoch's when j planned before it (the messages' order is the planning
-  // order), else the one before. status: "ok"; "lost" (held an older one, in range, no
-  // latency); "late" (older, with latency); "out of range"; "none" (nothing ever reached it).
-  function intentions(run, k, a) {
-    const e = run.epochAt[k];
-    if (e < 0 || run.algorithm !== "sma") return [];
-    const E = run.epochs[e];
-    const part = E.plans.filter(function (p) { return p.agent === a; })[0];
-    if (!part || !part.jointEpoch) return [];
-    const order = E.sent.map(function (m) { return m.from; });
-    const out = [];
-    for (let j = 0; j < run.agents.length; j++) {
-      if (j === a || order.indexOf(j) < 0) continue;
-      const held = part.jointEpoch[j];
-      const expected = order.indexOf(j) < order.indexOf(a) ? E.epoch : (e > 0 ? run.epochs[e - 1].epoch : -1);
-      const item = { from: j, epoch: held, path: null, status: "ok", madeAt: -1 };
-      if (held >= 0 && run.epochIndex.has(held)) {
-        const source = run.epochs[run.epochIndex.get(held)];
-        const message = source.sent.filter(function (m) { return m.from === j && m.agent === j; })[0];
-        if (message) {
-          item.path = integrate(run, run.uav(source.k, j), message.velocities);
-          item.madeAt = source.k;
-        }
-      }
-      if (expected >= 0 && held < expected) {
-        const at = run.epochs[run.epochIndex.get(expected)].k;
-        if (!inRange(run, run.uav(at, j), run.uav(at, a))) item.status = "out of range";
-        else if (run.commLatency > 0) item.status = "late";
-        else item.status = "lost";
-      } else if (held < 0 && expected < 0) {
-        item.status = "none";
-      }
-      out.push(item);
-    }
-    return out;
-  }
-  CanopyReplay.intentions = intentions;
-
-  function drawPlans(ctx, view, run, k, a) {
-    ctx.lineWidth = 1.5;
-    run.agents.forEach(function (agent, i) {
-      const plan = run.paths[i][k];
-      if (!plan.length) return;
-      const colour = rgba(agent.colour, 0.784);
-      pathOf(ctx, view, [run.uav(k, i)].concat(plan), false);
-      ctx.strokeStyle = colour;
-      ctx.stroke();
-      ctx.beginPath();
-      plan.forEach(function (q) {
-        const s = view.toScreen(q.x, q.y);
-        ctx.moveTo(s.x + 2.5, s.y);
-        ctx.arc(s.x, s.y, 2.5, 0, 2 * Math.PI);
-      });
-      ctx.fillStyle = colour;
-      ctx.fill();
-    });
-    ctx.font = FONT;
-    intentions(run, k, a).forEach(function (item) {
-      const from = run.uav(k, item.from), at = view.toScreen(from.x, from.y);
-      const colour = item.status === "ok" ? run.agents[item.from].colour : item.status === "lost" ? C.lost : C.late;
-      if (item.path) {
-        ctx.setLineDash([3, 3]);
-        pathOf(ctx, view, item.path, false);
-        ctx.strokeStyle = colour;
-        ctx.lineWidth = 2;
-        ctx.stroke();
-        ctx.setLineDash([]);
-        const last = item.path[item.path.length - 1], end = view.toScreen(last.x, last.y);
-        ctx.fillStyle = colour;
-        ctx.fillText("intention of k=" + item.madeAt, end.x + 4, end.y - 4);
-      }
-      if (item.status !== "ok" && item.status !== "none") {
-        ctx.strokeStyle = colour;
-        ctx.lineWidth = 2;
-        ctx.beginPath();
-        ctx.moveTo(at.x - 5, at.y - 20); ctx.lineTo(at.x + 5, at.y - 10);
-        ctx.moveTo(at.x + 5, at.y - 20); ctx.lineTo(at.x - 5, at.y - 10);
-        ctx.stroke();
-        ctx.fillStyle = colour;
-        ctx.fillText("intention " + item.status, at.x + 8, at.y - 12);
-      }
-    });
-  }
+  // A trail lying within TRAIL_HIDDEN_PX of its person's symbol is under the disc (radius 5 px,
+  // drawn over it) even with its line's half-width: it is left out, as is a trail wholly off
+  // the map. trailStats counts, for the last draw, the trails drawn, those under their disc and
+  // those off the map.
+  CanopyReplay.TRAIL_HIDDEN_PX = 3.5;
+  CanopyReplay.trailStats = { drawn: 0, under: 0, off: 0 };
 
   function drawTrails(ctx, view, run, k) {
     const first = Math.max(0, k - Math.round(TRAIL_SECONDS / run.dt));
@@ -357,15 +258,34 @@
     ctx.lineWidth = 2;
     ctx.lineJoin = "round";
     if (k - first < 1) return;
+    const n = k - first + 1, xs = new Float64Array(n), ys = new Float64Array(n), stats = { drawn: 0, under: 0, off: 0 };
+    CanopyReplay.trailStats = stats;
     ctx.beginPath();  // every person's trail in one path, stroked once
     for (let t = 0; t < run.targets.length; t++) {
-      let last = null;
+      let far = 0, x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
       for (let j = first; j <= k; j++) {
         const q = run.target(j, t), s = view.toScreen(q.x, q.y);
+        xs[j - first] = s.x;
+        ys[j - first] = s.y;
+        x0 = Math.min(x0, s.x); y0 = Math.min(y0, s.y); x1 = Math.max(x1, s.x); y1 = Math.max(y1, s.y);
+      }
+      for (let m = 0; m < n; m++) far = Math.max(far, Math.hypot(xs[m] - xs[n - 1], ys[m] - ys[n - 1]));
+      if (x1 < -2 || y1 < -2 || x0 > view.width + 2 || y0 > view.height + 2) {
+        stats.off++;
+        continue;
+      }
+      if (far <= CanopyReplay.TRAIL_HIDDEN_PX) {
+        stats.under++;
+        continue;
+      }
+      stats.drawn++;
+      let lx = 0, ly = 0;
+      for (let m = 0; m < n; m++) {
         // A point under a pixel from the last one drawn is left out (but never the newest).
-        if (last && j < k && Math.abs(s.x - last.x) < 1 && Math.abs(s.y - last.y) < 1) continue;
-        if (last) ctx.lineTo(s.x, s.y); else ctx.moveTo(s.x, s.y);
-        last = s;
+        if (m > 0 && m < n - 1 && Math.abs(xs[m] - lx) < 1 && Math.abs(ys[m] - ly) < 1) continue;
+        if (m > 0) ctx.lineTo(xs[m], ys[m]); else ctx.moveTo(xs[m], ys[m]);
+        lx = xs[m];
+        ly = ys[m];
       }
     }
     ctx.stroke();
@@ -407,181 +327,17 @@
     ctx.lineWidth = 2.5;
     ctx.stroke();
     ctx.lineCap = "butt";
-    const placed = new Boxes();
+    const placed = new CanopyReplay.Boxes();
     ctx.font = FONT;
     ctx.fillStyle = colour;
     tracks.forEach(function (t, j) {
       const s = at[j], target = of.indexOf(j);
       const text = "track " + t.key + (target >= 0 ? " \u2192 " + run.targets[target].name : "");
       // A label only where it covers none drawn before it.
-      const box = { x0: s.x + 7, y0: s.y + 3, x1: s.x + 7 + textWidth(ctx, text), y1: s.y + 16 };
+      const box = { x0: s.x + 7, y0: s.y + 3, x1: s.x + 7 + CanopyReplay.textWidth(ctx, text, FONT), y1: s.y + 16 };
       if (placed.hits(box)) return;
       placed.add(box);
       ctx.fillText(text, s.x + 7, s.y + 14);
-    });
-  }
-
-  function drawTargets(ctx, view, run, k) {
-    // A person's disc is drawn once into a small canvas and copied (stroking a few hundred
-    // circles a step costs milliseconds).
-    const ratio = view.ratio;
-    const sprite = cachedSprite("person " + ratio, 14, 14, ratio, function (c) {
-      c.beginPath();
-      c.arc(7, 7, 5, 0, 2 * Math.PI);
-      c.fillStyle = C.target;
-      c.fill();
-      c.strokeStyle = C.white;
-      c.lineWidth = 1.5;
-      c.stroke();
-    });
-    for (let t = 0; t < run.targets.length; t++) {
-      const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-      ctx.drawImage(sprite, s.x - 7, s.y - 7, sprite.width / ratio, sprite.height / ratio);
-    }
-  }
-
-  // The frames' dart (render/internal/tessellate.cpp): tip ahead, two back corners, a notch.
-  function dart(ctx, s, yaw, size, fill) {
-    const h = 0.5 * size, fx = Math.cos(yaw), fy = -Math.sin(yaw), sx = -fy, sy = fx;
-    ctx.beginPath();
-    ctx.moveTo(s.x + h * fx, s.y + h * fy);
-    ctx.lineTo(s.x - h * fx + 0.8 * h * sx, s.y - h * fy + 0.8 * h * sy);
-    ctx.lineTo(s.x - 0.45 * h * fx, s.y - 0.45 * h * fy);
-    ctx.lineTo(s.x - h * fx - 0.8 * h * sx, s.y - h * fy - 0.8 * h * sy);
-    ctx.closePath();
-    ctx.fillStyle = fill;
-    ctx.fill();
-    ctx.strokeStyle = C.target;
-    ctx.lineWidth = 1.2;
-    ctx.stroke();
-  }
-  CanopyReplay.dart = dart;
-
-  // An agent's dart (18 px, heading along +x) drawn once per colour into a small canvas and
-  // copied turned to its heading: stroking 64 outlines a step costs more than 64 copies.
-  function dartSprite(ctx, s, yaw, colour, ratio) {
-    const sprite = cachedSprite("dart " + ratio + " " + colour, 24, 24, ratio, function (c) {
-      c.lineJoin = "round";
-      dart(c, { x: 12, y: 12 }, 0, 18, colour);
-    });
-    const cos = Math.cos(yaw), sin = Math.sin(yaw);
-    // Screen y points down: a heading yaw turns the sprite by -yaw on the screen.
-    ctx.setTransform(ratio * cos, -ratio * sin, ratio * sin, ratio * cos, ratio * s.x, ratio * s.y);
-    ctx.drawImage(sprite, -12, -12, 24, 24);
-    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
-  }
-
-  function drawAgents(ctx, view, run, k) {
-    run.agents.forEach(function (agent, i) {
-      const p = run.uav(k, i);
-      const s = view.toScreen(p.x, p.y);
-      dartSprite(ctx, s, p.yaw, agent.colour, view.ratio);
-      if (run.contactsAt(k, i)) {  // touching a trunk, wall or agent: a red ring, as the frames
-        ctx.beginPath();
-        ctx.arc(s.x, s.y, 13, 0, 2 * Math.PI);
-        ctx.strokeStyle = C.contact;
-        ctx.lineWidth = 2.5;
-        ctx.stroke();
-      }
-    });
-  }
-
-  // A name in bold on a white halo, its baseline's left end at (s.x + dx, s.y + dy). Drawn once
-  // into a small canvas of its own and copied from there: a few hundred names a step cost
-  // copies, not text layout.
-  function label(ctx, s, text, dx, dy, ratio) {
-    const key = ratio + "\n" + text;
-    const sprite = sprites.get(key) || cachedSprite(key, textWidth(ctx, text) + 6, 20, ratio, function (c) {
-      c.font = ctx.font;
-      c.lineJoin = "round";
-      c.lineWidth = 3;
-      c.strokeStyle = "rgba(255,255,255,0.8)";
-      c.strokeText(text, 3, 15);
-      c.fillStyle = C.text;
-      c.fillText(text, 3, 15);
-    });
-    ctx.drawImage(sprite, Math.round((s.x + dx - 3) * ratio) / ratio, Math.round((s.y + dy - 15) * ratio) / ratio,
-      sprite.width / ratio, sprite.height / ratio);
-  }
-
-  function overlaps(a, b) {
-    return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
-  }
-
-  // Screen boxes binned into 64 px cells, so that asking whether a box overlaps any of a few
-  // hundred looks at its neighbours only.
-  function Boxes() { this.cells = new Map(); }
-  Boxes.prototype.each = function (b, visit) {
-    for (let j = Math.floor(b.y0 / 64); j <= Math.floor(b.y1 / 64); j++) {
-      for (let i = Math.floor(b.x0 / 64); i <= Math.floor(b.x1 / 64); i++) {
-        if (visit(j * 65536 + i) === true) return true;  // a number: no string a cell
-      }
-    }
-    return false;
-  };
-  Boxes.prototype.add = function (b) {
-    const cells = this.cells;
-    this.each(b, function (key) {
-      if (!cells.has(key)) cells.set(key, []);
-      cells.get(key).push(b);
-    });
-  };
-  Boxes.prototype.hits = function (b) {
-    const cells = this.cells;
-    return this.each(b, function (key) {
-      const list = cells.get(key);
-      return !!list && list.some(function (o) { return overlaps(o, b); });
-    });
-  };
-
-  // ctx.measureText(text).width in the current font, remembered.
-  function textWidth(ctx, text) {
-    const key = ctx.font + "\n" + text;
-    if (!widths.has(key)) widths.set(key, ctx.measureText(text).width);
-    return widths.get(key);
-  }
-
-  // Names of people (above right first) and agents (below right first), each at the first of
-  // six places around its symbol that covers no agent's or person's symbol and no name placed
-  // before it (as the frames place them, render/scene_builder.cpp); where none of the six is
-  // free the name is left out (the frames put it at the first place), so a crowd seen from far
-  // shows the names that fit instead of a pile.
-  function drawNames(ctx, view, run, k, truth) {
-    ctx.font = "bold " + FONT;
-    ctx.lineJoin = "round";
-    const symbols = new Boxes(), placed = new Boxes(), items = [];
-    run.agents.forEach(function (agent, i) {
-      const p = run.uav(k, i), s = view.toScreen(p.x, p.y);
-      symbols.add({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
-      items.push({ s: s, text: agent.name, gap: 10, aboveFirst: false });
-    });
-    // People's symbols and names are placed whether shown or not, so that switching them off
-    // does not move an agent's name.
-    run.targets.forEach(function (target, t) {
-      const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-      symbols.add({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
-      items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true, shown: truth });
-    });
-    const line = 11;
-    items.forEach(function (item) {
-      const w = textWidth(ctx, item.text), g = item.gap;
-      const aboveRight = [g, -g], belowRight = [g, g + line], aboveLeft = [-g - w, -g],
-        belowLeft = [-g - w, g + line], farAbove = [-0.5 * w, -g - line], farBelow = [-0.5 * w, g + 2 * line];
-      const places = item.aboveFirst ? [aboveRight, aboveLeft, belowRight, belowLeft, farAbove, farBelow]
-        : [belowRight, belowLeft, aboveRight, aboveLeft, farBelow, farAbove];
-      let chosen = null;
-      for (let n = 0; n < places.length; n++) {
-        const b = { x0: item.s.x + places[n][0], y0: item.s.y + places[n][1] - line,
-          x1: item.s.x + places[n][0] + w, y1: item.s.y + places[n][1] + 2 };
-        if (!symbols.hits(b) && !placed.hits(b)) {
-          chosen = places[n];
-          break;
-        }
-      }
-      if (!chosen) return;  // no place fits: no name (a crowd at a far zoom)
-      placed.add({ x0: item.s.x + chosen[0], y0: item.s.y + chosen[1] - line,
-        x1: item.s.x + chosen[0] + w, y1: item.s.y + chosen[1] + 2 });
-      if (item.shown !== false) label(ctx, item.s, item.text, chosen[0], chosen[1], view.ratio);
     });
   }
 
@@ -633,13 +389,13 @@
     if (on.sensors) drawSensors(ctx, view, run, k);
     if (on.links) drawLinks(ctx, view, run, k);
     if (on.map) drawMap(ctx, view, run, k, a);
-    if (on.plans) drawPlans(ctx, view, run, k, a);
+    if (on.plans) CanopyReplay.drawPlans(ctx, view, run, k, a);
     if (on.truth) drawTrails(ctx, view, run, k);
     if (on.tracks) drawTracks(ctx, view, run, k, a);
-    if (on.truth) drawTargets(ctx, view, run, k);
+    if (on.truth) CanopyReplay.drawTargets(ctx, view, run, k);
     drawSelection(ctx, view, run, k, state.selection);
-    drawNames(ctx, view, run, k, on.truth);
-    drawAgents(ctx, view, run, k);
+    CanopyReplay.drawNames(ctx, view, run, k, on.truth);
+    CanopyReplay.drawAgents(ctx, view, run, k);
     drawOverlay(ctx, view, run, k);
   };
 })();

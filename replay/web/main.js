@@ -34,7 +34,9 @@
     this.box = runBox(run);
     const layers = {};
     CanopyReplay.LAYERS.forEach(function (l) { layers[l.id] = true; });
-    this.state = { k: 0, agent: 0, layers: layers, selection: null, playing: false, rate: 1 };
+    // plot: the id of the field the timeline's first chart shows (plots.js); null: its first.
+    this.state = { k: 0, agent: 0, layers: layers, selection: null, playing: false, rate: 1, plot: null };
+    this.pointer = null;  // the cursor on the map (CSS px), for the hover readout
     this.stats = { firstPaintMs: NaN, draws: 0, drawMs: 0, drawMsMax: 0, frames: 0,
       stepsPlayed: 0, frameGaps: [] };
     this.series = null;
@@ -59,10 +61,36 @@
       out.textContent = r.text;
       Object.keys(r.fields).forEach(function (key) { out.dataset[key] = r.fields[key]; });
     }
+    CanopyReplay.showNumbers(document.getElementById("numbers"), this.run, s.k, s.selection, s.agent);
+    this.showHover();
+    CanopyReplay.noteState(this);
     const ms = performance.now() - t0;
     this.stats.draws++;
     this.stats.drawMs += ms;
     this.stats.drawMsMax = Math.max(this.stats.drawMsMax, ms);
+  };
+
+  // The hover readout for the cursor at (sx, sy) CSS px on the map (null: the cursor left it).
+  App.prototype.hover = function (sx, sy) {
+    this.pointer = sx === null ? null : { x: sx, y: sy };
+    this.showHover();
+  };
+
+  App.prototype.showHover = function () {
+    const box = document.getElementById("hover");
+    if (!this.pointer) {
+      box.hidden = true;
+      return;
+    }
+    const w = this.view.toWorld(this.pointer.x, this.pointer.y);
+    const h = CanopyReplay.hoverAt(this.run, this.state.k, this.state.agent, w.x, w.y);
+    box.hidden = false;
+    box.textContent = CanopyReplay.hoverText(h);
+    box.dataset.x = String(h.x);
+    box.dataset.y = String(h.y);
+    box.dataset.agent = h.agent ? h.agent.name + ":" + h.agent.distance : "";
+    box.dataset.person = h.person ? h.person.name + ":" + h.person.distance : "";
+    box.dataset.track = h.track ? [h.track.key, h.track.distance, h.track.mahalanobis].join(":") : "";
   };
 
   App.prototype.setStep = function (k) {
@@ -81,8 +109,29 @@
     const sel = this.state.selection;
     if (!sel) return;
     this.series = CanopyReplay.timelineSeries(this.run, sel, this.state.agent);
+    // The first chart plots the chosen field (plots.js), the first one when it has no such.
+    const fields = CanopyReplay.plotFields(this.run, sel, this.state.agent);
+    const field = fields.filter(function (f) { return f.id === this.state.plot; }, this)[0] || fields[0];
+    this.series.trace = field.values();
+    this.series.traceLabel = field.label;
+    this.series.plot = field.id;
+    const select = document.getElementById("plot-field");
+    select.textContent = "";
+    fields.forEach(function (f) {
+      const option = document.createElement("option");
+      option.value = f.id;
+      option.textContent = f.label;
+      select.appendChild(option);
+    });
+    select.value = field.id;
     document.getElementById("timeline-title").textContent = this.series.title;
     this.timeline.set(this.series);
+  };
+
+  App.prototype.setPlot = function (id) {
+    this.state.plot = id;
+    this.refreshTimeline();
+    this.draw();
   };
 
   App.prototype.setAgent = function (i) {
@@ -160,10 +209,17 @@
     CanopyReplay.bindControls(app);
     // A person's timeline from the start, so that the page shows every part of itself at once.
     if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
+    app.view.resize();
+    app.view.fit(app.box);
+    // A link's fragment (share.js) restores its step, layers, view, beliefs, selection and plot.
+    CanopyReplay.applyFragment(app, location.hash);
+    CanopyReplay.LAYERS.forEach(function (l) { document.getElementById("layer-" + l.id).checked = app.state.layers[l.id]; });
+    document.getElementById("agent").value = String(app.state.agent);
     app.refreshTimeline();
-    app.fit();
+    app.draw();
     app.stats.firstPaintMs = performance.now() - started;
     app.stats.firstPaintSinceNavigation = performance.now();
+    CanopyReplay.warmNames(app.ctx, run, app.view.ratio);
   }
 
   // Resolves once the first step is drawn (the tests wait for it).

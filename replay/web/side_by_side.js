@@ -1,12 +1,16 @@
 // Two replay pages side by side (each in an iframe of its own, written whole into `srcdoc`) on
 // one clock: moving either page's step, or the slider above them, sets the other page to the step
-// of the same time (k = round(t / dt), clamped to its run). CanopySideBySide is what the browser
-// tests drive and read.
+// of the same time (k = round(t / dt), clamped to its run). Their views are linked (while "link
+// the views" is ticked): both open on the box of both runs, and a pan or zoom in one moves the
+// other to the same centre and scale. The address's fragment (#t=SECONDS&view=CX,CY,SCALE) holds
+// the time and the left page's view, and opening it restores them. CanopySideBySide is what the
+// browser tests drive and read.
 (function () {
   "use strict";
 
   const frames = [document.getElementById("run-a"), document.getElementById("run-b")];
   const slider = document.getElementById("clock-slider"), clock = document.getElementById("clock");
+  const link = document.getElementById("link-views");
   const side = { apps: [], time: 0 };
   window.CanopySideBySide = side;
 
@@ -34,10 +38,72 @@
     slider.value = String(t);
     clock.textContent = "t = " + t.toFixed(2) + " s";
     syncing = false;
+    noteState();
+  };
+
+  // Writes the fragment a moment after the last change (as share.js does for one page).
+  let timer = null;
+  function noteState() {
+    clearTimeout(timer);
+    timer = setTimeout(function () {
+      if (!side.apps.length) return;
+      const v = side.apps[0].view;
+      history.replaceState(null, "", "#t=" + String(+side.time.toPrecision(12)) + "&view=" +
+        [v.cx, v.cy, v.scale].map(function (x) { return String(+x.toPrecision(12)); }).join(","));
+    }, 150);
+  }
+
+  // The time and view of a fragment, where it holds them.
+  function applyFragment(apps) {
+    const fields = {};
+    location.hash.replace(/^#/, "").split("&").forEach(function (part) {
+      const at = part.indexOf("=");
+      if (at > 0) fields[part.slice(0, at)] = part.slice(at + 1);
+    });
+    const view = (fields.view || "").split(",").map(Number);
+    if (view.length === 3 && view.every(isFinite) && view[2] > 0) {
+      apps[0].view.cx = view[0];
+      apps[0].view.cy = view[1];
+      apps[0].view.scale = view[2];
+      apps[0].draw();
+    }
+    const t = Number(fields.t);
+    if (fields.t !== undefined && isFinite(t) && t >= 0) side.setTime(t);
+  }
+
+  let linking = false;
+  // Moves every page's view but `from`'s to the centre and scale of `from`'s.
+  side.linkViews = function (from) {
+    if (linking || !link.checked) return;
+    linking = true;
+    const v = from.view;
+    side.apps.forEach(function (app) {
+      if (app === from || (app.view.cx === v.cx && app.view.cy === v.cy && app.view.scale === v.scale)) return;
+      app.view.cx = v.cx;
+      app.view.cy = v.cy;
+      app.view.scale = v.scale;
+      app.draw();
+    });
+    linking = false;
   };
 
   side.ready = Promise.all(frames.map(readyOf)).then(function (apps) {
     side.apps = apps;
+    // Both pages open on the box that holds both runs.
+    const box = apps.map(function (app) { return app.box; }).reduce(function (a, b) {
+      return [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];
+    });
+    apps.forEach(function (app) {
+      app.box = box;
+      const ownDraw = app.draw.bind(app);
+      app.draw = function () {
+        ownDraw();
+        side.linkViews(app);
+        noteState();
+      };
+    });
+    apps[0].fit();
+    link.addEventListener("change", function () { side.linkViews(apps[0]); });
     apps.forEach(function (app, n) {
       const own = app.setStep.bind(app);
       app.setStep = function (k) {
@@ -49,5 +115,6 @@
     slider.max = String(end);
     slider.addEventListener("input", function () { side.setTime(+slider.value); });
     side.setTime(0);
+    applyFragment(apps);
   });
 })();

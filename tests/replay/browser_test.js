@@ -5,49 +5,18 @@
 
 const fs = require("fs");
 const path = require("path");
-const { spawnSync } = require("child_process");
 const { Browser, Page } = require("./cdp.js");
 const expect = require("./record.js");
 const { stepTimes } = require("./step_time.js");
+const { setCanopy, check, assert, canopyRun, mapPixels, finish, crashed } = require("./harness.js");
 
 const [canopy, source, work] = process.argv.slice(2);
 expect.setCanopy(canopy);
+setCanopy(canopy);
 const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
 if (!fs.existsSync(chromium)) {
   console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
   process.exit(77);
-}
-
-const results = [];
-async function check(name, body) {
-  try {
-    await body();
-    results.push(name);
-    console.log("ok - " + name);
-  } catch (e) {
-    results.push(null);
-    console.log("not ok - " + name + "\n    " + String(e && e.stack || e).split("\n").join("\n    "));
-  }
-}
-function assert(condition, message) {
-  if (!condition) throw new Error(message);
-}
-
-function canopyRun(args) {
-  const r = spawnSync(canopy, args, { encoding: "utf8" });
-  if (r.status !== 0) throw new Error("canopy " + args.join(" ") + ": " + r.stderr);
-  return r;
-}
-
-// The map canvas's pixels (RGBA) as a Buffer, with its width and height.
-async function mapPixels(page) {
-  const r = await page.evaluate(`(() => {
-    const c = document.getElementById("map"), d = c.getContext("2d").getImageData(0, 0, c.width, c.height).data;
-    let s = "";
-    for (let i = 0; i < d.length; i += 0x8000) s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
-    return { w: c.width, h: c.height, data: btoa(s) };
-  })()`);
-  return { w: r.w, h: r.h, data: Buffer.from(r.data, "base64") };
 }
 
 // Distance (px) from (x, y) to the polygon's boundary, negative inside.
@@ -391,6 +360,11 @@ async function main() {
       await cityTab.evaluate("CanopyReplay.app.fit()");
       const far = await cityTab.evaluate("Object.assign({ scale: CanopyReplay.app.view.scale }, CanopyReplay.app.backdrop.stats)");
       assert(far.raster > 0.5 * n && far.discs + far.raster <= n, "from far: " + JSON.stringify(far));
+      // Its SVG export draws the far crowns as the one raster image, the rest as shapes.
+      const svg = await cityTab.evaluate("CanopyReplay.exportSvg(CanopyReplay.app)");
+      const images = (svg.match(/<image /g) || []).length, paths = (svg.match(/<path /g) || []).length;
+      console.log(`    city_swarm's SVG from far: ${svg.length} characters, ${images} image, ${paths} paths`);
+      assert(images === 1 && paths > 64 && svg.indexOf("data:image/png;base64,") > 0, "the SVG from far: " + images + " images");
       // Close up, only the crowns in view are drawn, each as a disc; a pan draws them again once.
       const near = await cityTab.evaluate(`(() => { const app = CanopyReplay.app, v = app.view;
         v.zoom(40, v.width / 2, v.height / 2); app.draw();
@@ -407,6 +381,28 @@ async function main() {
         "close up: " + JSON.stringify(near));
       assert(near.stepped === near.before && near.after === near.before + 1, "renders: " + JSON.stringify(near));
       assert(cityTab.errors.length === 0, cityTab.errors.join("\n"));
+      // Trails lying under their person's disc are left out, and leaving them out changes no
+      // pixel: the map with them drawn (no trail left out) is the same, at the fit view and
+      // zoomed in 5- and 8-fold (where more and more trails show).
+      const seen = { under: 0, drawn: 0 };
+      const threshold = await cityTab.evaluate("CanopyReplay.TRAIL_HIDDEN_PX");
+      for (const zoom of [1, 5, 8]) {
+        await cityTab.evaluate(`(() => { const app = CanopyReplay.app, v = app.view; app.fit();
+          v.zoom(${zoom}, v.width / 2, v.height / 2); app.setStep(12); })()`);
+        const culled = await mapPixels(cityTab), stats = await cityTab.evaluate("Object.assign({}, CanopyReplay.trailStats)");
+        await cityTab.evaluate("CanopyReplay.TRAIL_HIDDEN_PX = -1; CanopyReplay.app.draw()");
+        const whole = await mapPixels(cityTab), all = await cityTab.evaluate("Object.assign({}, CanopyReplay.trailStats)");
+        await cityTab.evaluate(`CanopyReplay.TRAIL_HIDDEN_PX = ${threshold}; CanopyReplay.app.draw()`);
+        let differ = 0;
+        for (let o = 0; o < whole.data.length; o++) if (whole.data[o] !== culled.data[o]) differ++;
+        console.log(`    zoom ${zoom}: ${stats.under} trails under their disc, ${stats.off} off the map, ${stats.drawn} drawn; ${differ} bytes differ`);
+        assert(all.under === 0 && all.off === stats.off && all.drawn === stats.drawn + stats.under,
+          "trails " + JSON.stringify([stats, all]));
+        assert(differ === 0, differ + " bytes differ with the hidden trails drawn");
+        seen.under += stats.under;
+        seen.drawn += stats.drawn;
+      }
+      assert(seen.under > 0 && seen.drawn > 0, "no trail under its disc, or none drawn: " + JSON.stringify(seen));
     });
 
     await check("64 agents: a colour each, a person's timeline lists only the agents that held it, an axis in seconds", async () => {
@@ -505,13 +501,7 @@ async function main() {
   } finally {
     await browser.close();
   }
-  const failed = results.filter((r) => r === null).length;
-  console.log(`${results.length - failed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
+  finish();
 }
 
-main().catch((e) => {
-  console.log("not ok - the harness itself: " + (e && e.stack || e));
-  console.log("0 passed, 1 failed");
-  process.exit(1);
-});
+main().catch(crashed);

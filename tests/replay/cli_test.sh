@@ -36,13 +36,30 @@ expect_bad_input "a summary of another run" "$work/no_summary" "no_summary/summa
 if "$canopy" sweep "$source/tests/replay/data/replay_sweep.json" --out "$work/sweep" --jobs 1 \
      >/dev/null 2>&1 && "$canopy" analyze "$work/sweep" >"$work/analyze.txt" 2>&1; then
   classes=$(grep -c "^replay of " "$work/analyze.txt")
-  links=$(grep -o 'href="replays/[^"]*"' "$work/sweep/analysis/replays.html" | sed 's/href="//; s/"$//')
+  links=$(grep -o 'href="replays/[^"]*"' "$work/sweep/analysis/replays.html" | grep -v '/pairs/' | sed 's/href="//; s/"$//')
   missing=0
   for link in $links; do [ -s "$work/sweep/analysis/$link" ] || missing=$((missing + 1)); done
   if [ "$classes" -ge 2 ] && [ "$(echo "$links" | wc -w)" -eq "$classes" ] && [ "$missing" -eq 0 ]; then
     passed=$((passed + 1)); echo "ok - analyze links $classes behaviour classes to replays"
   else
     failed=$((failed + 1)); echo "not ok - analyze's replays: $classes classes, links: $links, $missing missing"
+  fi
+  # ... and each replayed trial of the second configuration (planner none) to a page holding it
+  # and the same trial of the first (sma) side by side: both runs of that trial's seed.
+  later=$(grep -c "^replay of algorithm-none" "$work/analyze.txt")
+  pairs=$(grep -o 'href="replays/pairs/[^"]*"' "$work/sweep/analysis/replays.html" | sed 's/href="//; s/"$//')
+  bad=0
+  for link in $pairs; do
+    page="$work/sweep/analysis/$link"
+    [ "$(grep -o 'id="run-[ab]"' "$page" | sort -u | wc -l)" -eq 2 ] || bad=$((bad + 1))
+  done
+  seeds_a=$(cat "$work"/sweep/analysis/replays/algorithm-sma/*/manifest.json | grep -o '"seed": *[0-9]*' | sort -u)
+  seeds_b=$(cat "$work"/sweep/analysis/replays/algorithm-none/*/manifest.json | grep -o '"seed": *[0-9]*' | sort -u)
+  unpaired=$(comm -13 <(echo "$seeds_a") <(echo "$seeds_b") | wc -l)
+  if [ "$later" -ge 1 ] && [ "$(echo "$pairs" | wc -w)" -eq "$later" ] && [ "$bad" -eq 0 ] && [ "$unpaired" -eq 0 ]; then
+    passed=$((passed + 1)); echo "ok - analyze pairs $later trials of the second configuration with the first's"
+  else
+    failed=$((failed + 1)); echo "not ok - analyze's pairs: $later replays, pairs: $pairs, $bad without both runs, $unpaired seeds unpaired"
   fi
 else
   failed=$((failed + 1)); echo "not ok - sweep and analyze: $(tail -3 "$work/analyze.txt" 2>/dev/null)"

@@ -4,15 +4,23 @@
 // the run on. Used by the browser test and bench/replay_speed.js --step.
 "use strict";
 
-// Resolves to {times: [ms per step], median, k0, backdrop: the backdrop's stats after}.
-async function stepTimes(page, count) {
-  return page.evaluate(`new Promise((done) => {
-    const app = CanopyReplay.app, ctx = app.ctx, times = [];
+// Every layer on, person 0's timeline open, at step ⌊steps / 3⌋; resolves to that step.
+async function prepare(page) {
+  return page.evaluate(`(() => {
+    const app = CanopyReplay.app;
     CanopyReplay.LAYERS.forEach((l) => app.setLayer(l.id, true));
     if (app.run.targets.length) app.select({ kind: "target", index: 0 });
-    const k0 = Math.floor(app.run.steps / 3);
-    app.setStep(k0);
-    ctx.getImageData(0, 0, 1, 1);
+    app.setStep(Math.floor(app.run.steps / 3));
+    app.ctx.getImageData(0, 0, 1, 1);
+    return app.state.k;
+  })()`);
+}
+
+// Presses → `count` times (fewer at the run's end) on a prepared page; resolves to
+// {times: [ms per step], median, k: the step reached, backdrop: the backdrop's stats after}.
+async function pressTimes(page, count) {
+  return page.evaluate(`new Promise((done) => {
+    const app = CanopyReplay.app, ctx = app.ctx, times = [];
     function press() {
       const t0 = performance.now();
       document.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowRight", code: "ArrowRight", bubbles: true }));
@@ -21,7 +29,7 @@ async function stepTimes(page, count) {
       if (times.length < ${count} && app.state.k < app.run.steps - 1) requestAnimationFrame(press);
       else {
         const sorted = times.slice().sort((a, b) => a - b);
-        done({ times: times, median: sorted[Math.floor(sorted.length / 2)], k0: k0, k: app.state.k,
+        done({ times: times, median: sorted[Math.floor(sorted.length / 2)], k: app.state.k,
           backdrop: app.backdrop ? Object.assign({}, app.backdrop.stats) : null });
       }
     }
@@ -29,4 +37,10 @@ async function stepTimes(page, count) {
   })`);
 }
 
-module.exports = { stepTimes };
+// Resolves to {times, median, k0, k, backdrop}.
+async function stepTimes(page, count) {
+  const k0 = await prepare(page);
+  return Object.assign({ k0 }, await pressTimes(page, count));
+}
+
+module.exports = { stepTimes, prepare, pressTimes };

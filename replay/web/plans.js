@@ -1,0 +1,126 @@
+// Plans and intentions: each agent's own planned path, and the teammates' plans an agent planned
+// against at an epoch (SMA-NBO), with those that did not reach it marked.
+/* global CanopyReplay */
+(function () {
+  "use strict";
+
+  const C = CanopyReplay.COLOURS, rgba = CanopyReplay.rgba, inRange = CanopyReplay.inRange;
+  const pathOf = CanopyReplay.pathOf;
+  const FONT = CanopyReplay.FONT;
+  const DOT_GAP = 6;  // px
+
+  // A plan's ground points: from `start`, each action's velocity held for one plan period.
+  function integrate(run, start, velocities) {
+    const period = run.planSteps * run.dt, out = [{ x: start.x, y: start.y }];
+    velocities.forEach(function (v) {
+      const last = out[out.length - 1];
+      out.push({ x: last.x + period * v.x, y: last.y + period * v.y });
+    });
+    return out;
+  }
+
+  // The intentions agent a planned against at the epoch of step k (SMA-NBO), per teammate j:
+  // {from, epoch, path, status}. The record says which epoch's plan of j it held (joint_epoch);
+  // it expected this epoch's when j planned before it (the messages' order is the planning
+  // order), else the one before. status: "ok"; "lost" (held an older one, in range, no
+  // latency); "late" (older, with latency); "out of range"; "none" (nothing ever reached it).
+  function intentions(run, k, a) {
+    const e = run.epochAt[k];
+    if (e < 0 || run.algorithm !== "sma") return [];
+    const E = run.epochs[e];
+    const part = E.plans.filter(function (p) { return p.agent === a; })[0];
+    if (!part || !part.jointEpoch) return [];
+    const order = E.sent.map(function (m) { return m.from; });
+    const out = [];
+    for (let j = 0; j < run.agents.length; j++) {
+      if (j === a || order.indexOf(j) < 0) continue;
+      const held = part.jointEpoch[j];
+      const expected = order.indexOf(j) < order.indexOf(a) ? E.epoch : (e > 0 ? run.epochs[e - 1].epoch : -1);
+      const item = { from: j, epoch: held, path: null, status: "ok", madeAt: -1 };
+      if (held >= 0 && run.epochIndex.has(held)) {
+        const source = run.epochs[run.epochIndex.get(held)];
+        const message = source.sent.filter(function (m) { return m.from === j && m.agent === j; })[0];
+        if (message) {
+          item.path = integrate(run, run.uav(source.k, j), message.velocities);
+          item.madeAt = source.k;
+        }
+      }
+      if (expected >= 0 && held < expected) {
+        const at = run.epochs[run.epochIndex.get(expected)].k;
+        if (!inRange(run, run.uav(at, j), run.uav(at, a))) item.status = "out of range";
+        else if (run.commLatency > 0) item.status = "late";
+        else item.status = "lost";
+      } else if (held < 0 && expected < 0) {
+        item.status = "none";
+      }
+      out.push(item);
+    }
+    return out;
+  }
+  CanopyReplay.intentions = intentions;
+
+  function drawPlans(ctx, view, run, k, a) {
+    ctx.lineWidth = 1.5;
+    run.agents.forEach(function (agent, i) {
+      const plan = run.paths[i][k];
+      if (!plan.length) return;
+      const colour = rgba(agent.colour, 0.784);
+      pathOf(ctx, view, [run.uav(k, i)].concat(plan), false);
+      ctx.strokeStyle = colour;
+      ctx.stroke();
+      // A dot at each planned point, but none within DOT_GAP px of the last one drawn (seen from
+      // far, the dots of a short plan would be one blob over its line).
+      ctx.beginPath();
+      let last = null;
+      plan.forEach(function (q) {
+        const s = view.toScreen(q.x, q.y);
+        if (last && Math.hypot(s.x - last.x, s.y - last.y) < DOT_GAP) return;
+        ctx.moveTo(s.x + 2.5, s.y);
+        ctx.arc(s.x, s.y, 2.5, 0, 2 * Math.PI);
+        last = s;
+      });
+      ctx.fillStyle = colour;
+      ctx.fill();
+    });
+    ctx.font = FONT;
+    // The labels go where they cover no agent and no label placed before them; the others are
+    // left out (a crowd of teammates seen from far).
+    const placed = new CanopyReplay.Boxes();
+    for (let i = 0; i < run.agents.length; i++) {
+      const p = run.uav(k, i), s = view.toScreen(p.x, p.y);
+      placed.add({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
+    }
+    function text(words, x, y) {
+      const box = { x0: x, y0: y - 11, x1: x + CanopyReplay.textWidth(ctx, words, FONT), y1: y + 2 };
+      if (placed.hits(box)) return;
+      placed.add(box);
+      ctx.fillText(words, x, y);
+    }
+    intentions(run, k, a).forEach(function (item) {
+      const from = run.uav(k, item.from), at = view.toScreen(from.x, from.y);
+      const colour = item.status === "ok" ? run.agents[item.from].colour : item.status === "lost" ? C.lost : C.late;
+      if (item.path) {
+        ctx.setLineDash([3, 3]);
+        pathOf(ctx, view, item.path, false);
+        ctx.strokeStyle = colour;
+        ctx.lineWidth = 2;
+        ctx.stroke();
+        ctx.setLineDash([]);
+        const last = item.path[item.path.length - 1], end = view.toScreen(last.x, last.y);
+        ctx.fillStyle = colour;
+        text("intention of k=" + item.madeAt, end.x + 4, end.y - 4);
+      }
+      if (item.status !== "ok" && item.status !== "none") {
+        ctx.strokeStyle = colour;
+        ctx.lineWidth = 2;
+        ctx.beginPath();
+        ctx.moveTo(at.x - 5, at.y - 20); ctx.lineTo(at.x + 5, at.y - 10);
+        ctx.moveTo(at.x + 5, at.y - 20); ctx.lineTo(at.x - 5, at.y - 10);
+        ctx.stroke();
+        ctx.fillStyle = colour;
+        text("intention " + item.status, at.x + 8, at.y - 12);
+      }
+    });
+  }
+  CanopyReplay.drawPlans = drawPlans;
+})();
