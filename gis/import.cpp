@@ -25,6 +25,7 @@ using Json = nlohmann::json;
 constexpr const char* kWgs84 = "EPSG:4326";
 constexpr double kMaxTreeSize = 1000.0;  // m: a crown radius or diameter beyond this is a typo
 constexpr double kMaxWoodTrees = 2e6;    // expected trees in all wood fills together
+constexpr double kPathHalfWidth = 1.0;   // m: a wood's trunks keep this far from a footpath
 
 enum class Category { tree, building, wood, footpath, other };
 
@@ -133,8 +134,9 @@ class Builder {
       extent.lo = extent.lo.cwiseMin(p);
       extent.hi = extent.hi.cwiseMax(p);
     };
-    // Trees, then walls, then wood fills, then footpaths, each in the order of the files and
-    // features: the same data split into other layers or formats gives the same layout.
+    // Trees, then walls, then wood fills, each in the order of the files and features (the same
+    // data split into other layers or formats gives the same layout); the footpaths are read
+    // before the woods, whose trees keep off them.
     for (const Item& item : items_) {
       if (item.category != Category::tree) continue;
       occluders.push_back(treeEntry(item, counts));
@@ -168,17 +170,6 @@ class Builder {
       occluders.push_back({{"type", "polygon"}, {"vertices", vertices}});
       ++counts["buildings"];
     }
-    std::uint64_t wood_index = 0;
-    for (const Item& item : items_) {
-      if (item.category != Category::wood) continue;
-      const auto trees = woodFill(item, wood_index++);
-      for (const Vec2& c : trees) {
-        occluders.push_back({{"type", "disc"}, {"centre", point(c)}, {"radius", options_.default_radius}});
-        grow(c);
-      }
-      counts["wood_trees"] += static_cast<int>(trees.size());
-      ++counts["woods"];
-    }
     for (const Item& item : items_) {
       if (item.category != Category::footpath) continue;
       for (std::size_t part = 0; part < item.lonlat.size(); ++part) {
@@ -194,8 +185,20 @@ class Builder {
           grow(p);
         }
         footpaths.push_back(std::move(json_line));
+        footpath_lines_.push_back(kept);
         ++counts["footpaths"];
       }
+    }
+    std::uint64_t wood_index = 0;
+    for (const Item& item : items_) {
+      if (item.category != Category::wood) continue;
+      const auto trees = woodFill(item, wood_index++);
+      for (const Vec2& c : trees) {
+        occluders.push_back({{"type", "disc"}, {"centre", point(c)}, {"radius", options_.default_radius}});
+        grow(c);
+      }
+      counts["wood_trees"] += static_cast<int>(trees.size());
+      ++counts["woods"];
     }
     for (const Item& item : items_) counts["other_features"] += item.category == Category::other;
 
@@ -444,7 +447,9 @@ class Builder {
       const Vec2 p(roundToMillimetre(x), roundToMillimetre(y));
       bool inside = insideRing(rings.front(), p);
       for (std::size_t h = 1; h < rings.size() && inside; ++h) inside = !insideRing(rings[h], p);
-      if (inside) out.push_back(p);
+      // Trees do not grow on footpaths: none whose trunk comes within kPathHalfWidth of one.
+      if (inside && distanceToFootpaths(p) >= kPathHalfWidth + world::defaultTrunkRadius(options_.default_radius))
+        out.push_back(p);
     }
     return out;
   }
@@ -459,8 +464,22 @@ class Builder {
     return "";
   }
 
+  // The least distance from p to an imported footpath (m); infinity without footpaths.
+  double distanceToFootpaths(const Vec2& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (const std::vector<Vec2>& line : footpath_lines_) {
+      for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        const Vec2 e = line[i + 1] - line[i];
+        const double s = std::clamp((p - line[i]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        best = std::min(best, (line[i] + s * e - p).norm());
+      }
+    }
+    return best;
+  }
+
   const ImportOptions& options_;
   std::vector<SourceLayer> layers_;
+  std::vector<std::vector<Vec2>> footpath_lines_;  // local frame, for the wood fills
   std::vector<Item> items_;
   bool metric_ = false;
   Vec2 offset_ = Vec2::Zero();

@@ -148,6 +148,39 @@ TEST(GisImport, TreeInventoryFieldsAndAMetricCrsKeptAsItIs) {
   fs::remove_all(dir);
 }
 
+// An OpenStreetMap XML file through GDAL's OSM driver: tags other than its standard columns
+// (diameter_crown, circumference) come in other_tags; the data is attributed to OSM by default.
+TEST(GisImport, OsmXmlWithOtherTags) {
+  const fs::path dir = fresh("gis_osm");
+  fs::create_directories(dir);
+  write(dir / "tiny.osm", R"(<?xml version="1.0" encoding="UTF-8"?>
+<osm version="0.6" generator="hand">
+  <node id="1" lat="52.2050" lon="0.1200"><tag k="natural" v="tree"/><tag k="diameter_crown" v="8"/><tag k="circumference" v="1.2"/></node>
+  <node id="2" lat="52.2052" lon="0.1203"><tag k="natural" v="tree"/></node>
+  <node id="3" lat="52.2052" lon="0.1204"><tag k="amenity" v="bench"/></node>
+  <node id="10" lat="52.2055" lon="0.1210"/> <node id="11" lat="52.2055" lon="0.1214"/>
+  <node id="12" lat="52.2058" lon="0.1214"/> <node id="13" lat="52.2058" lon="0.1212"/>
+  <node id="14" lat="52.2057" lon="0.1212"/> <node id="15" lat="52.2057" lon="0.1210"/>
+  <node id="20" lat="52.2050" lon="0.1205"/> <node id="21" lat="52.2053" lon="0.1208"/>
+  <node id="22" lat="52.2054" lon="0.1215"/>
+  <way id="100"><nd ref="10"/><nd ref="11"/><nd ref="12"/><nd ref="13"/><nd ref="14"/><nd ref="15"/><nd ref="10"/><tag k="building" v="yes"/></way>
+  <way id="101"><nd ref="20"/><nd ref="21"/><nd ref="22"/><tag k="highway" v="footway"/></way>
+</osm>
+)");
+  const Json layout = importTo(dir, "tiny.osm", "t.json");
+  const Json& occ = layout["occluders"];
+  ASSERT_EQ(occ.size(), 3u);
+  EXPECT_EQ(occ[0]["radius"], 4.0);                  // diameter_crown 8 m
+  EXPECT_EQ(occ[0]["trunk_radius"], 0.191);          // circumference 1.2 m / 2π, to the mm
+  EXPECT_EQ(occ[1]["radius"], 2.5);                  // no size: the default
+  EXPECT_EQ(occ[2]["vertices"].size(), 6u);          // the L-shaped building
+  EXPECT_EQ(layout["footpaths"].size(), 1u);
+  EXPECT_EQ(layout["footpaths"][0].size(), 3u);
+  EXPECT_NE(layout["source"]["attribution"].get<std::string>().find("OpenStreetMap contributors"),
+            std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(GisImport, BadFilesUnknownLayersAndMissingFieldsExitTwoNamingFileAndField) {
   const fs::path dir = fresh("gis_errors");
   fs::create_directories(dir);

@@ -86,5 +86,79 @@ TEST(GisScenario, PeopleWalkTheImportedFootpathsAndStayOnThem) {
   fs::remove_all(dir);
 }
 
+// A goal the start's footpaths do not reach, and a layout without footpaths: exit 2 naming the
+// field (and the layout file).
+TEST(GisScenario, UnreachableGoalsAndLayoutsWithoutFootpathsAreNamed) {
+  const fs::path dir = fresh("gis_walk_errors");
+  fs::create_directories(dir);
+  std::ofstream(dir / "two.json")
+      << R"({"occluders": [], "footpaths": [[[0, 0], [10, 0]], [[0, 5], [10, 5]]]})";
+  std::ofstream(dir / "none.json") << R"({"occluders": []})";
+  auto scenario = [](const std::string& path) {
+    return R"({"aoi": [-20, -20, 20, 20], "uavs": [{"start": [0, 0]}], "targets": [{"path": )" +
+           path + "}]}";
+  };
+  std::ofstream(dir / "a.json")
+      << scenario(R"({"footpaths": "two.json", "from": [0, 0], "to": [10, 5]})");
+  std::ofstream(dir / "b.json") << scenario(R"({"footpaths": "none.json", "from": [0, 0]})");
+  const Outcome a = runIn(dir, "validate a.json");
+  EXPECT_EQ(a.code, 2);
+  EXPECT_NE(a.err.find("a.json: targets[0].path.to: expected a point the start's footpaths lead to"),
+            std::string::npos)
+      << a.err;
+  const Outcome b = runIn(dir, "validate b.json");
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.err.find("b.json: targets[0].path.footpaths: in the layout file none.json: footpaths: "
+                       "expected a layout file with footpaths"),
+            std::string::npos)
+      << b.err;
+  fs::remove_all(dir);
+}
+
+// The built-in example's layout is what `canopy import` makes of the synthetic GeoJSON today
+// (the command in scenarios/library/campus_walk.json's header).
+TEST(GisScenario, TheBuiltInCampusLayoutIsAFreshImport) {
+  const fs::path dir = fresh("gis_builtin");
+  const fs::path source = fs::path(CANOPY_SOURCE_DIR) / "examples" / "gis";
+  const fs::path committed =
+      fs::path(CANOPY_SOURCE_DIR) / "scenarios" / "library" / "layouts" / "synthetic_campus.json";
+  const Json before = Json::parse(slurp(committed));
+  const Outcome o =
+      runIn(dir, "import '" + (source / "synthetic_campus.geojson").string() +
+                     "' --out campus.json --attribution '" +
+                     before["source"]["attribution"].get<std::string>() + "'");
+  ASSERT_EQ(o.code, 0) << o.err;
+  const Json now = Json::parse(slurp(dir / "campus.json"));
+  EXPECT_EQ(now["occluders"], before["occluders"]);
+  EXPECT_EQ(now["footpaths"], before["footpaths"]);
+  for (const char* key : {"imported", "origin", "frame", "crs", "extent"})
+    EXPECT_EQ(now["source"][key], before["source"][key]) << key;
+  // The issue's bar on its shape: three concave buildings, one of 20 vertices, none skipped.
+  EXPECT_EQ(before["source"]["imported"]["buildings"], 3);
+  EXPECT_EQ(before["source"]["imported"]["buildings_skipped"], 0);
+  bool twenty = false;
+  for (const Json& o2 : before["occluders"])
+    twenty = twenty || (o2["type"] == "polygon" && o2["vertices"].size() == 20u);
+  EXPECT_TRUE(twenty);
+  // The wood's trees (the discs after the walls) keep their trunks (0.25 m for a 2.5 m crown)
+  // 1 m off every footpath, so nobody walks through a trunk: no warning from validate.
+  bool after_walls = false;
+  int wood_trees = 0;
+  for (const Json& o2 : before["occluders"]) {
+    after_walls = after_walls || o2["type"] == "polygon";
+    if (!after_walls || o2["type"] != "disc") continue;
+    ++wood_trees;
+    EXPECT_GE(distanceToFootpaths(before["footpaths"], o2["centre"][0], o2["centre"][1]), 1.25);
+  }
+  EXPECT_EQ(wood_trees, before["source"]["imported"]["wood_trees"].get<int>());
+  const Outcome validate = runIn(dir, "validate campus_walk");
+  EXPECT_EQ(validate.code, 0) << validate.err;
+  EXPECT_EQ(validate.err, "");
+  EXPECT_NE(validate.out.find("synthetic_campus.json: imported from [\"examples/gis/synthetic_campus.geojson\"]"),
+            std::string::npos)
+      << validate.out;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace canopy::cli_test
