@@ -1,9 +1,9 @@
 // Reading UAVs, targets and their scripted paths.
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/angles.h"
 #include "core/progress.h"
@@ -96,6 +96,7 @@ std::vector<world::TimedPoint> readFootpathWalk(ObjectReader& reader, const Aabb
   }
   return points;
 }
+
 }  // namespace
 
 world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside) {

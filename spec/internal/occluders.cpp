@@ -209,8 +209,7 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
   readTrunk(reader, out, first);
 }
 
-
-// What `canopy import` recorded of a layout's source (gis/layout_writer.cpp): one line.
+// What `canopy import` recorded of a layout's source (gis/import.cpp): one line.
 std::string describeSource(const Field& source) {
   const Json& j = source.json();
   if (!j.is_object()) source.fail("expected an object (what canopy import recorded)");
@@ -262,9 +261,6 @@ std::vector<std::vector<Vec2>> readLayoutFootpaths(const Field& name_field) {
     name_field.fail(std::string("in the layout file ") + e.what());
   }
 }
-
-namespace {
-}  // namespace
 
 ArrayLimit occluderListLimit(double tree_limit) {
   const auto most = static_cast<std::size_t>(std::floor(tree_limit));
