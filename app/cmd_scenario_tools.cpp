@@ -65,6 +65,9 @@ int Validate::run() {
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps (k = 0 … %d, dt = %g s)\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
               spec.trees.size(), spec.steps() + 1, spec.steps(), spec.dt);
+  // Layouts made by `canopy import`: what each holds and where it came from.
+  for (const std::string& line : spec.layout_sources)
+    std::printf("  layout %s\n", printable(line, 600).c_str());
   return kExitOk;
 }
 

@@ -49,6 +49,7 @@ std::unique_ptr<Command> makeSweep(CLI::App& canopy);
 std::unique_ptr<Command> makeAnalyze(CLI::App& canopy);
 std::unique_ptr<Command> makeReproduce(CLI::App& canopy);
 std::unique_ptr<Command> makeForest(CLI::App& canopy);
+std::unique_ptr<Command> makeImport(CLI::App& canopy);
 std::unique_ptr<Command> makeSchema(CLI::App& canopy);
 std::unique_ptr<Command> makeList(CLI::App& canopy);
 

@@ -31,6 +31,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& canopy,
   commands.push_back(makeAnalyze(canopy));
   commands.push_back(makeReproduce(canopy));
   commands.push_back(makeForest(canopy));
+  commands.push_back(makeImport(canopy));
   commands.push_back(makeSchema(canopy));
   commands.push_back(makeList(canopy));
   return commands;

@@ -62,7 +62,8 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"targets", "", "the people to track"},
       {"targets[].name", "", "the target's name (default TN)"},
       {"targets[].label", "", "the target's class label (never \"tree\")"},
-      {"targets[].path", "", "its scripted path: waypoints, velocity or track (required)"},
+      {"targets[].path", "",
+       "its scripted path: waypoints, velocity, track or footpaths (required)"},
       {"targets[].path.waypoints", "",
        "[{\"t\": s, \"p\": [x, y]}, …], times increasing, linear in between"},
       {"targets[].path.waypoints[].t", "s", "time of the waypoint"},
@@ -71,6 +72,17 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"targets[].path.velocity", "m/s", "constant-velocity path: velocity [vx, vy]"},
       {"targets[].path.track", "s, m",
        "[[t, x, y], …] rows, or the name of a CSV file of t,x,y rows"},
+      {"targets[].path.footpaths", "",
+       "footpath walk: a layout file with footpaths (as `canopy import` writes), named as an "
+       "include is; the person walks the network from the point nearest `from`"},
+      {"targets[].path.from", "m", "footpath walk: the person starts at the network point nearest this"},
+      {"targets[].path.to", "m",
+       "footpath walk: walks the shortest route to the network point nearest this, then stays; "
+       "absent: a random walk"},
+      {"targets[].path.speed", "m/s", "footpath walk: walking speed"},
+      {"targets[].path.seed", "",
+       "footpath random walk: its seed (at each junction a uniformly drawn branch, never back "
+       "unless at a dead end)"},
       {"occluders", "",
        "tree crowns: explicit trees, generators and {\"include\": \"layouts/file.json\"}"},
       {"occluders[].type", "", "disc, polygon, poisson, grid or cluster"},
@@ -84,7 +96,10 @@ const std::vector<FieldDoc>& fieldDocs() {
        "clamped to [0.05, 0.5] m, and a polygon is a wall, solid throughout"},
       {"occluders[].radius", "m",
        "disc: radius; poisson, grid, cluster: a radius or [min, max] drawn uniformly"},
-      {"occluders[].vertices", "m", "polygon: 3 to 8 convex vertices [[x, y], …]"},
+      {"occluders[].vertices", "m",
+       "polygon: its vertices [[x, y], …] in order, either way round: 3 to 8 convex ones (a crown "
+       "or wall), or up to 1024 of any simple polygon, concave allowed, no self-crossing (a wall "
+       "cut into convex pieces, docs/gis-import.md)"},
       {"occluders[].region", "m",
        "poisson, cluster: [x_min, y_min, x_max, y_max] (default the AOI)"},
       {"occluders[].lambda", "1/m²", "poisson: trees per m²"},

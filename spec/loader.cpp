@@ -175,7 +175,8 @@ ScenarioSpec loadDocument(Json document, const std::string& file, const LoadOpti
     Json occluders_effective = Json::array();
     if (auto list = root.optional("occluders")) {
       std::vector<std::string> include_stack{fs::weakly_canonical(fs::path(file)).string()};
-      internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack);
+      internal::readOccluders(*list, spec.aoi, spec.trees, occluders_effective, include_stack,
+                              &spec.layout_sources);
     }
     effective["occluders"] = std::move(occluders_effective);
   });

@@ -56,6 +56,8 @@ struct ScenarioSpec {
   std::vector<UavSpec> uavs;
   std::vector<TargetSpec> targets;
   std::vector<world::TreeDef> trees;  // every occluder, explicit and generated
+  /// Per included layout made by `canopy import`: "FILE: imported from …: N trees, …".
+  std::vector<std::string> layout_sources;
 
   agents::TrackingConfig tracking;
   agents::FusionConfig fusion;

@@ -252,9 +252,18 @@ std::string scenarioSchemaJson() {
     if (!info.instances.empty()) addRequirements(node, info);
   }
   // A layout file (scenarios/library/layouts/, named by an occluder's "include") holds occluders
-  // as the scenario's list does, bare or as {"description": …, "occluders": [...]}
+  // as the scenario's list does, bare or as {"description": …, "occluders": [...], "source": …,
+  // "footpaths": [...]}
   // (spec/internal/occluders.cpp, readOccluders).
   const Json& occluders = schema["properties"]["occluders"];
+  // Footpath polylines [[x, y], …] (m) that a target's {"footpaths": …} path walks.
+  const Json point = {{"type", "array"}, {"minItems", 2}, {"maxItems", 2},
+                      {"items", {{"type", "number"}}}};
+  const Json line = {{"type", "array"}, {"minItems", 2}, {"items", point}};
+  const Json footpaths = {{"type", "array"}, {"minItems", 1}, {"items", line}};
+  Json properties = {{"description", {{"type", "string"}}}, {"occluders", occluders}};
+  properties["source"] = {{"type", "object"}};  // what `canopy import` recorded, kept as it is
+  properties["footpaths"] = footpaths;
   schema["$defs"]["layout"] = {
       {"description", "A layout file: the occluders an occluder's \"include\" names."},
       {"oneOf",
@@ -262,7 +271,7 @@ std::string scenarioSchemaJson() {
         {{"type", "object"},
          {"additionalProperties", false},
          {"required", {"occluders"}},
-         {"properties", {{"description", {{"type", "string"}}}, {"occluders", occluders}}}}}}};
+         {"properties", properties}}}}};
   return schema.dump(2) + "\n";
 }
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 namespace canopy::world {
+static_assert(kMaxPolygonVertices == static_cast<std::size_t>(b2_maxPolygonVertices));
 namespace {
 double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();

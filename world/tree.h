@@ -61,6 +61,8 @@ bool isStrictlyConvex(const std::vector<Vec2>& vertices);
 
 /// Coordinates a crown may reach, m: Box2D keeps positions as floats, one metre apart at 1e7.
 constexpr double kMaxTreeCoordinate = 1e7;
+/// The most vertices of one convex polygon: Box2D's b2_maxPolygonVertices (tree.cpp checks).
+constexpr std::size_t kMaxPolygonVertices = 8;
 /// Shortest polygon edge, m: ten times Box2D's linear slop (it welds vertices within half of it).
 constexpr double kMinPolygonEdge = 0.05;
 

@@ -1,13 +1,16 @@
 // Reading UAVs, targets and their scripted paths.
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/angles.h"
 #include "core/progress.h"
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
 #include "spec/track_csv.h"
+#include "world/footpaths.h"
 
 namespace canopy::spec::internal {
 namespace {
@@ -51,11 +54,54 @@ std::vector<world::TimedPoint> readTrackCsv(const Field& field) {
   }
 }
 
+double shortestLeg(const world::FootpathNetwork& network) {
+  double shortest = 1e300;
+  for (const auto& [a, b] : network.segments()) shortest = std::min(shortest, (b - a).norm());
+  return shortest;
+}
+
+// A walk over a layout's footpath network (world/footpaths.h): the shortest route from "from" to
+// "to", or without "to" a random walk drawn from "seed", at "speed".
+std::vector<world::TimedPoint> readFootpathWalk(ObjectReader& reader, const Aabb& aoi,
+                                                double duration, bool check_inside) {
+  const Field layout = reader.required("footpaths");
+  const world::FootpathNetwork network(readLayoutFootpaths(layout));
+  if (network.edgeCount() == 0)
+    layout.fail("expected footpaths with at least one segment of two distinct points");
+  const Field from_field = reader.required("from");
+  const Vec2 from = from_field.vec2();
+  const double speed = reader.number("speed", 1.4, Bound::positive);
+  if (speed > 1e3) reader.required("speed").fail("expected at most 1000 m/s");
+  std::vector<world::TimedPoint> points;
+  if (auto to_field = reader.optional("to")) {
+    const Vec2 to = to_field->vec2();
+    try {
+      points = network.route(from, to, speed);
+    } catch (const std::invalid_argument& e) {
+      to_field->fail(std::string("expected a point the start's footpaths lead to: ") + e.what());
+    }
+  } else {
+    const auto seed = static_cast<std::uint64_t>(reader.integer("seed", 1, 0, 2147483647));
+    // At most 10⁶ legs: a network of legs far shorter than the walk is refused.
+    const double legs = duration * speed / std::max(1e-9, shortestLeg(network));
+    if (legs > 1e6) {
+      from_field.fail("expected a walk of at most 10⁶ legs; the network's shortest segment makes "
+                      "this one's up to " + std::to_string(legs));
+    }
+    points = network.randomWalk(from, speed, duration, seed, 0);
+  }
+  if (check_inside) {
+    for (const world::TimedPoint& q : points)
+      requireInside(from_field, q.p, aoi, "every point of the walk");
+  }
+  return points;
+}
+
 }  // namespace
 
 world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside) {
   ObjectReader reader = field.object();
-  const std::string kind = reader.oneOf({"waypoints", "velocity", "track"});
+  const std::string kind = reader.oneOf({"waypoints", "velocity", "track", "footpaths"});
   world::Path path;
   if (kind == "waypoints") {
     const Field list = reader.required("waypoints");
@@ -103,10 +149,13 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
       for (const world::TimedPoint& q : points) requireInside(track, q.p, aoi, "every track point");
     }
     path = world::Path::throughPoints(std::move(points));
+  } else if (kind == "footpaths") {
+    path = world::Path::throughPoints(readFootpathWalk(reader, aoi, duration, check_inside));
   } else {
     field.fail(
         "expected a path: {\"waypoints\": [{\"t\": …, \"p\": [x, y]}, …]}, "
-        "{\"start\": [x, y], \"velocity\": [vx, vy]} or {\"track\": \"file.csv\"}");
+        "{\"start\": [x, y], \"velocity\": [vx, vy]}, {\"track\": \"file.csv\"} or "
+        "{\"footpaths\": \"layout.json\", \"from\": [x, y], …}");
   }
   reader.finish();
   return path;

@@ -11,6 +11,7 @@
 #include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
 #include "spec/loader.h"
+#include "world/convex_pieces.h"
 
 namespace canopy::spec::internal {
 namespace fs = std::filesystem;
@@ -95,14 +96,36 @@ void requireCentresInside(const Field& field, const std::vector<world::TreeDef>&
   }
 }
 
-world::TreeDef readPolygon(ObjectReader& reader) {
+// A polygon: a convex one of at most b2_maxPolygonVertices vertices is one tree (a crown or a
+// wall); any other simple polygon is a wall cut into convex pieces (world/convex_pieces.h), each
+// a convex polygon wall of its own.
+std::vector<world::TreeDef> readPolygon(ObjectReader& reader) {
   const Field list = reader.required("vertices");
   std::vector<Vec2> vertices;
-  for (const Field& v : list.elements(3, 8)) vertices.push_back(v.vec2());
-  // Box2D's own limits, checked here: a polygon it cannot build would abort the run.
-  if (const std::string problem = world::box2dPolygonProblem(vertices); !problem.empty())
+  for (const Field& v : list.elements(3, world::kMaxWallVertices)) vertices.push_back(v.vec2());
+  if (vertices.size() <= world::kMaxPolygonVertices &&
+      world::isStrictlyConvex(vertices)) {
+    // Box2D's own limits, checked here: a polygon it cannot build would abort the run.
+    if (const std::string problem = world::box2dPolygonProblem(vertices); !problem.empty())
+      list.fail(problem);
+    return {world::TreeDef::polygon(std::move(vertices))};
+  }
+  if (const std::string problem = world::simplePolygonProblem(vertices); !problem.empty())
     list.fail(problem);
-  return world::TreeDef::polygon(std::move(vertices));
+  if (reader.has("trunk_radius")) {
+    reader.required("trunk_radius")
+        .fail("expected no trunk on a concave polygon or one of more than " +
+              std::to_string(world::kMaxPolygonVertices) +
+              " vertices: it is a wall, cut into convex pieces");
+  }
+  std::vector<world::TreeDef> pieces;
+  try {
+    for (std::vector<Vec2>& piece : world::convexPieces(vertices))
+      pieces.push_back(world::TreeDef::polygon(std::move(piece)));
+  } catch (const std::invalid_argument& e) {
+    list.fail(e.what());
+  }
+  return pieces;
 }
 
 // trunk_radius: every tree of the entry gets it, no wider than its crown. Absent, a disc keeps
@@ -136,8 +159,9 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
       radius_field.fail(problem);
     requireCentresInside(centre_field, {out.back()}, aoi);
   } else if (type == "polygon") {
-    out.push_back(readPolygon(reader));
-    requireCentresInside(field, {out.back()}, aoi);
+    const std::vector<world::TreeDef> pieces = readPolygon(reader);
+    requireCentresInside(field, pieces, aoi);
+    out.insert(out.end(), pieces.begin(), pieces.end());
   } else if (type == "poisson") {
     PoissonForestDef def;
     def.region = readRegion(reader, aoi);
@@ -185,7 +209,58 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
   readTrunk(reader, out, first);
 }
 
+// What `canopy import` recorded of a layout's source (gis/import.cpp): one line.
+std::string describeSource(const Field& source) {
+  const Json& j = source.json();
+  if (!j.is_object()) source.fail("expected an object (what canopy import recorded)");
+  auto text = [&](const char* key) {
+    return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : std::string();
+  };
+  std::ostringstream line;
+  line << "imported from " << (j.contains("files") ? j["files"].dump() : "?");
+  if (!text("crs").empty()) line << " (" << text("crs") << ")";
+  if (j.contains("imported") && j["imported"].is_object()) {
+    const Json& n = j["imported"];
+    const char* sep = ": ";
+    for (const auto& [key, value] : n.items()) {
+      if (!value.is_number()) continue;
+      line << sep << value.dump() << " " << key;
+      sep = ", ";
+    }
+  }
+  if (!text("attribution").empty()) line << "; " << text("attribution");
+  return line.str();
+}
+
 }  // namespace
+
+std::vector<std::vector<Vec2>> readFootpathLines(const Field& list) {
+  std::vector<std::vector<Vec2>> lines;
+  for (const Field& line : list.elements(1)) {
+    std::vector<Vec2> points;
+    for (const Field& p : line.elements(2)) {
+      points.push_back(p.vec2());
+      if (points.back().cwiseAbs().maxCoeff() > world::kMaxTreeCoordinate)
+        p.fail("expected coordinates within ±1e7 m");
+    }
+    lines.push_back(std::move(points));
+  }
+  return lines;
+}
+
+std::vector<std::vector<Vec2>> readLayoutFootpaths(const Field& name_field) {
+  const ReferencedFile file = readReferencedFile(name_field, "layout file", libraryDir());
+  try {
+    const Json document = parseJson(file.text, file.shown);
+    if (!document.is_object() || !document.contains("footpaths")) {
+      throw ScenarioError(file.shown, "footpaths",
+                          "expected a layout file with footpaths (as canopy import writes)");
+    }
+    return readFootpathLines(Field(document["footpaths"], file.shown, "footpaths", nullptr));
+  } catch (const ScenarioError& e) {
+    name_field.fail(std::string("in the layout file ") + e.what());
+  }
+}
 
 ArrayLimit occluderListLimit(double tree_limit) {
   const auto most = static_cast<std::size_t>(std::floor(tree_limit));
@@ -196,7 +271,8 @@ ArrayLimit occluderListLimit(double tree_limit) {
 }
 
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
-                   Json& effective, std::vector<std::string>& include_stack) {
+                   Json& effective, std::vector<std::string>& include_stack,
+                   std::vector<std::string>* sources) {
   const std::vector<Field> elements = list.elements();
   ProgressCounter progress("reading occluders", static_cast<double>(elements.size()));
   for (const Field& element : elements) {
@@ -229,6 +305,10 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
           ObjectReader layout = Field(document, file.shown, "", nullptr).object();
           layout.optional("description");
           layout.required("occluders");
+          if (auto lines = layout.optional("footpaths")) readFootpathLines(*lines);
+          if (auto source = layout.optional("source")) {
+            if (sources) sources->push_back(file.shown + ": " + describeSource(*source));
+          }
           layout.finish();
         }
         const Json& inner = wrapped ? document.at("occluders") : document;
@@ -238,7 +318,7 @@ void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDe
         quiet.log = nullptr;
         readOccluders(Field(inner, file.path.string(), wrapped ? "occluders" : "", nullptr,
                             name_field.context() ? &quiet : nullptr),
-                      aoi, trees, effective, include_stack);
+                      aoi, trees, effective, include_stack, sources);
         include_stack.pop_back();
       } catch (const ScenarioError& e) {
         name_field.fail(std::string("in the layout file ") + e.what());

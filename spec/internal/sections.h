@@ -25,8 +25,15 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec);
 std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec);
 /// Reads the occluder list (explicit trees, generators, includes); appends to spec.trees.
 /// `effective` receives the flattened effective list (includes inlined).
+/// `sources`, when given, receives one line per included layout that records its source (a
+/// layout made by `canopy import`): what it holds and where from.
 void readOccluders(const Field& list, const Aabb& aoi, std::vector<world::TreeDef>& trees,
-                   Json& effective, std::vector<std::string>& include_stack);
+                   Json& effective, std::vector<std::string>& include_stack,
+                   std::vector<std::string>* sources = nullptr);
+/// A layout's "footpaths": polylines of at least two points [[x, y], …] (m).
+std::vector<std::vector<Vec2>> readFootpathLines(const Field& list);
+/// The footpaths of the layout file `name_field` names (resolved as an include is).
+std::vector<std::vector<Vec2>> readLayoutFootpaths(const Field& name_field);
 
 /// Returns the clutter label's name.
 std::string readSensing(ObjectReader& root, ScenarioSpec& spec);

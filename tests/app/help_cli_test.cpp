@@ -28,6 +28,7 @@ TEST(HelpCli, EveryCommandHasHelpListingItsOptionsWithDefaults) {
       {"analyze", {"--out DIR", "--state NAME", "--before-hiding S"}},
       {"reproduce", {"--trials N", "--seed S"}},
       {"forest", {"--aoi", "--lambda L", "--min-gap G"}},
+      {"import", {"--out LAYOUT.json", "--origin LAT,LON", "--bbox W,S,E,N", "--radius-field NAME"}},
       {"list", {}}};
   for (const auto& [command, options] : commands) {
     for (const char* flag : {"--help", "-h"}) {
@@ -129,7 +130,7 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
   }
   const std::set<std::string> commands = {"run",   "validate", "coverage",  "view",
                                           "record", "sweep",   "analyze",   "reproduce",
-                                          "forest", "schema",  "list"};
+                                          "forest", "import",  "schema",  "list"};
   std::set<std::string> in_readme;
   for (const auto& [command, options] : readme_options) in_readme.insert(command);
   EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
@@ -152,7 +153,12 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
                                                       {"PATH=VALUE", "seed=1"},
                                                       {"R[,R_MAX]", "1,2"},
                                                       {"x0,y0,x1,y1", "0,0,10,10"},
-                                                      {"aoi|action|x0,y0,x1,y1", "aoi"}};
+                                                      {"aoi|action|x0,y0,x1,y1", "aoi"},
+                                                      {"LAYOUT.json", "l.json"},
+                                                      {"W,S,E,N", "0,0,1,1"},
+                                                      {"LAT,LON", "0,0"},
+                                                      {"R", "1"},
+                                                      {"TEXT", "t"}};
   for (const std::string& command : commands) {
     SCOPED_TRACE(command);
     const Outcome help = runIn(dir, command + " --help");
@@ -161,8 +167,10 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
     for (const std::string& option : readme_options[command])
       EXPECT_TRUE(options.count(option)) << "README lists " << option << ", --help does not";
     // forest refuses to parse without its three required options.
-    const std::string base =
-        command == "forest" ? "forest --aoi 0,0,10,10 --lambda 1 --radius 1" : command;
+    // forest and import refuse to parse without their required options.
+    const std::string base = command == "forest"   ? "forest --aoi 0,0,10,10 --lambda 1 --radius 1"
+                             : command == "import" ? "import x.geojson --out l.json"
+                                                   : command;
     for (const auto& [option, value] : options) {
       ASSERT_TRUE(value.empty() || samples.count(value)) << option << " " << value;
       const std::string args =

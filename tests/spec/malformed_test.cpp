@@ -136,11 +136,16 @@ const std::vector<Case>& cases() {
        base("[{\"start\": [10, 10]}]", "[]",
             R"(, "occluders": [{"type": "disc", "centre": [500, 5], "radius": 1}])"),
        {"occluders[0].centre: expected every tree inside the AOI"}},
-      {"ConcavePolygon",
+      {"SelfCrossingPolygon",  // a bow tie: edge 0 (0,0)→(4,4) crosses edge 2 (4,0)→(0,4)
        base(
            "[{\"start\": [10, 10]}]", "[]",
-           R"(, "occluders": [{"type": "polygon", "vertices": [[0, 0], [4, 0], [2, 1], [4, 4], [0, 4]]}])"),
-       {"occluders[0].vertices: expected the vertices of a convex polygon"}},
+           R"(, "occluders": [{"type": "polygon", "vertices": [[0, 0], [4, 4], [4, 0], [0, 4]]}])"),
+       {"occluders[0].vertices: edges 0 (vertices 0 to 1) and 2 (vertices 2 to 3) cross"}},
+      {"ConcavePolygonWithATrunk",  // a concave polygon is a wall cut into pieces: no trunk
+       base(
+           "[{\"start\": [10, 10]}]", "[]",
+           R"(, "occluders": [{"type": "polygon", "vertices": [[0, 0], [4, 0], [2, 1], [4, 4], [0, 4]], "trunk_radius": 0.3}])"),
+       {"occluders[0].trunk_radius: expected no trunk on a concave polygon"}},
       {"HugePoissonForest",
        base("[{\"start\": [10, 10]}]", "[]",
             R"(, "occluders": [{"type": "poisson", "lambda": 1000, "radius": 1}])"),
