@@ -8,14 +8,16 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "world/plane_geometry.h"
 #include "world/tree.h"
 
 namespace canopy::world {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+using plane::cross;
+using plane::metres;
+using plane::pointSegmentDistance;
+
 // Orientation of c against the directed line a → b: > 0 left, < 0 right, 0 on it.
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
   return cross(b - a, c - a);
@@ -38,18 +40,6 @@ bool segmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
 // How far a new diagonal must pass from every other vertex, m: twice Box2D's linear slop.
 constexpr double kEarClearance = 2.0 * b2_linearSlop;
 
-double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 e = b - a;
-  const double s = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-  return (a + s * e - p).norm();
-}
-
-std::string metres(double x) {
-  std::ostringstream text;
-  text.precision(3);
-  text << x;
-  return text.str();
-}
 
 // The smallest angle of the triangle a, b, c (rad).
 double smallestAngle(const Vec2& a, const Vec2& b, const Vec2& c) {

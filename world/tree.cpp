@@ -10,12 +10,14 @@
 #include <numbers>
 #include <sstream>
 
+#include "world/plane_geometry.h"
+
 namespace canopy::world {
 static_assert(kMaxPolygonVertices == static_cast<std::size_t>(b2_maxPolygonVertices));
 namespace {
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+using plane::cross;
+using plane::metres;
+using plane::pointSegmentDistance;
 }  // namespace
 
 TreeDef TreeDef::disc(const Vec2& centre, double radius) {
@@ -49,13 +51,6 @@ double solidDistance(const TreeDef& tree, const Vec2& p) {
 }
 
 namespace {
-// The distance from p to the segment a → b.
-double pointSegmentDistance(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 e = b - a;
-  const double length_sq = e.squaredNorm();
-  const double s = length_sq > 0.0 ? std::clamp((p - a).dot(e) / length_sq, 0.0, 1.0) : 0.0;
-  return (a + s * e - p).norm();
-}
 // True when the segments a → b and c → d cross or touch; collinear ones are left to the
 // distances of their ends.
 bool segmentsCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
@@ -198,12 +193,6 @@ Aabb bounds(const TreeDef& tree) {
 
 namespace {
 
-std::string metres(double x) {
-  std::ostringstream text;
-  text.precision(3);
-  text << x;
-  return text.str();
-}
 
 // Box2D's b2PolygonShape::Set (2.4.1) on float vertices: the number of vertices its
 // gift-wrapping hull keeps (it keeps the rightmost and every vertex with a strict left turn).
