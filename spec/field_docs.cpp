@@ -59,6 +59,21 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"uavs[].fov.angle", "rad", "ground robots: the field of view's full angle, at most 2π"},
       {"uavs[].quality", "", "α_i, scales the whole measurement covariance R"},
       {"uavs[].r0", "m", "floor of the range d in R(z, p_i)"},
+      {"uavs[].z", "m",
+       "altitude (default 20 m, the altitude at which fov.size is the footprint); any of z, "
+       "z_min, z_max, climb_rate or camera makes the UAV fly at a chosen altitude: its footprint "
+       "follows from altitude and camera, its noise grows with the slant distance, the record "
+       "writes its z"},
+      {"uavs[].z_min", "m", "lowest altitude (default z: fixed)"},
+      {"uavs[].z_max", "m", "highest altitude (default z: fixed); z_min < z_max lets the planner "
+                            "choose the climb"},
+      {"uavs[].climb_rate", "m/s", "largest climb or descent rate |ż|"},
+      {"uavs[].camera", "", "a pinhole camera: fields of view and pitch (default: the angles that "
+                            "make fov.size the nadir footprint at 20 m)"},
+      {"uavs[].camera.hfov", "rad", "horizontal field of view, across the heading, below π"},
+      {"uavs[].camera.vfov", "rad", "vertical field of view, along the heading, below π"},
+      {"uavs[].camera.pitch", "rad",
+       "the optical axis tilted forward from nadir (0); pitch + vfov/2 ≤ 80°: a trapezoid ahead"},
       {"targets", "", "the people to track"},
       {"targets[].name", "", "the target's name (default TN)"},
       {"targets[].label", "", "the target's class label (never \"tree\")"},
