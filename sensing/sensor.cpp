@@ -44,7 +44,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const Vec2& chi = truth.targets[ref.index].position;
     if (!footprint.contains(chi)) continue;
     out.in_footprint.push_back(ref.index);
-    if (isOccluded(world, p_i, chi, model)) continue;
+    if (isOccluded(world, p_i, chi, model, cameraHeight(sensor, h))) continue;
     out.visible.push_back(ref.index);
     if (!rng.bernoulli(config.p_detect)) continue;
     const Mat2 R_truth = measurementCovariance(chi, p_i, h, sensor);

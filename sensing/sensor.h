@@ -46,9 +46,17 @@ FootprintDef footprintAt(const SensorDef& sensor, double altitude);
 Mat2 measurementCovariance(const Vec2& z, const Vec2& p, double altitude, const SensorDef& sensor);
 
 /// What hides a target from this camera: the team's model for a UAV's downward camera; always
-/// line of sight for a camera at ground level, where every crown and wall blocks the view.
+/// line of sight for a camera at ground level, where every crown and wall blocks the view; under
+/// `volumes` the 3-D line of sight for every camera (a robot sees under a high crown).
 inline OcclusionModel occlusionModel(const SensorDef& sensor, const SensingConfig& config) {
+  if (config.occlusion_model == OcclusionModel::volumes) return OcclusionModel::volumes;
   return sensor.ground_level ? OcclusionModel::line_of_sight : config.occlusion_model;
+}
+
+/// The camera's height above the ground (m): a ground robot's kGroundCameraHeight, a UAV's
+/// altitude.
+inline double cameraHeight(const SensorDef& sensor, double altitude) {
+  return sensor.ground_level ? kGroundCameraHeight : altitude;
 }
 
 /// Buffers reused from scan to scan so that sensing does not allocate in steady state.

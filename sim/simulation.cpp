@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "agents/planning/altitude_choice.h"
 #include "sim/finite_check.h"
 
 namespace canopy::sim {
@@ -25,6 +26,13 @@ agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec) {
     state.turn_rate = uav.body.turn_rate;
     state.radius = uav.body.radius;
     state.footprint = sensing::footprintAt(uav.sensor, uav.body.z);  // at its start altitude
+    state.z = uav.body.z;
+    state.z_min = uav.body.z_min;
+    state.z_max = uav.body.z_max;
+    state.climb_rate = uav.body.climb_rate;
+    state.camera = uav.sensor.camera;
+    state.reference_alpha = uav.sensor.quality.alpha;
+    if (uav.sensor.camera) state = agents::planning::atAltitude(state, uav.body.z);
     state.quality = uav.sensor.quality;
     state.occlusion = sensing::occlusionModel(uav.sensor, spec.sensing);
     config.uavs.push_back(state);
@@ -104,6 +112,7 @@ void Simulation::senseAndTrack(double dt) {
     sensing::sense(world_, truth_, uav, sensor, spec_.sensing, target_labels_, sensing_rng_[i],
                    scratch_[i], record.scan);
     team_.trackLocally(uav, dt, record.position, record.yaw, record.scan, record.footprint);
+    if (record.altitude) team_.setAltitude(uav, record.z);
   });
 }
 
@@ -121,8 +130,10 @@ void Simulation::commandFromPlan() {
   // Receding horizon: plan every replan_period from t = 0, apply the first action, hold it.
   if (record_.step % steps_per_plan_ != 0) return;
   record_.plan = team_.plan(record_.step / steps_per_plan_);
-  for (std::size_t i = 0; i < record_.plan->plans.size(); ++i)
+  for (std::size_t i = 0; i < record_.plan->plans.size(); ++i) {
     commands_[i] = record_.plan->plans[i].command();
+    climb_commands_[i] = team_.climbCommand(static_cast<int>(i));
+  }
 }
 
 void Simulation::commandUavs() {

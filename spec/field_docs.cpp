@@ -18,7 +18,10 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"sensing", "", "team-wide sensing settings"},
       {"sensing.occlusion_model", "",
        "canopy: hidden strictly under a crown; line_of_sight: hidden when the segment from the "
-       "UAV's ground point crosses a crown"},
+       "UAV's ground point crosses a crown; volumes: hidden when the 3-D segment from the camera "
+       "(a UAV's altitude, a ground robot's 0.5 m) to the walker's head (1.7 m) crosses a crown's "
+       "volume (its outline from crown_base to crown_top, a wall's to its height), for every "
+       "camera"},
       {"sensing.p_detect", "", "probability that a visible target is detected"},
       {"sensing.clutter_rate", "1/scan", "expected false detections per scan (Poisson)"},
       {"sensing.clutter_label", "", "label given to false detections"},
@@ -100,6 +103,11 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"occluders[].radius", "m",
        "disc: radius; poisson, grid, cluster: a radius or [min, max] drawn uniformly"},
       {"occluders[].vertices", "m", "polygon: 3 to 8 convex vertices [[x, y], …]"},
+      {"occluders[].crown_base", "m",
+       "height of the crowns' lowest point (default 0: from the ground); the volumes occlusion "
+       "model sees under it"},
+      {"occluders[].crown_top", "m", "height of the crowns' top (default: above any UAV)"},
+      {"occluders[].height", "m", "a wall's height (default: above any UAV)"},
       {"occluders[].region", "m",
        "poisson, cluster: [x_min, y_min, x_max, y_max] (default the AOI)"},
       {"occluders[].lambda", "1/m²", "poisson: trees per m²"},

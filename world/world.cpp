@@ -522,6 +522,15 @@ bool World::insideOccluder(const Vec2& p) const {
   return crownContaining(b2_->crowns, def_.trees, p).has_value();
 }
 
+bool World::sightBlocked(const Vec2& a, double ha, const Vec2& b, double hb) const {
+  std::vector<BodyRef> near;
+  queryAabb({a.cwiseMin(b), a.cwiseMax(b)}, near);
+  for (const BodyRef& ref : near) {
+    if (ref.kind == BodyKind::tree && blocksSight(def_.trees[ref.index], a, ha, b, hb)) return true;
+  }
+  return false;
+}
+
 std::optional<int> World::firstOccluderOnSegment(const Vec2& a, const Vec2& b) const {
   if ((b - a).squaredNorm() < 1e-12)  // Box2D's ray cast needs a non-zero length
     return crownContaining(b2_->crowns, def_.trees, a);

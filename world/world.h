@@ -57,6 +57,9 @@ class World {
 
   /// True when p is strictly inside some tree crown.
   bool insideOccluder(const Vec2& p) const;
+  /// True when some crown's volume hides (b, hb) from (a, ha) (world/tree.h, blocksSight;
+  /// heights in m above the ground).
+  bool sightBlocked(const Vec2& a, double ha, const Vec2& b, double hb) const;
   /// The tree the segment a → b enters first (nearest a), or none.
   std::optional<int> firstOccluderOnSegment(const Vec2& a, const Vec2& b) const;
 

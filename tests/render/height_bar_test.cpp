@@ -118,6 +118,36 @@ TEST(HeightBar, HigherUavCoversFourTimesAndMeasuresWorse) {
   EXPECT_EQ(compared, 21);
 }
 
+TEST(HeightBar, AltitudeTradeoffRunsAndItsUavsChangeAltitude) {
+  // The built-in scenario, its first 12 s: the people walk apart and the planner's climbs move
+  // both UAVs off their start altitude of 20 m, within [10, 60] m, at most 2 m/s.
+  const TempDir dir;
+  spec::LoadOptions load;
+  load.overrides = {"clock.duration=12"};
+  const spec::ScenarioSpec spec = spec::loadScenario("altitude_tradeoff", load);
+  sim::RunOptions options;
+  options.out_dir = dir.path / "run";
+  sim::runScenario(spec, options);
+  const std::optional<std::string> record = readTextFile(options.out_dir / "record.jsonl");
+  ASSERT_TRUE(record);
+  std::istringstream steps(*record);
+  std::string line;
+  double previous[2] = {20.0, 20.0}, lowest[2] = {1e9, 1e9}, highest[2] = {0.0, 0.0};
+  while (std::getline(steps, line)) {
+    const Json j = Json::parse(line);
+    for (int i = 0; i < 2; ++i) {
+      const double z = j["uavs"][i]["z"].get<double>();
+      EXPECT_LE(std::abs(z - previous[i]), 2.0 * spec.dt + 1e-9);  // |ż| ≤ climb_rate
+      EXPECT_GE(z, 10.0);
+      EXPECT_LE(z, 60.0);
+      lowest[i] = std::min(lowest[i], z);
+      highest[i] = std::max(highest[i], z);
+      previous[i] = z;
+    }
+  }
+  for (int i = 0; i < 2; ++i) EXPECT_GT(highest[i] - lowest[i], 2.0) << "UAV " << i;
+}
+
 TEST(HeightBar, ScenarioWithoutAltitudeRecordsNoZ) {
   const TempDir dir;
   const fs::path scenario = dir.path / "flat.json";

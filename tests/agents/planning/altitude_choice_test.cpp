@@ -30,8 +30,8 @@ UavState freeAltitudeUav() {
 
 TEST(AltitudeChoice, MeanAltitudeByHand) {
   const UavState u = freeAltitudeUav();
-  // H = 5, Δ = 1 s, +4 m/s from 20 m: 24, 28, 32, 36, 40 → 30 m.
-  EXPECT_DOUBLE_EQ(meanAltitude(u, 4.0, 5, 1.0), 30.0);
+  // H = 5, Δ = 1 s, +4 m/s from 20 m: 24, 28, 32, 36, 40 → 32 m.
+  EXPECT_DOUBLE_EQ(meanAltitude(u, 4.0, 5, 1.0), 32.0);
   // −4 m/s: 16, 12, then clamped at 10, 10, 10 → 11.6 m.
   EXPECT_DOUBLE_EQ(meanAltitude(u, -4.0, 5, 1.0), 11.6);
   EXPECT_DOUBLE_EQ(meanAltitude(u, 0.0, 5, 1.0), 20.0);
@@ -59,8 +59,8 @@ double climbFor(const UavState& u, const std::vector<TargetGaussian>& targets) {
 
 TEST(AltitudeChoice, ClimbsToHoldTwoPeopleJustOutside) {
   // Two people 10 m ahead and behind: outside the 16 m footprint (±8 m) at 20 m, inside from
-  // 25 m (±10 m). Of the rates tried, +2 m/s (mean altitude 26 m, ±10.4 m) and +4 m/s (30 m)
-  // hold both; +2 m/s measures finer (α · 26/20 against α · 30/20).
+  // 25 m (±10 m). Of the rates tried, +2 m/s (mean altitude 26 m, ±10.4 m) and +4 m/s (32 m)
+  // hold both; +2 m/s measures finer (α · 26/20 against α · 32/20).
   const std::vector<TargetGaussian> targets{target(Vec2(10, 0), Vec2::Zero(), 4.0),
                                             target(Vec2(-10, 0), Vec2::Zero(), 4.0)};
   EXPECT_DOUBLE_EQ(climbFor(freeAltitudeUav(), targets), 2.0);
