@@ -80,10 +80,11 @@ std::optional<planning::TeamPlan> Team::plan(int epoch) {
         planning_views_[i].tracks, uav_states_, planning_views_[i].map,
         planning::CostSettings::from(config_.planner, config_.tracking.sigma_a)};
     const planning::AgentPlanReport& report = plan.reports[i];
-    climbs_[i] = planning::chooseClimb(problem, static_cast<int>(i),
-                                       report.joint.empty() ? std::span<const planning::Plan>(plan.plans)
-                                                            : std::span<const planning::Plan>(report.joint),
-                                       plan.plans[i], config_.planner.plan_period, altitude_cost_);
+    const std::span<const planning::Plan> joint =
+        report.joint.empty() ? std::span<const planning::Plan>(plan.plans)
+                             : std::span<const planning::Plan>(report.joint);
+    climbs_[i] = planning::chooseClimb(problem, static_cast<int>(i), joint, plan.plans[i],
+                                       config_.planner.plan_period, altitude_cost_);
   }
   for (std::size_t i = 0; i < agents_.size(); ++i) {
     planned_paths_[i] =

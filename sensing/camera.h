@@ -38,10 +38,11 @@ CameraDef cameraWithAngles(double fov_along, double fov_across, double pitch);
 
 /// The ground footprint of `camera` at `altitude` (m, > 0) above the ground, relative to the
 /// UAV's ground point in its heading frame. Nadir (pitch 0): the rectangle
-/// nadir_size · altitude / h_ref, i.e. 2·altitude·tan(fov/2) per axis. Pitched by θ with half-angles a (along) and b (across): the
-/// corner rays (sin θ ± tan a cos θ, ± tan b, −cos θ ± tan a sin θ) meet the ground at
-/// x = altitude · tan(θ ± a) and |y| = altitude · cos a · tan b / cos(θ ± a): a trapezoid with
-/// its short side under the UAV's near edge. Requires θ + a ≤ kMaxFarEdgeAngle.
+/// nadir_size · altitude / h_ref, i.e. 2·altitude·tan(fov/2) per axis. Pitched by θ with
+/// half-angles a (along) and b (across): the corner rays
+/// (sin θ ± tan a cos θ, ± tan b, −cos θ ± tan a sin θ) meet the ground at x = altitude · tan(θ ± a)
+/// and |y| = altitude · cos a · tan b / cos(θ ± a): a trapezoid whose short side is the one nearest
+/// the UAV. Requires θ + a ≤ kMaxFarEdgeAngle.
 FootprintDef groundFootprint(const CameraDef& camera, double altitude);
 
 /// The slant distance ℓ from a camera at `altitude` above the ground point p to the ground point
