@@ -1,5 +1,7 @@
 #include "agents/team.h"
 
+#include "agents/planning/altitude_choice.h"
+
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -16,7 +18,8 @@ Team::Team(const TeamConfig& config)
                                     stepsPerReplan(config.planner, config.dt)}),
       a_priori_(config.true_trees),
       uav_states_(config.uavs),
-      planned_paths_(config.uavs.size()) {
+      planned_paths_(config.uavs.size()),
+      climbs_(config.uavs.size(), 0.0) {
   for (int i = 0; i < static_cast<int>(config.uavs.size()); ++i) {
     const planning::UavState& uav = config.uavs[i];
     agents_.emplace_back(
@@ -68,11 +71,31 @@ std::optional<planning::TeamPlan> Team::plan(int epoch) {
     planning_views_.push_back({agents_[i].planningTracks(), map});
   }
   planning::TeamPlan plan = planner_.plan(epoch, uav_states_, planning_views_);
+  // Height: each UAV whose altitude is free picks a climb rate against its joint plan, on its
+  // own view (one after another: the cost's scratch is shared; the plans are already made).
+  for (std::size_t i = 0; i < agents_.size(); ++i) {
+    const planning::UavState& u = uav_states_[i];
+    if (!u.camera || !(u.z_min < u.z_max)) continue;
+    const planning::PlanningProblem problem{
+        planning_views_[i].tracks, uav_states_, planning_views_[i].map,
+        planning::CostSettings::from(config_.planner, config_.tracking.sigma_a)};
+    const planning::AgentPlanReport& report = plan.reports[i];
+    const std::span<const planning::Plan> joint =
+        report.joint.empty() ? std::span<const planning::Plan>(plan.plans)
+                             : std::span<const planning::Plan>(report.joint);
+    climbs_[i] = planning::chooseClimb(problem, static_cast<int>(i), joint, plan.plans[i],
+                                       config_.planner.plan_period, altitude_cost_);
+  }
   for (std::size_t i = 0; i < agents_.size(); ++i) {
     planned_paths_[i] =
         planning::plannedPath(uav_states_[i], plan.plans[i], config_.planner.plan_period);
   }
   return plan;
+}
+
+void Team::setAltitude(int agent, double z) {
+  planning::UavState& u = uav_states_[static_cast<std::size_t>(agent)];
+  if (u.z != z) u = planning::atAltitude(u, z);
 }
 
 void Team::writeBeliefs(std::vector<AgentBelief>& out) const {

@@ -52,6 +52,12 @@ class Team {
   /// config). Returns the team plan (plans[i].command() is UAV i's command), or nothing without a
   /// planner.
   std::optional<planning::TeamPlan> plan(int epoch);
+  /// Height (issue 53): agent `agent`'s UAV is at altitude z (m) now; with a camera its planning
+  /// footprint and noise follow (planning/altitude_choice.h). Call before plan().
+  void setAltitude(int agent, double z);
+  /// The climb rate (m/s) the latest plan() chose for agent `agent` (0: hold; always 0 when its
+  /// altitude is not free).
+  double climbCommand(int agent) const { return climbs_[static_cast<std::size_t>(agent)]; }
 
   /// Each agent's belief (its planned path from its latest plan), into `out` (resized to the
   /// team; its storage reused).
@@ -85,6 +91,8 @@ class Team {
   std::vector<planning::UavState> uav_states_;  // poses from trackLocally, the rest from config
   std::vector<planning::AgentView> planning_views_;
   std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan
+  std::vector<double> climbs_;                     // m/s, per agent, from its latest plan
+  planning::NominalCost altitude_cost_;            // scratch of the climb choice
   TaskPool* pool_ = nullptr;
 };
 

@@ -48,10 +48,13 @@ spec::ScenarioSpec placed(const spec::ScenarioSpec& spec, const Placement& place
     u.body.yaw = heading(u.body.yaw);
     u.sensor.footprint.size *= s;
     u.sensor.footprint.radius *= s;
+    // A camera at an altitude (issue 53): its nadir footprint at the default altitude scales too.
+    if (u.sensor.camera) u.sensor.camera->nadir_size *= s;
     if (u.path) u.path = path(*u.path);
   }
   for (spec::TargetSpec& t : out.targets) t.path = path(t.path);
   for (world::TreeDef& tree : out.trees) {
+    const double base = tree.base, top = tree.top;  // heights are not distances of the plane
     if (tree.shape == world::TreeShape::disc) {
       tree = world::TreeDef::disc(point(tree.centre), s * tree.radius);
     } else {
@@ -59,6 +62,8 @@ spec::ScenarioSpec placed(const spec::ScenarioSpec& spec, const Placement& place
       for (const Vec2& v : tree.vertices) vertices.push_back(point(v));
       tree = world::TreeDef::polygon(std::move(vertices));  // re-oriented counter-clockwise
     }
+    tree.base = base;
+    tree.top = top;
   }
   out.duration = spec.duration / placement.speed_scale;
   return out;

@@ -23,7 +23,9 @@ Aabb actionBox(const spec::ScenarioSpec& spec) {
   const int steps = spec.steps();
   double reach = 0.0;  // m, how far a footprint reaches from its UAV
   for (const spec::UavSpec& uav : spec.uavs) {
-    reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
+    // A UAV at an altitude (issue 53) reaches farthest at its highest.
+    reach = std::max(reach,
+                     sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
     grow(uav.body.start);
     if (!uav.path || spec.planner.algorithm != agents::PlannerAlgorithm::none) continue;
     for (int k = 0; k < steps; ++k) grow(uav.path->positionAt(k * spec.dt));

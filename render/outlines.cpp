@@ -34,6 +34,8 @@ std::vector<Vec2> footprintCorners(const sensing::Footprint& f) {
       out.push_back(f.sectorPoint(f.half_angle * (2.0 * k / arcs - 1.0)));
     return out;
   }
+  if (f.shape == sensing::FootprintShape::quad)  // a pitched camera's trapezoid (issue 53)
+    return {f.quadCorner(0), f.quadCorner(1), f.quadCorner(2), f.quadCorner(3)};
   const Vec2 along = f.half.x() * Vec2(f.cos_yaw, f.sin_yaw);
   const Vec2 across = f.half.y() * Vec2(-f.sin_yaw, f.cos_yaw);
   return {f.centre + along + across, f.centre - along + across, f.centre - along - across,

@@ -234,8 +234,13 @@ void addNames(const SceneModel& model, const world::WorldSnapshot& truth, const 
   };
   for (std::size_t t = 0; t < truth.targets.size(); ++t)
     place(truth.targets[t].position, nameOr(model.target_names, t, "T"), 6.0 * z.u, true);
-  for (std::size_t i = 0; i < truth.uavs.size(); ++i)
-    place(truth.uavs[i].position, nameOr(model.uav_names, i, "uav"), 9.0 * z.u, false);
+  for (std::size_t i = 0; i < truth.uavs.size(); ++i) {
+    std::string name = nameOr(model.uav_names, i, "uav");
+    // A UAV at a chosen altitude (issue 53) carries it: "UAV1 40 m".
+    if (i < model.sensors.size() && model.sensors[i].camera)
+      name += " " + std::to_string(static_cast<long>(std::lround(truth.uavs[i].z))) + " m";
+    place(truth.uavs[i].position, name, 9.0 * z.u, false);
+  }
 }
 
 }  // namespace

@@ -66,7 +66,8 @@ void writeModel(const RunFolder& run, Writer& w) {
   first = true;
   for (std::size_t i = 0; i < spec.uavs.size(); ++i) {
     const spec::UavSpec& uav = spec.uavs[i];
-    const sensing::FootprintDef& f = uav.sensor.footprint;
+    // A UAV at a chosen altitude (issue 53): its footprint at its start altitude.
+    const sensing::FootprintDef f = sensing::footprintAt(uav.sensor, uav.body.z);
     w.comma(first);
     w.raw("{\"name\":");
     w.string(uav.name);
@@ -85,6 +86,18 @@ void writeModel(const RunFolder& run, Writer& w) {
       w.position(f.size.x());
       w.raw(",");
       w.position(f.size.y());
+      w.raw("]}");
+    } else if (f.shape == sensing::FootprintShape::quad) {  // a pitched camera's trapezoid
+      w.raw("{\"shape\":\"quad\",\"radius\":");
+      w.position(sensing::circumradius(f));
+      w.raw(",\"corners\":[");
+      for (std::size_t c = 0; c < f.corners.size(); ++c) {
+        w.raw(c == 0 ? "[" : ",[");
+        w.position(f.corners[c].x());
+        w.raw(",");
+        w.position(f.corners[c].y());
+        w.raw("]");
+      }
       w.raw("]}");
     } else {
       w.raw(f.shape == sensing::FootprintShape::disc ? "{\"shape\":\"disc\",\"radius\":"

@@ -5,6 +5,13 @@
 
 namespace canopy::sensing {
 
+double quadArea(const QuadCorners& c) {
+  // Shoelace: ½ Σ c_e × c_{e+1}.
+  double twice = 0.0;
+  for (std::size_t e = 0; e < 4; ++e) twice += cross2(c[e], c[(e + 1) % 4]);
+  return 0.5 * std::abs(twice);
+}
+
 Footprint Footprint::place(const FootprintDef& def, const Vec2& centre, double yaw) {
   Footprint f;
   f.shape = def.shape;
@@ -15,6 +22,7 @@ Footprint Footprint::place(const FootprintDef& def, const Vec2& centre, double y
   f.radius = def.radius;
   f.half_angle = 0.5 * def.angle;
   f.cos_half = std::cos(f.half_angle);
+  f.corners = def.corners;
   return f;
 }
 
@@ -41,6 +49,14 @@ Aabb Footprint::bounds() const {
     }
     return box;
   }
+  if (shape == FootprintShape::quad) {
+    Aabb box{quadCorner(0), quadCorner(0)};
+    for (int c = 1; c < 4; ++c) {
+      box.lo = box.lo.cwiseMin(quadCorner(c));
+      box.hi = box.hi.cwiseMax(quadCorner(c));
+    }
+    return box;
+  }
   Vec2 extent;
   if (shape == FootprintShape::disc) {
     extent = Vec2(radius, radius);
@@ -58,6 +74,8 @@ double Footprint::area() const {
       return std::numbers::pi * radius * radius;
     case FootprintShape::sector:
       return half_angle * radius * radius;  // ½ θ r²
+    case FootprintShape::quad:
+      return quadArea(corners);
     case FootprintShape::rectangle:
       break;
   }
@@ -73,6 +91,20 @@ Vec2 Footprint::pointFromUnitSquare(double u, double v) const {
   if (shape == FootprintShape::sector) {
     const double r = std::sqrt(u);  // area-uniform fraction of the range
     return centre + r * (sectorPoint((2.0 * v - 1.0) * half_angle) - centre);
+  }
+  if (shape == FootprintShape::quad) {
+    // Two triangles (c0, c1, c2) and (c0, c2, c3), chosen by u in proportion to their areas; in
+    // the chosen one, a + √u'·((1 − v)(b − a) + v(c − a)) is area-uniform.
+    const Vec2 a = quadCorner(0), b = quadCorner(1), c = quadCorner(2), d = quadCorner(3);
+    const double first = std::abs(cross2(b - a, c - a));
+    const double second = std::abs(cross2(c - a, d - a));
+    const double split = first + second > 0.0 ? first / (first + second) : 1.0;
+    if (u < split) {
+      const double r = std::sqrt(u / split);
+      return a + r * ((1.0 - v) * (b - a) + v * (c - a));
+    }
+    const double r = std::sqrt((u - split) / (1.0 - split));
+    return a + r * ((1.0 - v) * (c - a) + v * (d - a));
   }
   const double along = (2.0 * u - 1.0) * half.x();
   const double across = (2.0 * v - 1.0) * half.y();

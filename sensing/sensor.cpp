@@ -5,8 +5,21 @@
 
 namespace canopy::sensing {
 
+FootprintDef footprintAt(const SensorDef& sensor, double altitude) {
+  return sensor.camera ? groundFootprint(*sensor.camera, altitude) : sensor.footprint;
+}
+
+Mat2 measurementCovariance(const Vec2& z, const Vec2& p, double altitude, const SensorDef& sensor) {
+  const Mat2 R = rangeBearingCovariance(z, p, sensor.quality);
+  if (!sensor.camera) return R;
+  return slantNoiseFactor(z, p, altitude) * R;  // (ℓ(h) / ℓ(h_ref)) · R(z, p)
+}
+
 Footprint footprintOf(const world::WorldSnapshot& truth, int uav, const SensorDef& sensor) {
   const world::UavState& state = truth.uavs[uav];
+  if (sensor.camera) {
+    return Footprint::place(groundFootprint(*sensor.camera, state.z), state.position, state.yaw);
+  }
   return Footprint::place(sensor.footprint, state.position, state.yaw);
 }
 
@@ -17,6 +30,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
   out.clear();
   out.uav = uav;
   const Vec2 p_i = truth.uavs[uav].position;
+  const double h = truth.uavs[uav].z;
   out.sensor_position = p_i;
   const Footprint footprint = footprintOf(truth, uav, sensor);
   const OcclusionModel model = occlusionModel(sensor, config);
@@ -30,14 +44,13 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const Vec2& chi = truth.targets[ref.index].position;
     if (!footprint.contains(chi)) continue;
     out.in_footprint.push_back(ref.index);
-    if (isOccluded(world, p_i, chi, model)) continue;
+    if (isOccluded(world, p_i, chi, model, cameraHeight(sensor, h))) continue;
     out.visible.push_back(ref.index);
     if (!rng.bernoulli(config.p_detect)) continue;
-    const Mat2 R_truth = rangeBearingCovariance(chi, p_i, sensor.quality);
+    const Mat2 R_truth = measurementCovariance(chi, p_i, h, sensor);
     const Vec2 z = chi + rng.gaussian(config.truth_noise_scale * R_truth);
     out.observations.push_back({target_labels[ref.index], z,
-                                rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0,
-                                ref.index, {}});
+                                measurementCovariance(z, p_i, h, sensor), 0.0, 0.0, ref.index, {}});
   }
 
   // Clutter: Poisson count, uniform over the footprint.
@@ -46,7 +59,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     const double u = rng.uniform();
     const Vec2 z = footprint.pointFromUnitSquare(u, rng.uniform());
     out.observations.push_back(
-        {config.clutter_label, z, rangeBearingCovariance(z, p_i, sensor.quality), 0.0, 0.0, -1, {}});
+        {config.clutter_label, z, measurementCovariance(z, p_i, h, sensor), 0.0, 0.0, -1, {}});
   }
 
   // Trees (SOO): observed when the crown's centre is in φ_i; from above exempt from occlusion, at
@@ -58,13 +71,13 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
     if (!footprint.contains(tree.centre)) continue;
     if (sensor.ground_level && world.firstOccluderOnSegment(p_i, tree.centre) != ref.index)
       continue;
-    const Mat2 R_truth = rangeBearingCovariance(tree.centre, p_i, sensor.quality);
+    const Mat2 R_truth = measurementCovariance(tree.centre, p_i, h, sensor);
     const Vec2 z = tree.centre + rng.gaussian(config.truth_noise_scale * R_truth);
     const double radius =
         std::max(0.0, tree.radius + config.tree_radius_sigma * std::sqrt(config.truth_noise_scale) *
                                         rng.normal());
-    out.observations.push_back({kTreeLabel, z, rangeBearingCovariance(z, p_i, sensor.quality),
-                                radius, radius_variance, ref.index, {}});
+    out.observations.push_back({kTreeLabel, z, measurementCovariance(z, p_i, h, sensor), radius,
+                                radius_variance, ref.index, {}});
     // A polygonal crown (or wall) is seen whole: each vertex's offset from the centroid with the
     // radius's noise σ_r per axis, in the crown's vertex order.
     if (tree.shape == world::TreeShape::polygon) {

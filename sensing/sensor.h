@@ -3,7 +3,10 @@
 #include <span>
 #include <vector>
 
+#include <optional>
+
 #include "core/random.h"
+#include "sensing/camera.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"
 #include "sensing/observation.h"
@@ -28,12 +31,32 @@ struct SensorDef {
   FootprintDef footprint;
   SensorQuality quality;
   bool ground_level = false;  // a ground robot's forward camera: see occlusionModel()
+  // A UAV that flies at an altitude (issue 53): its pinhole camera, whose footprint follows from
+  // the altitude and replaces `footprint`, and whose noise grows with the slant distance
+  // (sensing/camera.h). Empty: the paper's fixed footprint and eq. 2, whatever the altitude.
+  std::optional<CameraDef> camera = std::nullopt;
 };
 
+/// The footprint definition of `sensor` at `altitude` (m): the camera's ground footprint, or the
+/// fixed footprint of a sensor without a camera.
+FootprintDef footprintAt(const SensorDef& sensor, double altitude);
+
+/// R of a measurement at z by `sensor` from the ground point p at `altitude`: eq. 2, times the
+/// slant factor of sensing/camera.h for a sensor with a camera.
+Mat2 measurementCovariance(const Vec2& z, const Vec2& p, double altitude, const SensorDef& sensor);
+
 /// What hides a target from this camera: the team's model for a UAV's downward camera; always
-/// line of sight for a camera at ground level, where every crown and wall blocks the view.
+/// line of sight for a camera at ground level, where every crown and wall blocks the view; under
+/// `volumes` the 3-D line of sight for every camera (a robot sees under a high crown).
 inline OcclusionModel occlusionModel(const SensorDef& sensor, const SensingConfig& config) {
+  if (config.occlusion_model == OcclusionModel::volumes) return OcclusionModel::volumes;
   return sensor.ground_level ? OcclusionModel::line_of_sight : config.occlusion_model;
+}
+
+/// The camera's height above the ground (m): a ground robot's kGroundCameraHeight, a UAV's
+/// altitude.
+inline double cameraHeight(const SensorDef& sensor, double altitude) {
+  return sensor.ground_level ? kGroundCameraHeight : altitude;
 }
 
 /// Buffers reused from scan to scan so that sensing does not allocate in steady state.

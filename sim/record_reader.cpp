@@ -120,6 +120,10 @@ std::vector<world::WorldSnapshot> readRecordTruth(const fs::path& path,
       world::UavState& uav = s.uavs.emplace_back();
       uav.position = r.point(r.member(uavs[i], "p", at + ".p"), at + ".p");
       uav.yaw = r.number(r.member(uavs[i], "yaw", at + ".yaw"), at + ".yaw");
+      // A UAV with an altitude (issue 53) records it; the others fly at their fixed one.
+      uav.z = spec.uavs[i].sensor.camera
+                  ? r.number(r.member(uavs[i], "z", at + ".z"), at + ".z")
+                  : spec.uavs[i].body.z;
       if (uavs[i].is_object() && uavs[i].contains("contacts")) {  // only at steps with one
         const Json& list = uavs[i]["contacts"];
         if (!list.is_array()) r.fail(at + ".contacts", "a list of \"kind:index\" strings");

@@ -257,6 +257,10 @@ void RecordLineWriter::write(const StepRecord& record, std::string& out) {
     vec(j, uav.velocity);
     j.key("yaw");
     j.number(uav.yaw);
+    if (uav.altitude) {  // a UAV at a chosen altitude (issue 53)
+      j.key("z");
+      j.number(uav.z);
+    }
     j.endObject();
   }
   j.endArray();

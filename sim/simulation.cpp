@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "agents/planning/altitude_choice.h"
 #include "sim/finite_check.h"
 
 namespace canopy::sim {
@@ -24,7 +25,14 @@ agents::TeamConfig teamConfig(const spec::ScenarioSpec& spec) {
     state.kind = uav.body.kind;
     state.turn_rate = uav.body.turn_rate;
     state.radius = uav.body.radius;
-    state.footprint = uav.sensor.footprint;
+    state.footprint = sensing::footprintAt(uav.sensor, uav.body.z);  // at its start altitude
+    state.z = uav.body.z;
+    state.z_min = uav.body.z_min;
+    state.z_max = uav.body.z_max;
+    state.climb_rate = uav.body.climb_rate;
+    state.camera = uav.sensor.camera;
+    state.reference_alpha = uav.sensor.quality.alpha;
+    if (uav.sensor.camera) state = agents::planning::atAltitude(state, uav.body.z);
     state.quality = uav.sensor.quality;
     state.occlusion = sensing::occlusionModel(uav.sensor, spec.sensing);
     config.uavs.push_back(state);
@@ -54,6 +62,7 @@ Simulation::Simulation(spec::ScenarioSpec spec, int threads)
   for (const spec::UavSpec& uav : spec_.uavs) uav_names_.push_back(uav.name);
   scratch_.resize(n);
   commands_.assign(n, Vec2::Zero());
+  climb_commands_.assign(n, 0.0);
   record_.uavs.resize(n);
   record_.targets.resize(spec_.targets.size());
   steps_per_plan_ = agents::stepsPerReplan(spec_.planner, spec_.dt);
@@ -78,6 +87,9 @@ void Simulation::readTruth() {
     uav.velocity = truth_.uavs[i].velocity;
     uav.contacts = truth_.uavs[i].contacts;
     uav.contacts_begun = truth_.uavs[i].contacts_begun;
+    uav.z = truth_.uavs[i].z;
+    uav.climb = truth_.uavs[i].climb;
+    uav.altitude = spec_.uavs[i].sensor.camera.has_value();
   }
   // Whether a target is under a crown is a const query of the forest: the targets side by side,
   // each writing its own record (a point query among 10⁵ crowns takes a few µs).
@@ -100,6 +112,7 @@ void Simulation::senseAndTrack(double dt) {
     sensing::sense(world_, truth_, uav, sensor, spec_.sensing, target_labels_, sensing_rng_[i],
                    scratch_[i], record.scan);
     team_.trackLocally(uav, dt, record.position, record.yaw, record.scan, record.footprint);
+    if (record.altitude) team_.setAltitude(uav, record.z);
   });
 }
 
@@ -117,8 +130,10 @@ void Simulation::commandFromPlan() {
   // Receding horizon: plan every replan_period from t = 0, apply the first action, hold it.
   if (record_.step % steps_per_plan_ != 0) return;
   record_.plan = team_.plan(record_.step / steps_per_plan_);
-  for (std::size_t i = 0; i < record_.plan->plans.size(); ++i)
+  for (std::size_t i = 0; i < record_.plan->plans.size(); ++i) {
     commands_[i] = record_.plan->plans[i].command();
+    climb_commands_[i] = team_.climbCommand(static_cast<int>(i));
+  }
 }
 
 void Simulation::commandUavs() {
@@ -126,6 +141,8 @@ void Simulation::commandUavs() {
   for (std::size_t i = 0; i < commands_.size(); ++i) {
     world_.commandUav(static_cast<int>(i), commands_[i]);
     record_.uavs[i].command = world_.commandedVelocity(static_cast<int>(i));
+    world_.commandClimb(static_cast<int>(i), climb_commands_[i]);
+    record_.uavs[i].climb_command = world_.commandedClimb(static_cast<int>(i));
   }
 }
 
@@ -149,6 +166,16 @@ void Simulation::commandNext(int uav, const Vec2& velocity) {
   if (!velocity.allFinite())
     throw std::invalid_argument("Simulation::commandNext: velocity not finite");
   world_.commandUav(uav, velocity);
+}
+
+void Simulation::commandClimbNext(int uav, double climb) {
+  if (next_step_ == 0 || done())
+    throw std::logic_error("Simulation::commandClimbNext: only between ticks, after the first");
+  if (uav < 0 || uav >= static_cast<int>(spec_.uavs.size()))
+    throw std::out_of_range("Simulation::commandClimbNext: no UAV " + std::to_string(uav));
+  if (!std::isfinite(climb))
+    throw std::invalid_argument("Simulation::commandClimbNext: climb not finite");
+  world_.commandClimb(uav, climb);
 }
 
 const StepRecord& Simulation::tick() {

@@ -51,6 +51,10 @@ class Simulation {
   /// throws std::logic_error otherwise, std::out_of_range for an unknown UAV and
   /// std::invalid_argument for a non-finite velocity.
   void commandNext(int uav, const Vec2& velocity);
+  /// commandNext's altitude part (issue 53): UAV `uav` climbs at `climb` (m/s, down negative)
+  /// during the next step, clamped to its climb rate and kept within [z_min, z_max] (a UAV
+  /// without altitude limits stays where it is). Same rules and errors as commandNext.
+  void commandClimbNext(int uav, double climb);
   /// True once steps 0..K have all run.
   bool done() const { return next_step_ > spec_.steps(); }
   /// The step the next tick() runs.
@@ -88,6 +92,7 @@ class Simulation {
   world::WorldSnapshot truth_;  // this step's, as sensing reads it
   std::vector<std::string> uav_names_;  // for the messages of checkFinite
   std::vector<Vec2> commands_;  // m/s, per UAV: its planner's or path's command, before clamping
+  std::vector<double> climb_commands_;  // m/s, per UAV: its planner's climb, before clamping
   StepRecord record_;           // this step's, refilled in place by every tick
   int steps_per_plan_ = 1;
   int next_step_ = 0;

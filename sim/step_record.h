@@ -35,6 +35,13 @@ struct UavRecord {
   int contacts_begun = 0;
   sensing::Footprint footprint;  // φ_i at this pose
   sensing::Scan scan;            // scan.uav is this UAV's index
+  // Height (issue 53): its altitude (m), the climb flown over the step that led here and the
+  // climb command for the next step (m/s, clamped to the climb rate). `altitude`: the UAV flies
+  // at a chosen altitude (its scenario gives one), so the record writes "z".
+  double z = 0.0;
+  double climb = 0.0;
+  double climb_command = 0.0;
+  bool altitude = false;
 };
 
 /// One target's truth at the step.

@@ -51,8 +51,11 @@ namespace {
 
 double footprintReach(const ScenarioSpec& spec) {
   double reach = 0.0;  // the largest footprint's circumradius
-  for (const UavSpec& uav : spec.uavs)
-    reach = std::max(reach, sensing::circumradius(uav.sensor.footprint));
+  for (const UavSpec& uav : spec.uavs) {
+    // A UAV at an altitude (issue 53) reaches farthest at its highest.
+    reach = std::max(reach,
+                     sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
+  }
   return reach;
 }
 
@@ -256,7 +259,8 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
       double reach = 0.0;
       for (const UavSpec& uav : spec.uavs)
         reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
-                                    sensing::circumradius(uav.sensor.footprint));
+                                    sensing::circumradius(
+                                        sensing::footprintAt(uav.sensor, uav.body.z_max)));
       const double disc = std::numbers::pi * 4.0 * reach * reach / area;
       scope_targets = std::min(
           scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));

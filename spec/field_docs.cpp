@@ -18,7 +18,10 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"sensing", "", "team-wide sensing settings"},
       {"sensing.occlusion_model", "",
        "canopy: hidden strictly under a crown; line_of_sight: hidden when the segment from the "
-       "UAV's ground point crosses a crown"},
+       "UAV's ground point crosses a crown; volumes: hidden when the 3-D segment from the camera "
+       "(a UAV's altitude, a ground robot's 0.5 m) to the walker's head (1.7 m) crosses a crown's "
+       "volume (its outline from crown_base to crown_top, a wall's to its height), for every "
+       "camera"},
       {"sensing.p_detect", "", "probability that a visible target is detected"},
       {"sensing.clutter_rate", "1/scan", "expected false detections per scan (Poisson)"},
       {"sensing.clutter_label", "", "label given to false detections"},
@@ -59,6 +62,21 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"uavs[].fov.angle", "rad", "ground robots: the field of view's full angle, at most 2π"},
       {"uavs[].quality", "", "α_i, scales the whole measurement covariance R"},
       {"uavs[].r0", "m", "floor of the range d in R(z, p_i)"},
+      {"uavs[].z", "m",
+       "altitude (default 20 m, the altitude at which fov.size is the footprint); any of z, "
+       "z_min, z_max, climb_rate or camera makes the UAV fly at a chosen altitude: its footprint "
+       "follows from altitude and camera, its noise grows with the slant distance, the record "
+       "writes its z"},
+      {"uavs[].z_min", "m", "lowest altitude (default z: fixed)"},
+      {"uavs[].z_max", "m", "highest altitude (default z: fixed); z_min < z_max lets the planner "
+                            "choose the climb"},
+      {"uavs[].climb_rate", "m/s", "largest climb or descent rate |ż|"},
+      {"uavs[].camera", "", "a pinhole camera: fields of view and pitch (default: the angles that "
+                            "make fov.size the nadir footprint at 20 m)"},
+      {"uavs[].camera.hfov", "rad", "horizontal field of view, across the heading, below π"},
+      {"uavs[].camera.vfov", "rad", "vertical field of view, along the heading, below π"},
+      {"uavs[].camera.pitch", "rad",
+       "the optical axis tilted forward from nadir (0); pitch + vfov/2 ≤ 80°: a trapezoid ahead"},
       {"targets", "", "the people to track"},
       {"targets[].name", "", "the target's name (default TN)"},
       {"targets[].label", "", "the target's class label (never \"tree\")"},
@@ -100,6 +118,11 @@ const std::vector<FieldDoc>& fieldDocs() {
        "polygon: its vertices [[x, y], …] in order, either way round: 3 to 8 convex ones (a crown "
        "or wall), or up to 1024 of any simple polygon, concave allowed, no self-crossing (a wall "
        "cut into convex pieces, docs/gis-import.md)"},
+      {"occluders[].crown_base", "m",
+       "height of the crowns' lowest point (default 0: from the ground); the volumes occlusion "
+       "model sees under it"},
+      {"occluders[].crown_top", "m", "height of the crowns' top (default: above any UAV)"},
+      {"occluders[].height", "m", "a wall's height (default: above any UAV)"},
       {"occluders[].region", "m",
        "poisson, cluster: [x_min, y_min, x_max, y_max] (default the AOI)"},
       {"occluders[].lambda", "1/m²", "poisson: trees per m²"},

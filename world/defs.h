@@ -46,6 +46,12 @@ struct UavDef {
   // r_i + r_j from every other UAV with a radius (UAVs fly above walls, trees and robots).
   // 0: no body, it touches nothing (the loader's default for UAVs; 0.5 m for ground robots).
   double radius = 0.0;
+  // Height (issue 53), a dimension of sensing, not of the Box2D plane: the altitude z (m) moves
+  // by the climb command, |ż| ≤ climb_rate (m/s), within [z_min, z_max] (m). By default fixed.
+  double z = 20.0;
+  double z_min = 20.0;
+  double z_max = 20.0;
+  double climb_rate = 0.0;
 };
 
 /// A target (OOI): a kinematic body driven by velocity along a scripted path.

@@ -28,6 +28,8 @@ struct UavState {
   // another agent by its index), sorted; empty for a body clear of everything.
   std::vector<BodyRef> contacts{};
   int contacts_begun = 0;  // of those, the ones it did not touch during the step before
+  double z = 0.0;          // m, altitude (world::UavDef::z and its climbs)
+  double climb = 0.0;      // m/s, the climb rate applied over the last step
 };
 
 struct TargetState {

@@ -178,6 +178,21 @@ double segmentEntry(const TreeDef& tree, const Vec2& a, const Vec2& b) {
   return s_in;
 }
 
+bool blocksSight(const TreeDef& tree, const Vec2& a, double ha, const Vec2& b, double hb) {
+  double s_in = 0.0, s_out = 1.0;
+  if ((b - a).squaredNorm() == 0.0) {
+    if (!strictlyInside(tree, a)) return false;
+  } else {
+    s_in = segmentEntry(tree, a, b);
+    if (s_in < 0.0) return false;
+    const double back = segmentEntry(tree, b, a);  // entry of b → a: 1 − s_out
+    s_out = back < 0.0 ? 1.0 : 1.0 - back;
+  }
+  const double h_in = ha + (hb - ha) * s_in;  // h(s) = ha + (hb − ha) s
+  const double h_out = ha + (hb - ha) * s_out;
+  return std::max(h_in, h_out) > tree.base && std::min(h_in, h_out) < tree.top;
+}
+
 Aabb bounds(const TreeDef& tree) {
   if (tree.shape == TreeShape::disc) {
     const Vec2 r(tree.radius, tree.radius);

@@ -1,6 +1,7 @@
 #pragma once
 // Tree occluders (SOO): a crown that hides what is under it. Exact geometry in double; Box2D
 // only supplies candidates.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct TreeDef {
   double radius = 1.0;         // m; for a polygon, the radius of the disc of equal area
   std::vector<Vec2> vertices;  // polygon only, counter-clockwise, convex, 3..8 vertices (m)
   double trunk_radius = 0.1;   // m; disc() sets defaultTrunkRadius(radius), polygon() 0 (a wall)
+  // Height (issue 53): the crown (a wall) fills its outline from `base` to `top` above the ground
+  // (m), a vertical prism; by default from the ground to above any UAV.
+  double base = 0.0;
+  double top = std::numeric_limits<double>::infinity();
 
   static TreeDef disc(const Vec2& centre, double radius);
   /// vertices: convex, either orientation; stored counter-clockwise with centroid and radius set.
@@ -49,6 +54,14 @@ bool strictlyInside(const TreeDef& tree, const Vec2& p);
 /// or a negative number when the segment does not cross the interior (touching the rim does not
 /// count). s = 0 when a is inside.
 double segmentEntry(const TreeDef& tree, const Vec2& a, const Vec2& b);
+
+/// True when the crown's volume (its outline from base to top) hides the point (b, hb) from the
+/// point (a, ha), heights in m above the ground: the segment between them passes through the
+/// prism's interior. Its ground projection crosses the outline's interior on fractions
+/// [s_in, s_out] of a → b (a vertical segment: all of it when a lies strictly inside), over which
+/// the height runs linearly from h(s_in) to h(s_out); hidden when that height range meets the
+/// open interval (base, top).
+bool blocksSight(const TreeDef& tree, const Vec2& a, double ha, const Vec2& b, double hb);
 
 /// The smallest axis-aligned box holding the crown.
 Aabb bounds(const TreeDef& tree);

@@ -305,6 +305,9 @@ World::World(WorldDef def) : def_(std::move(def)), b2_(new Box2d) {
   contacts_.assign(def_.uavs.size(), {});
   contacts_begun_.assign(def_.uavs.size(), 0);
   uav_velocity_.assign(def_.uavs.size(), Vec2::Zero());
+  climb_commands_.assign(def_.uavs.size(), 0.0);
+  climb_.assign(def_.uavs.size(), 0.0);
+  for (const UavDef& uav : def_.uavs) altitude_.push_back(uav.z);
   target_velocity_.assign(def_.targets.size(), Vec2::Zero());
 }
 
@@ -316,6 +319,11 @@ void World::commandUav(int uav, const Vec2& velocity) {
   const double v_max = def_.uavs[uav].v_max;
   const double speed = velocity.norm();
   commands_[uav] = speed > v_max ? Vec2(velocity * (v_max / speed)) : velocity;  // |v| ≤ v_max
+}
+
+void World::commandClimb(int uav, double climb) {
+  const double rate = def_.uavs[uav].climb_rate;
+  climb_commands_[uav] = std::clamp(climb, -rate, rate);  // |ż| ≤ climb_rate
 }
 
 void World::keepSolidsNear(double dt) {
@@ -469,6 +477,14 @@ void World::step(double dt) {
     now.clear();
   }
 
+  // Altitude: z ← clamp(z + ż dt, z_min, z_max), the climb flown what it moved.
+  for (std::size_t i = 0; i < n; ++i) {
+    const UavDef& agent = def_.uavs[i];
+    const double z = std::clamp(altitude_[i] + climb_commands_[i] * dt, agent.z_min, agent.z_max);
+    climb_[i] = (z - altitude_[i]) / dt;
+    altitude_[i] = z;
+  }
+
   time_ += dt;
   ++step_;
 }
@@ -481,7 +497,7 @@ WorldSnapshot World::snapshot() const {
   for (std::size_t i = 0; i < b2_->uavs.size(); ++i) {
     const b2Body* body = b2_->uavs[i];
     snap.uavs.push_back({fromB2(body->GetPosition()), uav_velocity_[i], wrapAngle(body->GetAngle()),
-                         contacts_[i], contacts_begun_[i]});
+                         contacts_[i], contacts_begun_[i], altitude_[i], climb_[i]});
   }
   snap.targets.reserve(b2_->targets.size());
   for (std::size_t t = 0; t < b2_->targets.size(); ++t) {
@@ -504,6 +520,15 @@ void World::queryAabb(const Aabb& box, std::vector<BodyRef>& out) const {
 
 bool World::insideOccluder(const Vec2& p) const {
   return crownContaining(b2_->crowns, def_.trees, p).has_value();
+}
+
+bool World::sightBlocked(const Vec2& a, double ha, const Vec2& b, double hb) const {
+  std::vector<BodyRef> near;
+  queryAabb({a.cwiseMin(b), a.cwiseMax(b)}, near);
+  for (const BodyRef& ref : near) {
+    if (ref.kind == BodyKind::tree && blocksSight(def_.trees[ref.index], a, ha, b, hb)) return true;
+  }
+  return false;
 }
 
 std::optional<int> World::firstOccluderOnSegment(const Vec2& a, const Vec2& b) const {

@@ -27,6 +27,10 @@ class World {
   /// robot follows it as a unicycle (world/unicycle.h): turning toward it, then driving along it.
   void commandUav(int uav, const Vec2& velocity);
   const Vec2& commandedVelocity(int uav) const { return commands_[uav]; }
+  /// Sets UAV uav's climb command (m/s, up positive) for the next steps, clamped to
+  /// |ż| ≤ climb_rate; a step then moves its altitude by ż·dt, kept within [z_min, z_max].
+  void commandClimb(int uav, double climb);
+  double commandedClimb(int uav) const { return climb_commands_[uav]; }
 
   /// Advances time by dt (s): targets move to their scripted position at t + dt, UAVs by their
   /// commanded velocity, ground robots by unicycleMove over dt, as far as the contact solver lets
@@ -53,6 +57,9 @@ class World {
 
   /// True when p is strictly inside some tree crown.
   bool insideOccluder(const Vec2& p) const;
+  /// True when some crown's volume hides (b, hb) from (a, ha) (world/tree.h, blocksSight;
+  /// heights in m above the ground).
+  bool sightBlocked(const Vec2& a, double ha, const Vec2& b, double hb) const;
   /// The tree the segment a → b enters first (nearest a), or none.
   std::optional<int> firstOccluderOnSegment(const Vec2& a, const Vec2& b) const;
 
@@ -65,6 +72,9 @@ class World {
   std::unique_ptr<Box2d> b2_;
   std::vector<Vec2> commands_;                  // clamped UAV velocity commands (m/s)
   std::vector<Vec2> uav_velocity_;              // last applied (m/s)
+  std::vector<double> climb_commands_;          // clamped climb commands (m/s)
+  std::vector<double> altitude_;                // m, each UAV's z
+  std::vector<double> climb_;                   // m/s, each UAV's last applied climb
   std::vector<Vec2> target_velocity_;           // last applied (m/s)
   std::vector<std::vector<BodyRef>> contacts_;  // per agent: touched during the last step
   std::vector<int> contacts_begun_;             // per agent: of those, new at the last step

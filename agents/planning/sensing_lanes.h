@@ -25,6 +25,18 @@ struct alignas(32) PoseLanes {
                                                 const PoseLanes& pose, const Vec2& z) {
   using sensing::kFootprintSlack;
   const V4 dx = z.x() - pose.x, dy = z.y() - pose.y;
+  if (at_origin.shape == sensing::FootprintShape::quad) {  // a pitched camera (issue 53)
+    const V4 qx = pose.c * dx + pose.s * dy;
+    const V4 qy = -pose.s * dx + pose.c * dy;
+    M4 inside = M4{} - 1;
+    for (std::size_t e = 0; e < 4; ++e) {
+      const Vec2& a = at_origin.corners[e];
+      const Vec2 edge = at_origin.corners[(e + 1) % 4] - a;
+      const V4 cross = edge.x() * (qy - a.y()) - edge.y() * (qx - a.x());
+      inside &= ~(cross < -kFootprintSlack * edge.norm());
+    }
+    return inside;
+  }
   if (at_origin.shape != sensing::FootprintShape::rectangle) {
     const double r = at_origin.radius + kFootprintSlack;
     const V4 d2 = dx * dx + dy * dy;

@@ -2,7 +2,10 @@
 // What the planner knows of one agent (a UAV or a ground robot) at a planning epoch: where it is,
 // how it may move and what its camera sees. UAVs are heterogeneous (footprint, sensor quality,
 // speed limit).
+#include <optional>
+
 #include "core/types.h"
+#include "sensing/camera.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"
 #include "sensing/visibility.h"
@@ -22,6 +25,15 @@ struct UavState {
   sensing::SensorQuality quality;                   // α_i (dimensionless) and r0 (m) of R_i
   // What hides a target from its camera: the same model its sensor uses (sensing/visibility.h).
   sensing::OcclusionModel occlusion = sensing::OcclusionModel::canopy;
+  // Height (issue 53): altitude z and its limits (m), climb rate (m/s); a camera whose footprint
+  // and noise follow z (altitude_choice.h atAltitude), with α at the default altitude. Without a
+  // camera the footprint and quality above hold at every altitude.
+  double z = 20.0;
+  double z_min = 20.0;
+  double z_max = 20.0;
+  double climb_rate = 0.0;
+  std::optional<sensing::CameraDef> camera = std::nullopt;
+  double reference_alpha = 0.3;
 };
 
 }  // namespace canopy::agents::planning

@@ -39,6 +39,9 @@ class Simulation:
     @property
     def v_max(self) -> npt.NDArray[np.float64]: ...
     @property
+    def uav_altitudes(self) -> npt.NDArray[np.float64]:
+        """(n_uav,) each UAV's altitude at the last step (m)."""
+    @property
     def labels(self) -> list[str]: ...
     @property
     def uav_states(self) -> npt.NDArray[np.float64]:

@@ -78,22 +78,29 @@ void PySimulation::applyCommands(const py::handle& commands) {
                                   ", 2) (m/s), got " +
                                   py::str(py::type::of(commands)).cast<std::string>());
   }
-  if (a.ndim() != 2 || a.shape(0) != n || a.shape(1) != 2) {
+  // (n, 2) velocities, or (n, 3) with each UAV's climb rate (m/s, issue 53) as the third column.
+  if (a.ndim() != 2 || a.shape(0) != n || (a.shape(1) != 2 && a.shape(1) != 3)) {
     throw spec::ScenarioError("Simulation.step", "commands",
                               "expected shape (" + std::to_string(n) +
-                                  ", 2) (one velocity per UAV, m/s), got " + shapeText(a));
+                                  ", 2) (one velocity per UAV, m/s) or (" + std::to_string(n) +
+                                  ", 3) (with a climb rate, m/s), got " + shapeText(a));
   }
   const auto v = a.unchecked<2>();
+  const bool climbs = a.shape(1) == 3;
   for (py::ssize_t i = 0; i < n; ++i) {
-    if (!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1))) {
+    if (!std::isfinite(v(i, 0)) || !std::isfinite(v(i, 1)) ||
+        (climbs && !std::isfinite(v(i, 2)))) {
       std::ostringstream text;
-      text << "expected a finite velocity (m/s), got (" << v(i, 0) << ", " << v(i, 1) << ")";
+      text << "expected a finite velocity (m/s), got (" << v(i, 0) << ", " << v(i, 1)
+           << (climbs ? ", " + std::to_string(v(i, 2)) : std::string()) << ")";
       throw spec::ScenarioError("Simulation.step", "commands[" + std::to_string(i) + "]",
                                 text.str());
     }
   }
-  for (py::ssize_t i = 0; i < n; ++i)
+  for (py::ssize_t i = 0; i < n; ++i) {
     sim_->commandNext(static_cast<int>(i), Vec2(v(i, 0), v(i, 1)));
+    if (climbs) sim_->commandClimbNext(static_cast<int>(i), v(i, 2));
+  }
 }
 
 void PySimulation::step(const py::handle& commands) {
@@ -124,7 +131,8 @@ void bindSimulation(py::module_& m) {
 
 Simulation(scenario, seed=None) runs step 0 (the initial sensing); each step() then advances the
 world by dt with the scenario's planner or script, and step(commands) with an (n_uav, 2) array of
-velocities (m/s, clamped to each UAV's v_max) instead, for that step only. The planner still plans
+velocities (m/s, clamped to each UAV's v_max) instead, for that step only; an (n_uav, 3) array adds
+each UAV's climb rate (m/s, clamped to its climb_rate and kept within [z_min, z_max]). The planner still plans
 on its schedule (its plans are recorded as if flown). The readers show the last step.)");
   cls.def(py::init([](const py::object& scenario, const py::object& seed) {
             if (!py::hasattr(scenario, "_spec")) {
@@ -185,6 +193,17 @@ on its schedule (its plans are recorded as if flown). The readers show the last 
             return out;
           },
           "Each UAV's speed limit (m/s).")
+      .def_property_readonly(
+          "uav_altitudes",
+          [](py::handle self) {
+            const PySimulation& s = simulationOf(self);
+            py::array_t<double> out(static_cast<py::ssize_t>(s.record().uavs.size()));
+            for (std::size_t i = 0; i < s.record().uavs.size(); ++i)
+              out.mutable_at(i) = s.record().uavs[i].z;
+            return out;
+          },
+          "Each UAV's altitude at the last step (m; issue 53): it changes for a UAV whose "
+          "scenario gives altitude limits, by the planner's climbs or step()'s third column.")
       .def_property_readonly(
           "labels",
           [](py::handle self) {

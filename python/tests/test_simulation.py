@@ -206,3 +206,21 @@ def test_a_simulation_without_init_raises_instead_of_crashing(use):
 def test_methods_refuse_other_objects_as_self():
     with pytest.raises(TypeError, match="expected a canopy.Simulation"):
         canopy.Simulation.tracks(42, 0)
+
+
+def test_climb_commands_move_a_uav_with_altitude_limits():
+    # Issue 53: altitude_tradeoff's UAVs fly between 10 and 60 m at up to 2 m/s. A third column
+    # of 2 m/s for 5 steps of 0.2 s climbs 2 m; −10 m/s is clamped to −2 m/s.
+    sim = canopy.Simulation(canopy.load("altitude_tradeoff"), seed=1)
+    assert list(sim.uav_altitudes) == [20.0, 20.0]
+    up = np.zeros((2, 3))
+    up[0, 2] = 2.0
+    for _ in range(5):
+        sim.step(up)
+    assert sim.uav_altitudes[0] == pytest.approx(22.0)
+    down = np.zeros((2, 3))
+    down[1, 2] = -10.0
+    sim.step(down)
+    assert sim.uav_altitudes[1] == pytest.approx(20.0 - 0.4)
+    with pytest.raises(canopy.ScenarioError, match=r"\(2, 3\)"):
+        sim.step(np.zeros((2, 4)))

@@ -45,6 +45,11 @@
         return { x: p.x + c * q[0] - s * q[1], y: p.y + s * q[0] + c * q[1] };
       });
     }
+    if (f.shape === "quad") {  // a pitched camera's trapezoid: corners in the heading frame
+      return f.corners.map(function (q) {
+        return { x: p.x + c * q[0] - s * q[1], y: p.y + s * q[0] + c * q[1] };
+      });
+    }
     if (f.shape === "sector") {
       const half = 0.5 * f.angle, arcs = Math.max(2, Math.ceil(2 * half / (Math.PI / 180)));
       const out = [{ x: p.x, y: p.y }];

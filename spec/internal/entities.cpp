@@ -199,6 +199,57 @@ void readFov(const Field& fov_field, sensing::FootprintDef& footprint) {
   fov.finish();
 }
 
+// Height (issue 53): a UAV whose scenario gives any of z, z_min, z_max, climb_rate or camera flies
+// at a chosen altitude with a pinhole camera (sensing/camera.h); without them it keeps the fixed
+// footprint and eq. 2, and none of these fields is written to the effective configuration.
+void readAltitude(ObjectReader& reader, UavSpec& uav) {
+  const bool any = reader.has("z") || reader.has("z_min") || reader.has("z_max") ||
+                   reader.has("climb_rate") || reader.has("camera");
+  if (!any) return;
+  constexpr double kMaxAltitude = 1e4;  // m: a footprint stays within the loader's 2e7 m
+  world::UavDef& body = uav.body;
+  const auto altitude = [&](const char* key, double fallback) {
+    const double z = reader.number(key, fallback, Bound::positive);
+    if (z > kMaxAltitude) reader.required(key).fail("expected at most 1e4 m");
+    return z;
+  };
+  body.z = altitude("z", sensing::kDefaultAltitude);
+  body.z_min = altitude("z_min", body.z);
+  body.z_max = altitude("z_max", body.z);
+  if (body.z_min > body.z) reader.required("z_min").fail("expected z_min ≤ z");
+  if (body.z_max < body.z) reader.required("z_max").fail("expected z_max ≥ z");
+  body.climb_rate = reader.number("climb_rate", 2.0, Bound::non_negative);
+  if (uav.sensor.footprint.shape != sensing::FootprintShape::rectangle) {
+    reader.required("fov").fail(
+        "expected a rectangular footprint {\"size\": [w, h]} for a UAV at an altitude (its "
+        "footprint at the default altitude of 20 m)");
+  }
+  // Its angles default to those that make fov.size its nadir footprint at the default altitude.
+  sensing::CameraDef camera = sensing::cameraForFootprint(uav.sensor.footprint.size);
+  if (auto camera_field = reader.optional("camera")) {
+    ObjectReader fields = camera_field->object();
+    const auto angle = [&](const char* key, double fallback) {
+      const double a = fields.number(key, fallback, Bound::positive);
+      if (a >= kPi) fields.required(key).fail("expected a field of view below π rad (180°)");
+      return a;
+    };
+    const double hfov = angle("hfov", camera.fov_across);
+    const double vfov = angle("vfov", camera.fov_along);
+    const double pitch = fields.number("pitch", 0.0, Bound::non_negative);
+    if (pitch + 0.5 * vfov > sensing::kMaxFarEdgeAngle) {
+      fields.required("pitch").fail(
+          "expected pitch + vfov/2 ≤ 80° (1.396 rad): the footprint's far edge must meet the "
+          "ground within 5.7 altitudes");
+    }
+    fields.finish();
+    // Angles equal to the defaults (as the effective configuration writes them back) keep the
+    // camera made from fov.size, so that a run read back from its manifest has the same bits.
+    if (hfov != camera.fov_across || vfov != camera.fov_along || pitch != 0.0)
+      camera = sensing::cameraWithAngles(vfov, hfov, pitch);
+  }
+  uav.sensor.camera = camera;
+}
+
 }  // namespace
 
 void readUavs(ObjectReader& root, ScenarioSpec& spec) {
@@ -267,6 +318,7 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     }
     uav.sensor.quality.alpha = reader.number("quality", uav.sensor.quality.alpha, Bound::positive);
     uav.sensor.quality.r0 = reader.number("r0", uav.sensor.quality.r0, Bound::positive);
+    if (!ground) reader.attempt([&] { readAltitude(reader, uav); });
     reader.finish();
     spec.uavs.push_back(std::move(uav));
   }

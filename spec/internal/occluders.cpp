@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "core/progress.h"
@@ -145,6 +146,31 @@ void readTrunk(ObjectReader& reader, std::vector<world::TreeDef>& out, std::size
   }
 }
 
+// Height (issue 53): crown_base and crown_top (m) give every crown of the entry its volume; a wall
+// (a polygon without a trunk) stands from the ground to its `height`. Absent: from the ground to
+// above any UAV, and nothing is written to the effective configuration.
+void readHeights(ObjectReader& reader, std::vector<world::TreeDef>& out, std::size_t first) {
+  const bool wall = first < out.size() && world::isWall(out[first]);
+  if (wall) {
+    if (auto height = reader.optional("height")) {
+      const double top = height->number(Bound::positive);
+      for (std::size_t k = first; k < out.size(); ++k) out[k].top = top;
+    }
+    return;
+  }
+  double base = 0.0, top = std::numeric_limits<double>::infinity();
+  const auto base_field = reader.optional("crown_base");
+  if (base_field) base = base_field->number(Bound::non_negative);
+  if (auto top_field = reader.optional("crown_top")) {
+    top = top_field->number(Bound::positive);
+    if (!(top > base)) top_field->fail("expected crown_top above crown_base");
+  }
+  for (std::size_t k = first; k < out.size(); ++k) {
+    out[k].base = base;
+    out[k].top = top;
+  }
+}
+
 void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& aoi,
                    std::vector<world::TreeDef>& out) {
   const Field& field = reader.field();
@@ -207,6 +233,7 @@ void readGenerator(const std::string& type, ObjectReader& reader, const Aabb& ao
     out.insert(out.end(), trees.begin(), trees.end());
   }
   readTrunk(reader, out, first);
+  readHeights(reader, out, first);
 }
 
 // What `canopy import` recorded of a layout's source (gis/import.cpp): one line.

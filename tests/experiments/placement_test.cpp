@@ -49,3 +49,26 @@ TEST(Placement, PolygonsStayCounterClockwiseUnderAReflection) {
 
 }  // namespace
 }  // namespace canopy::experiments
+
+namespace canopy::experiments {
+namespace {
+
+TEST(Placement, HeightsStayAndACamerasFootprintScales) {
+  // Issue 53: altitude_tradeoff's crowns stand 4-12 m high and its cameras see 16 × 12 m at 20 m;
+  // distances × 1.1 keep the heights and make that footprint 17.6 × 13.2 m.
+  const spec::ScenarioSpec spec = spec::loadScenario("altitude_tradeoff");
+  Placement p = Placement::rotation(0.0);
+  p.distance_scale = 1.1;
+  const spec::ScenarioSpec s = placed(spec, p);
+  ASSERT_FALSE(s.trees.empty());
+  for (const world::TreeDef& tree : s.trees) {
+    EXPECT_EQ(tree.base, 4.0);
+    EXPECT_EQ(tree.top, 12.0);
+  }
+  ASSERT_TRUE(s.uavs[0].sensor.camera);
+  EXPECT_NEAR(s.uavs[0].sensor.camera->nadir_size.x(), 17.6, 1e-12);
+  EXPECT_NEAR(s.uavs[0].sensor.camera->nadir_size.y(), 13.2, 1e-12);
+}
+
+}  // namespace
+}  // namespace canopy::experiments

@@ -212,6 +212,34 @@ TEST(BuildScene, DrawsTreesFootprintsBeliefsTargetsAndUavs) {
   }
 }
 
+TEST(BuildScene, AUavAtAnAltitudeIsLabelledWithItAndItsPitchedFootprintIsATrapezoid) {
+  // Issue 53: "alpha" at 40 m with a camera pitched 45° (vfov = hfov = 60°): its label carries the
+  // altitude and its footprint is the four corners of sensing::groundFootprint, the near edge
+  // 40 tan 15° ahead of it and the far edge 40 tan 75°.
+  Fixture f;
+  f.model.sensors[0].camera =
+      sensing::cameraWithAngles(std::numbers::pi / 3, std::numbers::pi / 3, std::numbers::pi / 4);
+  f.truth.uavs[0].z = 40.0;
+  f.truth.uavs[0].yaw = 0.0;
+  const Scene scene = buildScene(f.model, f.truth, f.beliefs, f.trails, {800, 534});
+  bool labelled = false, plain = false;
+  for (const Text& t : all<Text>(scene.world)) {
+    labelled = labelled || t.text == "alpha 40 m";
+    plain = plain || t.text == "beta";  // no altitude: the plain name
+  }
+  EXPECT_TRUE(labelled);
+  EXPECT_TRUE(plain);
+  const double near = 40 * std::tan(std::numbers::pi / 12), far = 40 * std::tan(5 * std::numbers::pi / 12);
+  bool trapezoid = false;
+  for (const Polygon& p : all<Polygon>(scene.world)) {
+    if (p.vertices.size() != 4) continue;
+    double lo = 1e9, hi = -1e9;
+    for (const Vec2& q : p.vertices) lo = std::min(lo, q.x()), hi = std::max(hi, q.x());
+    trapezoid = trapezoid || (std::abs(lo - (-30 + near)) < 1e-9 && std::abs(hi - (-30 + far)) < 1e-9);
+  }
+  EXPECT_TRUE(trapezoid);
+}
+
 TEST(BuildScene, FitsTheAoiAboveTheLegendWithItsAspect) {
   const Fixture f;
   const ImageSize size{640, 640};

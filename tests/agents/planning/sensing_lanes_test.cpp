@@ -1,4 +1,5 @@
 #include "agents/planning/sensing_lanes.h"
+#include "sensing/camera.h"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,13 @@ sensing::Footprint footprintAtOrigin(RandomStream& rng, sensing::FootprintShape 
   def.size = Vec2(rng.uniform(5, 30), rng.uniform(5, 30));
   def.radius = rng.uniform(5, 20);
   def.angle = rng.uniform(0.3, 6.2);
+  if (shape == sensing::FootprintShape::quad) {  // a pitched camera's trapezoid (issue 53)
+    const double vfov = rng.uniform(0.3, 1.5), hfov = rng.uniform(0.3, 1.5);
+    const double pitch = rng.uniform(0.05, 1.39 - 0.5 * vfov);
+    def.corners = sensing::groundFootprint(sensing::cameraWithAngles(vfov, hfov, pitch),
+                                           rng.uniform(5, 40))
+                      .corners;
+  }
   return sensing::Footprint::place(def, Vec2::Zero(), 0.0);
 }
 
@@ -45,7 +53,7 @@ TEST(SensingLanes, FootprintTestIsTheScalarOnePerLane) {
   RandomStream rng(31, "sensing-lanes-test");
   int inside = 0, outside = 0;
   for (const auto shape : {sensing::FootprintShape::rectangle, sensing::FootprintShape::disc,
-                           sensing::FootprintShape::sector}) {
+                           sensing::FootprintShape::sector, sensing::FootprintShape::quad}) {
     for (int trial = 0; trial < 2000; ++trial) {
       const sensing::Footprint at_origin = footprintAtOrigin(rng, shape);
       const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
