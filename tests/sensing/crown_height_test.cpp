@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sensing/sensor.h"
+#include "tests/sensing/robot_and_uav.h"
 #include "world/tree.h"
 
 namespace canopy::sensing {
@@ -23,36 +24,14 @@ struct Grove {
   std::vector<LabelId> labels{1};
   SensingConfig config;
 
-  explicit Grove(world::TreeDef tree) {
+  explicit Grove(world::TreeDef tree)
+      : def(test::robotAndUav(Vec2(12, 0))), sensors(test::robotAndUavSensors()) {
     config.occlusion_model = OcclusionModel::volumes;
-    def.aoi = {Vec2(-50, -50), Vec2(50, 50)};
-    world::UavDef robot;
-    robot.kind = world::AgentKind::ground;
-    robot.yaw_mode = world::YawMode::velocity;
-    def.uavs.push_back(robot);
-    world::UavDef uav;
-    uav.start = Vec2(12, 0);
-    def.uavs.push_back(uav);
     def.targets.push_back({world::Path::constantVelocity(Vec2(12, 0), Vec2::Zero())});
     def.trees = {std::move(tree)};
-    SensorDef camera;
-    camera.footprint.shape = FootprintShape::sector;
-    camera.footprint.radius = 30.0;
-    camera.footprint.angle = std::numbers::pi / 2;
-    camera.ground_level = true;
-    SensorDef downward;
-    downward.footprint.size = Vec2(20, 20);
-    sensors = {camera, downward};
   }
 
-  Scan scan(int agent) const {
-    const world::World world(def);
-    RandomStream rng(1, "sensing", static_cast<std::uint64_t>(agent));
-    SenseScratch scratch;
-    Scan out;
-    sense(world, world.snapshot(), agent, sensors[agent], config, labels, rng, scratch, out);
-    return out;
-  }
+  Scan scan(int agent) const { return test::senseOnce(def, sensors, config, labels, agent); }
 };
 
 world::TreeDef crown(double base, double top) {

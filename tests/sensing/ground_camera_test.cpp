@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sensing/sensor.h"
+#include "tests/sensing/robot_and_uav.h"
 
 namespace canopy::sensing {
 namespace {
@@ -19,37 +20,14 @@ struct Street {
   std::vector<LabelId> labels{1, 1, 1};
   SensingConfig config;  // occlusion_model canopy: the UAV's model
 
-  Street() {
-    def.aoi = {Vec2(-50, -50), Vec2(50, 50)};
-    world::UavDef robot;
-    robot.kind = world::AgentKind::ground;
-    robot.yaw_mode = world::YawMode::velocity;
-    def.uavs.push_back(robot);
-    world::UavDef uav;
-    uav.start = Vec2(20, 0);
-    def.uavs.push_back(uav);
+  Street() : def(test::robotAndUav(Vec2(20, 0))), sensors(test::robotAndUavSensors()) {
     for (const Vec2& p : {Vec2(20, 0), Vec2(20, 8), Vec2(20, 12)})
       def.targets.push_back({world::Path::constantVelocity(p, Vec2::Zero())});
     def.trees = {world::TreeDef::polygon({{10, -5}, {11, -5}, {11, 5}, {10, 5}}),
                  world::TreeDef::disc({25, 0}, 1.0)};
-    SensorDef camera;
-    camera.footprint.shape = FootprintShape::sector;
-    camera.footprint.radius = 30.0;
-    camera.footprint.angle = std::numbers::pi / 2;
-    camera.ground_level = true;
-    SensorDef downward;
-    downward.footprint.size = Vec2(20, 20);
-    sensors = {camera, downward};
   }
 
-  Scan scan(int agent) const {
-    const world::World world(def);
-    RandomStream rng(1, "sensing", static_cast<std::uint64_t>(agent));
-    SenseScratch scratch;
-    Scan out;
-    sense(world, world.snapshot(), agent, sensors[agent], config, labels, rng, scratch, out);
-    return out;
-  }
+  Scan scan(int agent) const { return test::senseOnce(def, sensors, config, labels, agent); }
 };
 
 std::vector<int> trees(const Scan& scan) {
