@@ -9,6 +9,17 @@ let canopyBinary = null;
 
 function setCanopy(binary) { canopyBinary = binary; }
 
+// The chromium to drive ($CANOPY_CHROMIUM or Debian's); without it the test is skipped (exit 77,
+// ctest's skip code).
+function chromiumOrSkip() {
+  const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
+  if (!require("fs").existsSync(chromium)) {
+    console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
+    process.exit(77);
+  }
+  return chromium;
+}
+
 async function check(name, body) {
   try {
     await body();
@@ -54,4 +65,4 @@ function crashed(e) {
   process.exit(1);
 }
 
-module.exports = { setCanopy, check, assert, canopyRun, mapPixels, finish, crashed };
+module.exports = { setCanopy, chromiumOrSkip, check, assert, canopyRun, mapPixels, finish, crashed };

@@ -9,16 +9,12 @@ const fs = require("fs");
 const path = require("path");
 const { Browser, Page } = require("./cdp.js");
 const expect = require("./record.js");
-const { setCanopy, check, assert, canopyRun, mapPixels, finish, crashed } = require("./harness.js");
+const { setCanopy, chromiumOrSkip, check, assert, canopyRun, mapPixels, finish, crashed } = require("./harness.js");
 
 const [canopy, source, work] = process.argv.slice(2);
 expect.setCanopy(canopy);
 setCanopy(canopy);
-const chromium = process.env.CANOPY_CHROMIUM || "/usr/bin/chromium";
-if (!fs.existsSync(chromium)) {
-  console.log("SKIP: " + chromium + " is missing (Debian package chromium; ./canopy installs it)");
-  process.exit(77);
-}
+const chromium = chromiumOrSkip();
 
 const near = (a, b, tol) => Math.abs(a - b) <= tol;
 
