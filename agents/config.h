@@ -121,6 +121,15 @@ inline constexpr EnumNames<JointSearch, 3> kJointSearchNames{{
     {JointSearch::block_coordinate, "block_coordinate"},
 }};
 
+/// Which blocks a Dec-POMDP agent's block coordinate descent optimises (docs/design-notes.md,
+/// "Dec-POMDP at swarm size"): the UAVs whose plans can interact with its own within the horizon
+/// (agents/planning/interaction.h; the others keep their previous plans), or every UAV.
+enum class JointBlocks { interacting, all };
+inline constexpr EnumNames<JointBlocks, 2> kJointBlocksNames{{
+    {JointBlocks::interacting, "interacting"},
+    {JointBlocks::all, "all"},
+}};
+
 /// The particle swarm (algorithms.md §6).
 struct PsoConfig {
   int particles_per_step = 20;  // particles = this · H
@@ -157,6 +166,7 @@ struct PlannerConfig {
   int cost_substeps = 1;   // samples of the nominal trajectory per action (1: plan instants)
   JointSearch joint_search = JointSearch::block_coordinate;  // Dec-POMDP and centralised only
   int joint_rounds = 2;                                 // block coordinate rounds over all UAVs
+  JointBlocks joint_blocks = JointBlocks::interacting;  // Dec-POMDP's blocks
   // m: a ground robot's nominal pose keeps this much more than its radius from the trunks and
   // walls of its map, and the sum of the radii plus this from another robot's intended pose
   // (docs/design-notes.md, "Plans that keep clear").

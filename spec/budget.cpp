@@ -234,9 +234,24 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   if (p.algorithm != agents::PlannerAlgorithm::none) {
     const double epochs = spec.duration / p.replan_period + 1.0;
     const double particles = static_cast<double>(p.pso.particles_per_step) * p.horizon;
+    // R = H·Δ·v_max + footprint circumradius, the largest reach of a UAV over the horizon, and
+    // the share of the AOI within 2R of a point (the teammates whose plans can interact).
+    double reach = 0.0;
+    for (const UavSpec& uav : spec.uavs)
+      reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
+                                  sensing::circumradius(
+                                      sensing::footprintAt(uav.sensor, uav.body.z_max)));
+    const double disc = std::numbers::pi * 4.0 * reach * reach / area;
+    const double nearby_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);
     const bool blocks = p.algorithm != agents::PlannerAlgorithm::sma &&
                         p.joint_search == agents::JointSearch::block_coordinate;
-    const double swarms_per_call = blocks ? p.joint_rounds * uavs : 1.0;
+    // Block coordinate descent: one swarm per block per round; a Dec-POMDP agent's blocks are
+    // the UAVs whose plans can interact with its own (planner.joint_blocks "interacting"),
+    // estimated as those within 2R (agents/planning/interaction.h).
+    const bool interacting_blocks = p.algorithm == agents::PlannerAlgorithm::dec_pomdp &&
+                                    p.joint_blocks == agents::JointBlocks::interacting;
+    const double swarms_per_call =
+        blocks ? p.joint_rounds * (interacting_blocks ? nearby_uavs : uavs) : 1.0;
     // The iterations a swarm runs: the stall rule stops it after stall_iterations without a
     // relative gain of ftol, which took 1.2–2.5 × stall_iterations on average in every measured
     // run (bench/RESULTS.md, "Swarms with the defaults, second step"); 3 × stall_iterations
@@ -256,15 +271,9 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
     // (people cluster), and the teammates within 2R likewise.
     double scope_targets = std::max(1.0, targets), scope_uavs = uavs;
     if (p.cost_scope == agents::CostScope::reach) {
-      double reach = 0.0;
-      for (const UavSpec& uav : spec.uavs)
-        reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
-                                    sensing::circumradius(
-                                        sensing::footprintAt(uav.sensor, uav.body.z_max)));
-      const double disc = std::numbers::pi * 4.0 * reach * reach / area;
       scope_targets = std::min(
           scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));
-      scope_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);
+      scope_uavs = nearby_uavs;
     }
     const double free_uavs = p.algorithm != agents::PlannerAlgorithm::sma && !blocks ? uavs : 1.0;
     const double penalty_entries =

@@ -229,6 +229,9 @@ const std::vector<FieldDoc>& fieldDocs() {
        "turn, every evaluation the joint cost), global_best (the paper's one swarm) or local_best "
        "(one ring swarm with warm starts and restarts)"},
       {"planner.joint_rounds", "", "block_coordinate: rounds over all UAVs"},
+      {"planner.joint_blocks", "",
+       "Dec-POMDP's block_coordinate: each agent optimises the blocks of the UAVs that can "
+       "interact with it within the horizon (interacting) or of every UAV (all)"},
       {"planner.order", "",
        "block_coordinate: the UAVs' order (names or indices; default their order)"},
       {"pso", "", "the particle swarm of every planner"},

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "agents/planning/interaction.h"
 #include "agents/planning/nominal_cost_motion.h"
 #include "agents/tracking/motion_model.h"
 #include "sensing/noise.h"
@@ -23,17 +24,7 @@ namespace {
 // searches them nearest first): same bits, fewer instructions (preparePenalty).
 constexpr std::size_t kFastPenaltyFrom = 8;
 
-constexpr double kReachSlack = 1e-6;  // m, rounding margin of the reachability test
-constexpr int kMaxFreeAgents = 64;    // one bit per free UAV in a reach mask
-
-// Cost scope "reach" (docs/design-notes.md): a UAV's footprint holds points within
-// reach(i) = T·v_max·τ + circumradius of its start over the horizon (speeds are clamped to
-// v_max), T = H·S samples τ = Δ/S apart.
-double reachOf(const CostSettings& s, const UavState& u) {
-  const int T = s.horizon * s.substeps;
-  const double tau = s.period / s.substeps;
-  return T * u.v_max * tau + sensing::circumradius(u.footprint);
-}
+constexpr int kMaxFreeAgents = 64;  // one bit per free UAV in a reach mask
 
 // Whether p lies within reach(f) + margin of some free UAV f.
 bool nearFree(const PlanningProblem& problem, std::span<const int> free_agents, const Vec2& p,
@@ -42,34 +33,6 @@ bool nearFree(const PlanningProblem& problem, std::span<const int> free_agents, 
     if ((p - problem.uavs[f].position).norm() <=
         reachOf(problem.settings, problem.uavs[f]) + margin + kReachSlack)
       return true;
-  }
-  return false;
-}
-
-// Whether an agent keeps clear (a body the world collides, docs/design-notes.md): every ground
-// robot (the planner keeps even one of radius 0 clear by c) and every UAV with a radius. A body
-// keeps clear of the bodies of its own class only (world.cpp's collision filter).
-bool keepsClear(const UavState& u) {
-  return u.kind == world::AgentKind::ground || u.radius > 0.0;
-}
-bool sameClass(const UavState& a, const UavState& b) {
-  return (a.kind == world::AgentKind::ground) == (b.kind == world::AgentKind::ground);
-}
-
-// Whether fixed agent i can come within r_f + r_i + c of a free agent f that keeps clear of it
-// over the horizon: each moves at most T·τ·v_max from its start (speeds are clamped), so not
-// when |p_i − p_f| > T·τ·(v_f + v_i) + r_f + r_i + c.
-bool mayTouch(const PlanningProblem& problem, std::span<const int> free_agents, int i) {
-  const CostSettings& s = problem.settings;
-  const UavState& fixed = problem.uavs[i];
-  if (!s.keep_clear || !keepsClear(fixed)) return false;
-  const double travel = s.period * s.horizon;  // T·τ = H·Δ
-  for (const int f : free_agents) {
-    const UavState& free = problem.uavs[f];
-    if (!keepsClear(free) || !sameClass(free, fixed)) continue;
-    const double room = travel * (free.v_max + fixed.v_max) + free.radius + fixed.radius +
-                        s.clearance + kReachSlack;
-    if ((fixed.position - free.position).norm() <= room) return true;
   }
   return false;
 }

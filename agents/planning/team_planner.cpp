@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <numeric>
 
+#include "agents/planning/interaction.h"
+
 namespace canopy::agents::planning {
 namespace {
 
@@ -276,7 +278,14 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
       config_.algorithm == PlannerAlgorithm::dec_pomdp ? joint_stream : rng_[planner];
   if (joint_observer_) joint_observer_(out.epoch, planner, problem, warm);
   const Clock::time_point start = Clock::now();
-  PlanSearch search = searchJointPlan(optimizers_[planner], problem, config_, order_, warm, rng);
+  // Dec-POMDP: the blocks of the UAVs whose plans can interact with this agent's own; the others
+  // keep their previous plans (planner.joint_blocks, agents/planning/interaction.h).
+  const std::vector<int> blocks =
+      config_.algorithm == PlannerAlgorithm::dec_pomdp &&
+              config_.joint_blocks == JointBlocks::interacting
+          ? interactingBlocks(problem, planner, order_)
+          : order_;
+  PlanSearch search = searchJointPlan(optimizers_[planner], problem, config_, blocks, warm, rng);
   const double seconds = secondsSince(start);
   last_joint_[planner] = search.plans;
   last_joint_epoch_[planner] = out.epoch;

@@ -181,6 +181,7 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   readPso(reader, p.pso);
   p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
+  p.joint_blocks = reader.enumeration("joint_blocks", agents::kJointBlocksNames, p.joint_blocks);
   p.order.clear();
   if (auto order = reader.optional("order")) {
     const std::size_t n = spec.uavs.size();
