@@ -62,7 +62,19 @@ class Run : public Command {
              "same record.jsonl as one thread)")
         ->default_str("1");
     o.add_flag("--json", json_, "print summary.json on stdout instead of the short table");
-    o.add_flag("--frames", frames_, "write DIR/frames/frame_NNNNNN.png");
+    o.add_flag("--frames", frames_, "write DIR/frames/frame_NNNNNN.png (or .svg, .pdf: --format)");
+    addValue(o, "--format,--frame-format", "png|svg|pdf", format_,
+             Reader<render::FrameFormat>{
+                 [](const std::string& text) -> std::optional<render::FrameFormat> {
+                   if (text == "png") return render::FrameFormat::png;
+                   if (text == "svg") return render::FrameFormat::svg;
+                   if (text == "pdf") return render::FrameFormat::pdf;
+                   return std::nullopt;
+                 },
+                 "png, svg or pdf"},
+             "what a frame is written as: a PNG, or the same drawing as an SVG or PDF document "
+             "(vector, for a paper; drawn by cairo, no GL)")
+        ->default_str("png");
     addValue(o, "--frame-every", "K", every_, integerIn(1, 1000000), "a frame every K steps")
         ->default_str("1");
     addImageSize(o, size_, "frame size")->default_str("800 px along the view's longer side");
@@ -111,6 +123,7 @@ class Run : public Command {
   std::optional<double> fps_;
   std::optional<std::string> view_;
   std::optional<render::ImageSize> size_;
+  std::optional<render::FrameFormat> format_;
   sim::RecordFormat record_ = sim::RecordFormat::automatic;
 };
 
@@ -120,6 +133,9 @@ int Run::run() {
   if (!frames && size_) usageError("--size", "only applies with --frames or --video");
   if (!video_ && fps_) usageError("--fps", "only applies with --video");
   if (!frames && view_) usageError("--view", "only applies with --frames or --video");
+  if (!frames && format_) usageError("--format", "only applies with --frames");
+  if (video_ && format_.value_or(render::FrameFormat::png) != render::FrameFormat::png)
+    usageError("--format", "a video is made of PNG frames: --format png (the default) with --video");
   // A video that cannot be made is known before anything runs.
   if (video_ && render::findExecutable("ffmpeg", getenvOr("PATH", "")).empty()) {
     std::fprintf(stderr,
@@ -148,6 +164,7 @@ int Run::run() {
     frame_options.dir = options.out_dir / "frames";
     frame_options.every = every_.value_or(1);
     frame_options.size = size_.value_or(render::ImageSize{});
+    frame_options.format = format_.value_or(render::FrameFormat::png);
     writer.emplace(render::sceneModel(spec, render::viewFor(view_.value_or("action"), spec)),
                    frame_options);
     frame_observer.emplace(*writer);
@@ -179,9 +196,10 @@ int Run::run() {
   if (!writer) return kExitOk;
 
   std::fprintf(json_ ? stderr : stdout,
-               "frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.png\n",
+               "frames: %d of %dx%d px, every %d steps → %s/frame_NNNNNN.%s\n",
                writer->framesWritten(), writer->size().width, writer->size().height,
-               every_.value_or(1), printable(writer->dir().string()).c_str());
+               every_.value_or(1), printable(writer->dir().string()).c_str(),
+               render::frameExtension(format_.value_or(render::FrameFormat::png)));
   if (!video_) return kExitOk;
   const double rate = fps_.value_or(1.0 / (spec.dt * every_.value_or(1)));  // default: real time
   const render::VideoResult made =

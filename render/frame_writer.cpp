@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/output_file.h"
+#include "core/text_file.h"
 #include "render/image.h"
 
 namespace canopy::render {
@@ -17,6 +18,18 @@ ImageSize chosenSize(const SceneModel& model, const FrameOptions& options) {
 }
 
 }  // namespace
+
+const char* frameExtension(FrameFormat format) {
+  switch (format) {
+    case FrameFormat::svg:
+      return "svg";
+    case FrameFormat::pdf:
+      return "pdf";
+    case FrameFormat::png:
+      break;
+  }
+  return "png";
+}
 
 ImageSize defaultFrameSize(const Aabb& aoi, const SceneOptions& scene) {
   return fitSize(withMargin(aoi, scene.margin), kDefaultFrameLongSide);
@@ -32,15 +45,18 @@ FrameWriter::FrameWriter(SceneModel model, FrameOptions options)
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(options_.dir, error)) {
     const std::string name = entry.path().filename().string();
-    if (name.starts_with("frame_") && entry.path().extension() == ".png") {
+    const std::string extension = entry.path().extension().string();
+    if (name.starts_with("frame_") &&
+        (extension == ".png" || extension == ".svg" || extension == ".pdf")) {
       std::filesystem::remove(entry.path(), error);
     }
   }
 }
 
-std::filesystem::path FrameWriter::framePath(const std::filesystem::path& dir, int step) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%06d.png", step);
+std::filesystem::path FrameWriter::framePath(const std::filesystem::path& dir, int step,
+                                             FrameFormat format) {
+  char name[40];
+  std::snprintf(name, sizeof name, "frame_%06d.%s", step, frameExtension(format));
   return dir / name;
 }
 
@@ -49,8 +65,15 @@ void FrameWriter::onStep(const world::WorldSnapshot& truth,
   trails_.add(truth);
   if (truth.step % options_.every != 0) return;
   const Scene scene = buildScene(model_, truth, beliefs, trails_, canvas_.size(), options_.scene);
-  canvas_.draw(scene, image_);
-  writePng(framePath(options_.dir, truth.step), image_);
+  const std::filesystem::path path = framePath(options_.dir, truth.step, options_.format);
+  if (options_.format == FrameFormat::png) {
+    canvas_.draw(scene, image_);
+    writePng(path, image_);
+  } else {
+    writeFileAtomically(path, sceneToVector(scene, options_.format == FrameFormat::svg
+                                                       ? VectorFormat::svg
+                                                       : VectorFormat::pdf));
+  }
   ++frames_written_;
 }
 

@@ -5,6 +5,7 @@
 
 #include "render/internal/font.h"
 #include "render/internal/text.h"
+#include "render/scene_vector.h"
 
 namespace canopy::render::internal {
 namespace {
@@ -162,12 +163,8 @@ void marker(Builder& b, const Marker& m, const Vec2& c) {
       break;
     }
     case MarkerShape::arrow: {
-      // A dart pointing along the heading; on the image y points down, so the heading's
-      // direction is (cos ψ, −sin ψ).
-      const Vec2 f(std::cos(m.heading), -std::sin(m.heading));
-      const Vec2 s(-f.y(), f.x());
-      const std::vector<Vec2> dart = {c + h * f, c - h * f + 0.8 * h * s, c - 0.45 * h * f,
-                                      c - h * f - 0.8 * h * s};
+      // A dart pointing along the heading.
+      const std::vector<Vec2> dart = arrowDart(c, h, m.heading);
       b.triangle(dart[0], dart[1], dart[2], m.fill);
       b.triangle(dart[0], dart[2], dart[3], m.fill);
       if (edge > 0.0) b.polyline(dart, edge, true, m.edge);

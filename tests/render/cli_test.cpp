@@ -69,11 +69,35 @@ TEST_F(CanopyCli, FramesEveryKStepsAtTheGivenSize) {
   EXPECT_FALSE(fs::exists(dir_ / "r" / "frames" / "frame_000001.png"));
 }
 
+TEST_F(CanopyCli, FramesAsSvgOrPdfWithoutGl) {
+  // Vector frames are drawn by cairo: no GL context (the preloaded stand-in counts them).
+  const std::string preload = "LD_PRELOAD=" CANOPY_NO_GL_SHIM;
+  for (const std::string format : {"svg", "pdf"}) {
+    const Outcome o = canopy("run demo --out " + run(format) + " --frames --frame-every 50 " +
+                                 "--size 320x200 --format " + format,
+                             preload);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NE(o.out.find("frame_NNNNNN." + format), std::string::npos) << o.out;
+    for (int k : {0, 50, 100, 150}) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%06d.%s", k, format.c_str());
+      std::ifstream in(dir_ / format / "frames" / name);
+      std::string head(64, '\0');
+      in.read(head.data(), 64);
+      ASSERT_TRUE(in) << name;
+      if (format == "pdf") EXPECT_EQ(head.substr(0, 5), "%PDF-") << name;
+      else EXPECT_NE(head.find("<?xml"), std::string::npos) << name;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / format / "frames" / "frame_000000.png"));
+  }
+}
+
 TEST_F(CanopyCli, BadFrameOptionsAreUsageErrors) {
   for (const char* args :
        {"--frames --size 0x5", "--frames --size 12", "--frames --size 800x",
         "--frames --size 10000x10", "--frames --frame-every 0", "--frames --frame-every x",
-        "--frames --frame-every -3", "--frames --size", "--size 100x100", "--frame-every 2"}) {
+        "--frames --frame-every -3", "--frames --size", "--size 100x100", "--frame-every 2",
+        "--frames --format jpg", "--format svg", "--video --format svg", "--video --format pdf"}) {
     const Outcome o = canopy("run demo --out " + run("bad") + " " + args);
     EXPECT_EQ(o.code, 2) << args;
     EXPECT_NE(o.err.find("command line: --"), std::string::npos) << args << ": " << o.err;
