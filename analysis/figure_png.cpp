@@ -61,10 +61,13 @@ void writeFigurePng(const Figure& figure, const std::filesystem::path& path) {
   render::writePng(path, canvas.draw(scene));
 }
 
-void writeFigure(const Figure& figure, const std::filesystem::path& stem) {
-  writeFileAtomically(stem.string() + ".svg", toSvg(figure));
-  writeFileAtomically(stem.string() + ".pdf", toPdf(figure));
-  writeFigurePng(figure, stem.string() + ".png");
+void writeFigure(const Figure& figure, const std::filesystem::path& stem,
+                 const FigureStyle& style) {
+  Figure styled = figure;
+  restyle(styled, style);
+  writeFileAtomically(stem.string() + ".svg", toSvg(styled));
+  writeFileAtomically(stem.string() + ".pdf", toPdf(styled));
+  writeFigurePng(styled, stem.string() + ".png");
 }
 
 }  // namespace canopy::analysis

@@ -210,14 +210,14 @@ std::string heatmapCsv(const Heatmap& map) {
 
 std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
                                    const std::filesystem::path& out_dir,
-                                   const HeatmapRequest& request) {
+                                   const HeatmapRequest& request, const FigureStyle& style) {
   const std::optional<HeatmapMetric> metric = heatmapMetric(analysis, request);
   if (!metric) return {};
   std::vector<Heatmap> maps = sensitivityMaps(analysis, *metric);
   for (const Heatmap& map : maps) {
     const std::filesystem::path stem = out_dir / map.stem;
     writeFileAtomically(stem.string() + ".csv", heatmapCsv(map));
-    writeFigure(heatmapFigure(map, analysis.name + ": where the behaviour emerges"), stem);
+    writeFigure(heatmapFigure(map, analysis.name + ": where the behaviour emerges"), stem, style);
   }
   return maps;
 }

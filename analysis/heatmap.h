@@ -71,10 +71,12 @@ Colour heatColour(double u);
 std::string displayValue(const std::string& json);
 std::string displayOverride(const std::string& override_text);
 
-/// Writes <stem>.{csv,svg,png} per map into out_dir; returns the maps written.
+/// Writes <stem>.{csv,svg,pdf,png} per map into out_dir, figures in `style`; returns the maps
+/// written.
 std::vector<Heatmap> writeHeatmaps(const SweepAnalysis& analysis,
                                    const std::filesystem::path& out_dir,
-                                   const HeatmapRequest& request = {});
+                                   const HeatmapRequest& request = {},
+                                   const FigureStyle& style = {});
 
 /// Markdown embedding a sweep's maps for report.md: a heading, a line on what the cells show
 /// and one image per map (figures_dir: where writeHeatmaps wrote them, relative to the report).

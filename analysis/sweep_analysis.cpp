@@ -154,13 +154,13 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
 namespace canopy::analysis {
 
 void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
-                  const HeatmapRequest& maps) {
+                  const HeatmapRequest& maps, const FigureStyle& style) {
   makeOutputDirectories(out_dir, out_dir);
   std::vector<const ConfigStatistics*> configs;
   std::vector<std::string> labels;
   for (const ConfigStatistics& s : analysis.configs) {
     writeFigure(sankeyFigure(s, analysis.name + ": ownership, " + s.id),
-                out_dir / ("sankey_" + s.id));
+                out_dir / ("sankey_" + s.id), style);
     configs.push_back(&s);
     labels.push_back(s.id);
   }
@@ -169,9 +169,9 @@ void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
     for (const auto& target : analysis.specs.front().targets) targets.push_back(target.name);
     writeFigure(
         coverageFigure(configs, labels, targets, analysis.name + ": coverage per trajectory"),
-        out_dir / "coverage");
+        out_dir / "coverage", style);
   }
-  writeHeatmaps(analysis, out_dir, maps);
+  writeHeatmaps(analysis, out_dir, maps, style);
 }
 
 }  // namespace canopy::analysis

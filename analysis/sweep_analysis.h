@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "analysis/figure_style.h"
+
 #include "analysis/sweep_statistics.h"
 #include "experiments/sweep.h"
 #include "spec/scenario_spec.h"
@@ -54,8 +56,8 @@ struct HeatmapRequest {
 /// Writes sankey_<config>.{svg,png} per configuration, coverage.{svg,png} (one line per
 /// configuration with its 95 % band, one panel per trajectory) and, for a sweep with two numeric
 /// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; `maps` picks what their cells
-/// show, by default M* or the hidden coverage) into out_dir.
+/// show, by default M* or the hidden coverage) into out_dir, each also as PDF, all in `style`.
 void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir,
-                  const HeatmapRequest& maps = {});
+                  const HeatmapRequest& maps = {}, const FigureStyle& style = {});
 
 }  // namespace canopy::analysis

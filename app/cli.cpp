@@ -92,6 +92,19 @@ CLI::Option* addOutputDir(CLI::App& command, const std::string& name, std::strin
       ->type_name("DIR");
 }
 
+CLI::Option* addStyleOption(CLI::App& command, std::string& target) {
+  return command
+      .add_option("--style", target,
+                  "the figures' colours, ink, background and text and line scales (JSON; "
+                  "docs/figure-style.json holds the defaults)")
+      ->type_name("FILE")
+      ->default_str("the defaults");
+}
+
+analysis::FigureStyle readStyleOption(const std::string& file) {
+  return file.empty() ? analysis::FigureStyle{} : analysis::readFigureStyle(file);
+}
+
 void addLoadOptions(CLI::App& command, spec::LoadOptions& load, bool allow_path) {
   addValue(command, "--budget", "K", load.budget_scale,
            finiteNumber("a factor K in (0, 1e12] on every work limit",

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "analysis/figure_style.h"
 #include "core/printable.h"
 #include "sim/record_lines.h"
 #include "spec/loader.h"
@@ -61,6 +62,11 @@ CLI::Option* addValue(CLI::App& command, const std::string& name, const std::str
 /// outputDirProblem(DIR) is not empty.
 CLI::Option* addOutputDir(CLI::App& command, const std::string& name, std::string& target,
                           const std::string& meaning);
+
+/// Declares `--style FILE` (the figures' style, analysis/figure_style.h) on `command`.
+CLI::Option* addStyleOption(CLI::App& command, std::string& target);
+/// The style in `file` ("": the default style); a bad file is a ScenarioError (exit 2).
+analysis::FigureStyle readStyleOption(const std::string& file);
 
 /// Declares `--budget K` (every work limit of spec/budget.h times K) on `command`, and with
 /// `allow_path` also `--allow-path DIR` (includes and track files may also be read from DIR).

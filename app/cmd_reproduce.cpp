@@ -30,6 +30,7 @@ class Reproduce : public Command {
     addValue(o, "--seed", "S", seed_, nonNegativeInteger(), "the sweeps' seed")
         ->default_str(std::to_string(seed_));
     o.add_flag("--mpi", mpi_, "deal trials over the ranks of mpirun");
+    addStyleOption(o, style_);
   }
   int run() override;
 
@@ -39,10 +40,12 @@ class Reproduce : public Command {
   int jobs_ = defaultJobs();
   std::uint64_t seed_ = 1;
   bool mpi_ = false;
+  std::string style_;
 };
 
 int Reproduce::run() {
   if (out_.empty()) usageError("reproduce", "expected --out DIR");
+  const analysis::FigureStyle style = readStyleOption(style_);  // a bad file: exit 2 first
   // Every folder it will write into, before the first trial runs.
   checkOutputFile(std::filesystem::path(out_) / "report.md");
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
@@ -70,7 +73,7 @@ int Reproduce::run() {
       if (!analyses) continue;  // under MPI only rank 0 analyses and reports
       analysis::SweepAnalysis analysed = analysis::analyseSweep(dir);
       analysis::writeTables(analysed, dir / "analysis");
-      analysis::writeFigures(analysed, dir / "analysis", experiment.maps);
+      analysis::writeFigures(analysed, dir / "analysis", experiment.maps, style);
       done.push_back({experiment, std::move(analysed), experiment.scenario + "/analysis"});
     }
     return done;

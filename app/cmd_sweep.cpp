@@ -190,12 +190,14 @@ class Analyze : public Command {
                           [](double s) { return s > 0.0 && s <= 1e6; }),
              "maps: coverage in the S seconds before the target is hidden")
         ->default_str("off");
+    addStyleOption(o, style_);
     addLoadOptions(o, load_);
   }
   int run() override;
 
  private:
   std::string dir_, out_;
+  std::string style_;
   analysis::HeatmapRequest maps_;
   spec::LoadOptions load_;
 };
@@ -208,10 +210,11 @@ int Analyze::run() {
     checkOutputDirectories(out_, dir_);  // not a link planted in the sweep's directory
   }
   checkOutputEntries(out_);  // a device, FIFO or socket where a table would go: refused first
+  const analysis::FigureStyle style = readStyleOption(style_);  // a bad file: exit 2 first
   const analysis::SweepAnalysis result = analysis::analyseSweep(dir_, load_);
   analysis::heatmapMetric(result, maps_);  // a bad --state fails before anything is written
   analysis::writeTables(result, out_);
-  analysis::writeFigures(result, out_, maps_);
+  analysis::writeFigures(result, out_, maps_, style);
   std::printf(
       "Ownership state at the last step L, per configuration: the share of trials in each state "
       "with its 95 %% Wilson interval.\nA state is the sets of targets each UAV owns (m-ownership: "

@@ -139,6 +139,26 @@ TEST(AnalyzeCommand, TwoNumericAxesGiveADeterministicSensitivityMap) {
   EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.svg"), slurp(map.string() + ".svg"));
   EXPECT_EQ(slurp(dir / "again" / "heatmap_horizon_vs_v_max.pdf"), slurp(map.string() + ".pdf"));
   EXPECT_EQ(run("analyze " + dir.string() + " --state nonsense"), 2);
+  // One style file for every figure (issue 51): the shipped defaults change nothing; another
+  // style recolours the first series; a bad file is refused before anything is written.
+  ASSERT_EQ(run("analyze " + dir.string() + " --out " + (dir / "styled").string() + " --style " +
+                CANOPY_SOURCE_DIR "/docs/figure-style.json"),
+            0);
+  EXPECT_EQ(slurp(dir / "styled" / "coverage.svg"), slurp(dir / "analysis" / "coverage.svg"));
+  const fs::path style = dir / "style.json";
+  std::ofstream(style) << R"({"series": ["#000000"], "font_scale": 1.5})";
+  ASSERT_EQ(run("analyze " + dir.string() + " --out " + (dir / "black").string() + " --style " +
+                style.string()),
+            0);
+  const std::string black = slurp(dir / "black" / "coverage.svg");
+  EXPECT_NE(black.find("rgb(0,0,0)"), std::string::npos);
+  EXPECT_EQ(black.find("rgb(31,119,180)"), std::string::npos);  // the first default colour
+  EXPECT_NE(slurp(dir / "analysis" / "coverage.svg").find("rgb(31,119,180)"), std::string::npos);
+  std::ofstream(style, std::ios::trunc) << R"({"ink": "red"})";
+  EXPECT_EQ(run("analyze " + dir.string() + " --out " + (dir / "bad").string() + " --style " +
+                style.string()),
+            2);
+  EXPECT_FALSE(fs::exists(dir / "bad" / "coverage.svg"));
 }
 
 }  // namespace
