@@ -7,7 +7,10 @@
 
   const started = performance.now();
 
-  // The box (m) of everything the run visits, grown by the largest footprint's reach and 10 %.
+  // The box (m) the view fits at the start: everything the run visits (agents and people), and
+  // the largest footprint's reach about it as far as it lies in the area of interest (beyond it
+  // lies nothing of the run's), grown by 3 % of its larger side so that symbols at its edge show
+  // whole.
   function runBox(run) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, reach = 0;
     function add(q) {
@@ -21,8 +24,11 @@
       const f = a.footprint;
       reach = Math.max(reach, f.shape === "rectangle" ? 0.5 * Math.hypot(f.size[0], f.size[1]) : f.radius);
     });
-    const pad = reach + 0.1 * Math.max(x1 - x0 + 2 * reach, y1 - y0 + 2 * reach, 2);
-    return [x0 - pad, y0 - pad, x1 + pad, y1 + pad];
+    const aoi = run.aoi;
+    const bx0 = Math.min(x0, Math.max(x0 - reach, aoi[0])), by0 = Math.min(y0, Math.max(y0 - reach, aoi[1]));
+    const bx1 = Math.max(x1, Math.min(x1 + reach, aoi[2])), by1 = Math.max(y1, Math.min(y1 + reach, aoi[3]));
+    const pad = 0.03 * Math.max(bx1 - bx0, by1 - by0, 2);
+    return [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad];
   }
 
   function App(run) {

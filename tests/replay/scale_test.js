@@ -1,5 +1,5 @@
 // The replay page's data and drawing at scale in Debian's headless chromium, checked against the
-// run's own files: the typed columns hold the record's poses, positions and tracks; the plans
+// run's own files: the start view fills the map with what the run covers; the typed columns hold the record's poses, positions and tracks; the plans
 // are copied from a cache while they do not change and look as when drawn directly; a crowd of people is drawn as squares without names; a second run
 // drawn over the first (`view A B --overlay`) at its step of the same time.
 // Usage: node scale_test.js CANOPY_BINARY SOURCE_DIR WORK_DIR
@@ -33,6 +33,26 @@ async function main() {
     const page = await Page.open(browser, 1280, 900);
     await page.navigate("file://" + path.resolve(runDir, "replay.html"));
     await page.evaluate("CanopyReplay.ready");
+
+    await check("the start view fits what the run covers: inside the map, filling its width or its height", async () => {
+      // What the run covers: every recorded position of an agent or a person, and about them the
+      // largest footprint's reach (a rectangle's half diagonal, a sector's range) as far as it
+      // lies in the area of interest.
+      let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+      run.record.forEach((line) => line.uavs.map((u) => u.p).concat(line.targets.map((t) => t.p)).forEach((p) => {
+        x0 = Math.min(x0, p[0]); y0 = Math.min(y0, p[1]); x1 = Math.max(x1, p[0]); y1 = Math.max(y1, p[1]);
+      }));
+      const reach = Math.max(...run.config.uavs.map((u) => u.fov.size ? Math.hypot(u.fov.size[0], u.fov.size[1]) / 2 : u.fov.range));
+      const aoi = run.config.aoi;
+      const box = [Math.min(x0, Math.max(x0 - reach, aoi[0])), Math.min(y0, Math.max(y0 - reach, aoi[1])),
+        Math.max(x1, Math.min(x1 + reach, aoi[2])), Math.max(y1, Math.min(y1 + reach, aoi[3]))];
+      const v = await page.evaluate(`(() => { const v = CanopyReplay.app.view;
+        return { a: v.toScreen(${box[0]}, ${box[3]}), b: v.toScreen(${box[2]}, ${box[1]}), w: v.width, h: v.height }; })()`);
+      const inside = v.a.x >= 0 && v.a.y >= 0 && v.b.x <= v.w && v.b.y <= v.h;
+      const fill = Math.max((v.b.x - v.a.x) / v.w, (v.b.y - v.a.y) / v.h);
+      console.log(`    what the run covers fills ${(100 * fill).toFixed(1)} % of the map's width or height`);
+      assert(inside && fill >= 0.85, "what the run covers on the screen: " + JSON.stringify(v));
+    });
 
     await check("the typed columns hold every pose, position and track of the record", async () => {
       const encoding = await page.evaluate("document.getElementById('replay-data').dataset.encoding");
