@@ -234,6 +234,7 @@
     // A link's fragment (share.js) restores its step, layers, view, beliefs, selection and plot.
     CanopyReplay.applyFragment(app, location.hash);
     CanopyReplay.LAYERS.forEach(function (l) { document.getElementById("layer-" + l.id).checked = app.state.layers[l.id]; });
+    if (app.state.second) document.getElementById("second-on").checked = app.state.second.on;
     document.getElementById("agent").value = String(app.state.agent);
     app.refreshTimeline();
     app.draw();

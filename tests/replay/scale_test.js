@@ -172,7 +172,7 @@ async function main() {
       assert(crowd.names === A && few.names > A, `names drawn: ${crowd.names} in a crowd, ${few.names} without (${A} agents)`);
     });
 
-    await check("view A B --overlay: B drawn over A at its step of the same time, one page, offline", async () => {
+    await check("view A B --overlay: B drawn over A at its step of the same time, one page, offline, in the link", async () => {
       // The probe at dt 0.1 s over the probe at dt 0.2 s: one time is a different step in each.
       canopyRun(["run", path.join(source, "tests/replay/data/replay_probe.json"), "--set", "clock.dt=0.1", "--set", "seed=8", "--out", fine]);
       const out = path.join(work, "overlay.html");
@@ -200,6 +200,19 @@ async function main() {
         if (on.data[o] !== off.data[o] || on.data[o + 1] !== off.data[o + 1] || on.data[o + 2] !== off.data[o + 2]) changed++;
       }
       assert(hidden === false, "the key o did not hide the second run");
+      // The address says so (second=0), and a page opened with it starts with B hidden.
+      let hash = "";
+      for (let waited = 0; waited < 10000 && hash.indexOf("second=0") < 0; waited += 50) {
+        hash = await tab.evaluate("location.hash");
+        await new Promise((r) => setTimeout(r, 50));
+      }
+      const again = await Page.open(browser, 1280, 900);
+      await again.navigate("file://" + path.resolve(out) + hash);
+      const restored = await again.evaluate(`CanopyReplay.ready.then(() => ({ on: CanopyReplay.app.state.second.on,
+        box: document.getElementById("second-on").checked, k: CanopyReplay.app.state.k }))`);
+      assert(hash.indexOf("second=0") >= 0 && restored.on === false && restored.box === false && restored.k === k,
+        `the fragment ${hash} restored ${JSON.stringify(restored)}`);
+      await again.send("Page.close").catch(() => {});
       assert(changed >= A - 1, `${changed} of ${A} of B's darts changed their pixels when hidden`);
       // Its people's rings: the pixel 5 px right of each recorded position is the rings' colour.
       const ring = await tab.evaluate("CanopyReplay.SECOND_RUN_RING");
