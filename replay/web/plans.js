@@ -156,16 +156,24 @@
       const p = run.uav(k, i), s = view.toScreen(p.x, p.y);
       placed.add({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
     }
-    marked.forEach(function (item) {
-      const from = run.uav(k, item.from), at = view.toScreen(from.x, from.y), colour = statusColour(run, item);
-      ctx.strokeStyle = colour;
-      ctx.lineWidth = 2;
+    // The crosses of one colour in one path, stroked once (a city's 63 teammates out of range
+    // are 63 crosses a step); then the labels.
+    const at = marked.map(function (item) { const p = run.uav(k, item.from); return view.toScreen(p.x, p.y); });
+    ctx.lineWidth = 2;
+    [C.lost, C.late].forEach(function (colour) {
       ctx.beginPath();
-      ctx.moveTo(at.x - 5, at.y - 20); ctx.lineTo(at.x + 5, at.y - 10);
-      ctx.moveTo(at.x + 5, at.y - 20); ctx.lineTo(at.x - 5, at.y - 10);
+      marked.forEach(function (item, n) {
+        if (statusColour(run, item) !== colour) return;
+        const s = at[n];
+        ctx.moveTo(s.x - 5, s.y - 20); ctx.lineTo(s.x + 5, s.y - 10);
+        ctx.moveTo(s.x + 5, s.y - 20); ctx.lineTo(s.x - 5, s.y - 10);
+      });
+      ctx.strokeStyle = colour;
       ctx.stroke();
-      ctx.fillStyle = colour;
-      placedText(ctx, placed, "intention " + item.status, at.x + 8, at.y - 12);
+    });
+    marked.forEach(function (item, n) {
+      ctx.fillStyle = statusColour(run, item);
+      placedText(ctx, placed, "intention " + item.status, at[n].x + 8, at[n].y - 12);
     });
   }
 
