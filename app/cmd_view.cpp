@@ -26,7 +26,9 @@ class View : public Command {
     o.add_flag("--overlay", overlay_, "draw RUN_B over RUN_DIR on one map instead of beside it");
     o.add_option("--out", out_, "where the page goes (- for the standard output)")
         ->type_name("FILE")
-        ->default_str("RUN_DIR/replay.html; with RUN_B RUN_DIR/side_by_side.html, overlaid RUN_DIR/overlay.html");
+        ->default_str(
+            "RUN_DIR/replay.html; with RUN_B RUN_DIR/side_by_side.html, overlaid "
+            "RUN_DIR/overlay.html");
   }
   int run() override {
     if (run_dir_.empty())
@@ -34,14 +36,16 @@ class View : public Command {
     const bool two = !run_b_.empty();
     if (overlay_ && !two) usageError("view", "--overlay needs RUN_B, the run to draw over RUN_DIR");
     if (out_.empty())
-      out_ = (std::filesystem::path(run_dir_) /
-              (overlay_ ? "overlay.html" : two ? "side_by_side.html" : "replay.html"))
+      out_ = (std::filesystem::path(run_dir_) / (overlay_ ? "overlay.html"
+                                                 : two    ? "side_by_side.html"
+                                                          : "replay.html"))
                  .string();
     if (out_ == "-") {  // the page on stdout (main checks that it was all written)
-      const std::string page =
-          !two       ? replay::replayPage(replay::readRunFolder(run_dir_))
-          : overlay_ ? replay::overlayPage(replay::readRunFolder(run_dir_), replay::readRunFolder(run_b_))
-                     : replay::sideBySidePage(replay::readRunFolder(run_dir_), replay::readRunFolder(run_b_));
+      const std::string page = !two       ? replay::replayPage(replay::readRunFolder(run_dir_))
+                               : overlay_ ? replay::overlayPage(replay::readRunFolder(run_dir_),
+                                                                replay::readRunFolder(run_b_))
+                                          : replay::sideBySidePage(replay::readRunFolder(run_dir_),
+                                                                   replay::readRunFolder(run_b_));
       std::fwrite(page.data(), 1, page.size(), stdout);
       return kExitOk;
     }

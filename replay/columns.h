@@ -46,9 +46,10 @@ class Columns {
     add(name, stride ? "i32delta" : "i32", values.size(), stride);
     for (std::size_t n = 0; n < values.size(); ++n) {
       const bool first = stride == 0 || n % stride == 0;
-      const std::int32_t v = first ? values[n]
-                                   : static_cast<std::int32_t>(static_cast<std::uint32_t>(values[n]) -
-                                                               static_cast<std::uint32_t>(values[n - 1]));
+      const std::int32_t v =
+          first ? values[n]
+                : static_cast<std::int32_t>(static_cast<std::uint32_t>(values[n]) -
+                                            static_cast<std::uint32_t>(values[n - 1]));
       word(static_cast<std::uint32_t>(v));
     }
   }

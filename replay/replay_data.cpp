@@ -324,7 +324,8 @@ void writeTracks(const RunFolder& run, Table& keys, Table& labels, Columns& c) {
       std::vector<std::int32_t> of_track(a.tracks.size(), -1);
       const std::vector<int> of_target = associate(s, a, run.spec);
       for (std::size_t t = 0; t < of_target.size(); ++t) {
-        if (of_target[t] >= 0) of_track[static_cast<std::size_t>(of_target[t])] = static_cast<std::int32_t>(t);
+        if (of_target[t] >= 0)
+          of_track[static_cast<std::size_t>(of_target[t])] = static_cast<std::int32_t>(t);
       }
       for (std::size_t j = 0; j < a.tracks.size(); ++j) {
         const RecordedTrack& t = a.tracks[j];

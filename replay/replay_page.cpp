@@ -89,10 +89,12 @@ std::string dataElement(const RunFolder& run, std::string_view id) {
 // The page of `run`, with `overlay` (or none) drawn over it on the same clock.
 std::string pageOf(const RunFolder& run, const RunFolder* overlay) {
   std::string page(web::kTemplate);
-  fill(page, "title", htmlEscaped(overlay ? run.spec.name + " + " + overlay->spec.name : run.spec.name));
+  fill(page, "title",
+       htmlEscaped(overlay ? run.spec.name + " + " + overlay->spec.name : run.spec.name));
   fill(page, "style", "<style>\n" + std::string(web::kStyle) + "</style>");
-  fill(page, "data", dataElement(run, "replay-data") +
-                         (overlay ? "\n" + dataElement(*overlay, "replay-data-b") : std::string()));
+  fill(page, "data",
+       dataElement(run, "replay-data") +
+           (overlay ? "\n" + dataElement(*overlay, "replay-data-b") : std::string()));
   std::string scripts;
   for (std::string_view script : web::scripts())
     scripts += "<script>\n" + std::string(checkedScript(script)) + "</script>\n";
@@ -102,9 +104,13 @@ std::string pageOf(const RunFolder& run, const RunFolder* overlay) {
 
 }  // namespace
 
-std::string replayPage(const RunFolder& run) { return pageOf(run, nullptr); }
+std::string replayPage(const RunFolder& run) {
+  return pageOf(run, nullptr);
+}
 
-std::string overlayPage(const RunFolder& a, const RunFolder& b) { return pageOf(a, &b); }
+std::string overlayPage(const RunFolder& a, const RunFolder& b) {
+  return pageOf(a, &b);
+}
 
 std::size_t writeOverlay(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
                          const std::filesystem::path& out) {
