@@ -9,6 +9,7 @@
 
 #include "analysis/behaviours.h"
 #include "core/enum_names.h"
+#include "replay/columns.h"
 #include "replay/packed_json.h"
 #include "render/colour.h"
 #include "sensing/visibility.h"
@@ -17,6 +18,8 @@ namespace canopy::replay {
 namespace {
 
 constexpr double kAssociationCutoff = 50.0;  // m, the OSPA cut-off c of summary.json
+constexpr double kCentimetres = 100.0;       // fixedPoint's scale: m → cm
+constexpr double kMilliradians = 1000.0;     // rad → mrad
 
 std::string hexColour(int agent) {
   const render::Rgba c = render::uavColour(agent);
@@ -25,9 +28,9 @@ std::string hexColour(int agent) {
   return buffer;
 }
 
-void writeModel(const RunFolder& run, Writer& w) {
+void writeModel(const RunFolder& run, Writer& w, Columns& columns) {
   const spec::ScenarioSpec& spec = run.spec;
-  w.raw("\"format\":1,\"scenario\":");
+  w.raw("\"format\":2,\"scenario\":");
   w.string(spec.name);
   w.raw(",\"seed\":");
   w.integer(static_cast<long long>(spec.seed));
@@ -121,17 +124,17 @@ void writeModel(const RunFolder& run, Writer& w) {
     w.string(spec.labels.at(static_cast<std::size_t>(target.label)));
     w.raw("}");
   }
-  w.raw("],\"trees\":[");
-  first = true;
+  // The crowns (discs): centre and radius in cm, a column each.
+  std::vector<std::int32_t> tx, ty, tr;
   for (const world::TreeDef& tree : spec.trees) {
     if (tree.shape != world::TreeShape::disc) continue;
-    w.comma(first);
-    w.position(tree.centre.x());
-    w.raw(",");
-    w.position(tree.centre.y());
-    w.raw(",");
-    w.position(tree.radius);
+    tx.push_back(fixedPoint(tree.centre.x(), kCentimetres));
+    ty.push_back(fixedPoint(tree.centre.y(), kCentimetres));
+    tr.push_back(fixedPoint(tree.radius, kCentimetres));
   }
+  columns.int32("tree_x", tx);
+  columns.int32("tree_y", ty);
+  columns.int32("tree_r", tr);
   w.raw("],\"polygons\":[");
   first = true;
   for (const world::TreeDef& tree : spec.trees) {
@@ -150,32 +153,36 @@ void writeModel(const RunFolder& run, Writer& w) {
   w.raw("]");
 }
 
-void writeTruth(const RunFolder& run, Writer& w) {
-  w.raw(",\"uav\":[");
-  bool first = true;
-  for (const RecordedStep& s : run.steps) {
-    for (const RecordedAgent& a : s.agents) {
-      w.comma(first);
-      w.position(a.position.x());
-      w.raw(",");
-      w.position(a.position.y());
-      w.raw(",");
-      w.fixed(a.yaw, kYawDecimals);
+// Poses and positions over time, per agent or person (its whole run, then the next one's), in
+// cm and mrad, each value after the first stored as the change since the step before.
+void writeTruth(const RunFolder& run, Writer& w, Columns& c) {
+  const std::size_t S = run.steps.size(), A = run.spec.uavs.size(), T = run.spec.targets.size();
+  std::vector<std::int32_t> x(S * A), y(S * A), yaw(S * A);
+  for (std::size_t k = 0; k < S; ++k) {
+    for (std::size_t i = 0; i < A; ++i) {
+      const RecordedAgent& a = run.steps[k].agents[i];
+      x[i * S + k] = fixedPoint(a.position.x(), kCentimetres);
+      y[i * S + k] = fixedPoint(a.position.y(), kCentimetres);
+      yaw[i * S + k] = fixedPoint(a.yaw, kMilliradians);
     }
   }
-  w.raw("],\"target\":[");
-  first = true;
-  for (const RecordedStep& s : run.steps) {
-    for (const Vec2& p : s.targets) {
-      w.comma(first);
-      w.position(p.x());
-      w.raw(",");
-      w.position(p.y());
+  c.int32("uav_x", x, S);
+  c.int32("uav_y", y, S);
+  c.int32("uav_yaw", yaw, S);
+  x.assign(S * T, 0);
+  y.assign(S * T, 0);
+  for (std::size_t k = 0; k < S; ++k) {
+    for (std::size_t t = 0; t < T; ++t) {
+      const Vec2& p = run.steps[k].targets[t];
+      x[t * S + k] = fixedPoint(p.x(), kCentimetres);
+      y[t * S + k] = fixedPoint(p.y(), kCentimetres);
     }
   }
+  c.int32("target_x", x, S);
+  c.int32("target_y", y, S);
   // Contacts, at the steps that have any: [k, agent, "wall:3", …].
-  w.raw("],\"contacts\":[");
-  first = true;
+  w.raw(",\"contacts\":[");
+  bool first = true;
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
     const std::vector<RecordedAgent>& agents = run.steps[k].agents;
     for (std::size_t i = 0; i < agents.size(); ++i) {
@@ -185,9 +192,9 @@ void writeTruth(const RunFolder& run, Writer& w) {
       w.integer(static_cast<long long>(k));
       w.raw(",");
       w.integer(static_cast<long long>(i));
-      for (const std::string& c : agents[i].contacts) {
+      for (const std::string& contact : agents[i].contacts) {
         w.raw(",");
-        w.string(c);
+        w.string(contact);
       }
       w.raw("]");
     }
@@ -304,54 +311,48 @@ std::vector<int> associate(const RecordedStep& s, const RecordedAgent& a,
   return of_target;
 }
 
-void writeTracks(const RunFolder& run, Table& keys, Table& labels, Writer& w) {
-  w.raw(",\"tracks\":[");
-  bool first_step = true;
+// The tracks of every agent at every step, in order (step, agent, track): how many each agent
+// holds at each step, then a column per field (key and label as indices into the tables; the
+// person the track stands for, associate()'s pairing, or -1; position and velocity in cm and
+// cm/s; the covariance's position block as Float32s).
+void writeTracks(const RunFolder& run, Table& keys, Table& labels, Columns& c) {
+  std::vector<std::int32_t> count, key, label, target, x, y, vx, vy;
+  std::vector<float> pxx, pxy, pyy;
   for (const RecordedStep& s : run.steps) {
-    w.comma(first_step);
-    w.raw("[");
-    bool first_agent = true;
     for (const RecordedAgent& a : s.agents) {
-      w.comma(first_agent);
-      w.raw("[");
-      bool first = true;
-      for (const RecordedTrack& t : a.tracks) {
-        w.comma(first);
-        w.integer(keys.index(t.key));
-        w.raw(",");
-        w.integer(labels.index(t.label));
-        for (double x : {t.position.x(), t.position.y(), t.velocity.x(), t.velocity.y()}) {
-          w.raw(",");
-          w.position(x);
-        }
-        for (double x : {t.P_pos.x(), t.P_pos.y(), t.P_pos.z()}) {
-          w.raw(",");
-          w.significant(x);
-        }
+      count.push_back(static_cast<std::int32_t>(a.tracks.size()));
+      std::vector<std::int32_t> of_track(a.tracks.size(), -1);
+      const std::vector<int> of_target = associate(s, a, run.spec);
+      for (std::size_t t = 0; t < of_target.size(); ++t) {
+        if (of_target[t] >= 0)
+          of_track[static_cast<std::size_t>(of_target[t])] = static_cast<std::int32_t>(t);
       }
-      w.raw("]");
-    }
-    w.raw("]");
-  }
-  w.raw("],\"track_of_target\":[");
-  first_step = true;
-  for (const RecordedStep& s : run.steps) {
-    w.comma(first_step);
-    w.raw("[");
-    bool first_agent = true;
-    for (const RecordedAgent& a : s.agents) {
-      w.comma(first_agent);
-      w.raw("[");
-      bool first = true;
-      for (int j : associate(s, a, run.spec)) {
-        w.comma(first);
-        w.integer(j);
+      for (std::size_t j = 0; j < a.tracks.size(); ++j) {
+        const RecordedTrack& t = a.tracks[j];
+        key.push_back(keys.index(t.key));
+        label.push_back(labels.index(t.label));
+        target.push_back(of_track[j]);
+        x.push_back(fixedPoint(t.position.x(), kCentimetres));
+        y.push_back(fixedPoint(t.position.y(), kCentimetres));
+        vx.push_back(fixedPoint(t.velocity.x(), kCentimetres));
+        vy.push_back(fixedPoint(t.velocity.y(), kCentimetres));
+        pxx.push_back(significantFloat(t.P_pos.x()));
+        pxy.push_back(significantFloat(t.P_pos.y()));
+        pyy.push_back(significantFloat(t.P_pos.z()));
       }
-      w.raw("]");
     }
-    w.raw("]");
   }
-  w.raw("]");
+  c.int32("track_count", count);
+  c.int32("track_key", key);
+  c.int32("track_label", label);
+  c.int32("track_target", target);
+  c.int32("track_x", x);
+  c.int32("track_y", y);
+  c.int32("track_vx", vx);
+  c.int32("track_vy", vy);
+  c.float32("track_pxx", pxx);
+  c.float32("track_pxy", pxy);
+  c.float32("track_pyy", pyy);
 }
 
 // Occlusion maps as changes: per agent and step, 0 when nothing changed, else [[entries set],
@@ -517,20 +518,31 @@ void writeTable(const char* name, const Table& table, Writer& w) {
 
 }  // namespace
 
-std::string replayDataJson(const RunFolder& run) {
+std::string replayData(const RunFolder& run) {
   Writer w;
+  Columns c;
   w.raw("{");
-  writeModel(run, w);
-  writeTruth(run, w);
+  writeModel(run, w, c);
+  writeTruth(run, w, c);
   writeSensing(run, w);
   Table keys, labels;
-  writeTracks(run, keys, labels, w);
+  writeTracks(run, keys, labels, c);
   writeMaps(run, keys, w);
   writePlans(run, w);
   writeTable("keys", keys, w);
   writeTable("labels", labels, w);
+  c.describe(w);
   w.raw("}");
-  return w.text;
+  // The header's length (4 bytes, little-endian), the header, spaces to a multiple of 4 bytes
+  // (so that every column starts 4-byte aligned), the columns.
+  std::string header = std::move(w.text);
+  while ((4 + header.size()) % 4 != 0) header += ' ';
+  std::string out;
+  const auto n = static_cast<std::uint32_t>(header.size());
+  for (int shift = 0; shift < 32; shift += 8) out += static_cast<char>(n >> shift & 0xffu);
+  out += header;
+  out += c.bytes();
+  return out;
 }
 
 }  // namespace canopy::replay

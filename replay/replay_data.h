@@ -1,7 +1,9 @@
 #pragma once
-// The data a replay page embeds: a run folder packed as one compact JSON text (numbers rounded
-// to what the eye and the timelines need, the occlusion maps and plans stored only when they
-// change). The page's decoder (web/decode.js) reads exactly this layout.
+// The data a replay page embeds: a run folder packed as a JSON header (the scenario, the agents,
+// the sensing, maps and plans, numbers rounded to what the eye and the timelines need, the
+// occlusion maps and plans stored only when they change) followed by typed columns (the crowns,
+// the poses and positions over time, the tracks: little-endian Int32 and Float32 arrays,
+// columns.h). The page's decoders (web/columns.js, web/decode.js) read exactly this layout.
 #include <string>
 
 #include "replay/run_folder.h"
@@ -9,15 +11,18 @@
 namespace canopy::replay {
 
 /// Rounding of the packed numbers: positions, radii and velocities to 1 cm (cm/s), headings to
-/// 1 mrad, covariances, costs and OSPA to 4 significant digits.
+/// 1 mrad, covariances (as Float32s), costs and OSPA to 4 significant digits.
 inline constexpr int kPositionDecimals = 2;
 inline constexpr int kYawDecimals = 3;
 inline constexpr int kSignificantDigits = 4;
 /// An occlusion-map entry is sent again only when one of its numbers moved this much (m).
 inline constexpr double kMapResend = 0.05;
 
-/// The run as the JSON object web/decode.js reads (its layout: replay_data.cpp's writers, in
-/// order; docs/design-notes.md, "The replay page"). Deterministic: the same run, the same text.
-std::string replayDataJson(const RunFolder& run);
+/// The run's data: 4 bytes (little-endian) giving the header's length, the header (a JSON object
+/// with "format": 2 and "columns", the name, type, byte offset, count and delta stride of each
+/// column; padded with spaces so that the columns start 4-byte aligned), then the columns. Its
+/// layout: replay_data.cpp's writers, in order; docs/design-notes.md, "The replay page".
+/// Deterministic: the same run, the same bytes.
+std::string replayData(const RunFolder& run);
 
 }  // namespace canopy::replay

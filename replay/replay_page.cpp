@@ -15,7 +15,7 @@ namespace {
 
 // gzip (RFC 1952) of `text` at zlib's best compression. The header's time is 0, so the same
 // text gives the same bytes.
-std::string gzipped(std::string_view text) {
+std::string gzipped(std::string_view text) {  // text: any bytes
   z_stream stream{};
   if (deflateInit2(&stream, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY) != Z_OK)
     throw std::runtime_error("replay page: zlib failed to start");
@@ -78,22 +78,45 @@ void fill(std::string& page, std::string_view name, const std::string& content) 
   page.replace(at, slot.size(), content);
 }
 
-}  // namespace
+// The data of `run` in the element `id`: gzipped, in base64 (replay_data.h), which the page
+// inflates with the browser's own DecompressionStream (columns.js).
+std::string dataElement(const RunFolder& run, std::string_view id) {
+  return "<script type=\"application/octet-stream\" id=\"" + std::string(id) +
+         "\" data-encoding=\"columns-gzip-base64\">" + base64(gzipped(replayData(run))) +
+         "</script>";
+}
 
-std::string replayPage(const RunFolder& run) {
+// The page of `run`, with `overlay` (or none) drawn over it on the same clock.
+std::string pageOf(const RunFolder& run, const RunFolder* overlay) {
   std::string page(web::kTemplate);
-  fill(page, "title", htmlEscaped(run.spec.name));
+  fill(page, "title",
+       htmlEscaped(overlay ? run.spec.name + " + " + overlay->spec.name : run.spec.name));
   fill(page, "style", "<style>\n" + std::string(web::kStyle) + "</style>");
-  // The data: its JSON gzipped and in base64, which the page inflates with the browser's own
-  // DecompressionStream (main.js).
   fill(page, "data",
-       "<script type=\"application/octet-stream\" id=\"replay-data\" data-encoding=\"gzip-base64\">" +
-           base64(gzipped(replayDataJson(run))) + "</script>");
+       dataElement(run, "replay-data") +
+           (overlay ? "\n" + dataElement(*overlay, "replay-data-b") : std::string()));
   std::string scripts;
   for (std::string_view script : web::scripts())
     scripts += "<script>\n" + std::string(checkedScript(script)) + "</script>\n";
   fill(page, "scripts", scripts);
   return page;
+}
+
+}  // namespace
+
+std::string replayPage(const RunFolder& run) {
+  return pageOf(run, nullptr);
+}
+
+std::string overlayPage(const RunFolder& a, const RunFolder& b) {
+  return pageOf(a, &b);
+}
+
+std::size_t writeOverlay(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                         const std::filesystem::path& out) {
+  const std::string page = overlayPage(readRunFolder(run_a), readRunFolder(run_b));
+  writeFileAtomically(out, page);
+  return page.size();
 }
 
 std::string sideBySidePage(const RunFolder& a, const RunFolder& b) {

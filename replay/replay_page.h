@@ -9,10 +9,19 @@
 
 namespace canopy::replay {
 
-/// The page for `run`: web/replay.html with the style, the scripts and replayDataJson(run)
-/// inlined (the data gzipped, in base64; the page inflates it with the browser's own
-/// DecompressionStream). The same run gives the same bytes.
+/// The page for `run`: web/replay.html with the style, the scripts and replayData(run) inlined
+/// (gzipped, in base64; the page inflates it with the browser's own DecompressionStream and
+/// reads its columns as typed arrays). The same run gives the same bytes.
 std::string replayPage(const RunFolder& run);
+
+/// Run `b` drawn over run `a` on one map and one clock (`canopy view A B --overlay`): a's page
+/// with b's data as a second element; the page draws b's agents, footprints and people as
+/// outlines over a's, at b's step of the same time (web/overlay.js).
+std::string overlayPage(const RunFolder& a, const RunFolder& b);
+
+/// writeReplay of overlayPage: returns the page's size in bytes.
+std::size_t writeOverlay(const std::filesystem::path& run_a, const std::filesystem::path& run_b,
+                         const std::filesystem::path& out);
 
 /// Two runs' pages side by side on one clock (web/side_by_side.html): each page whole in an
 /// iframe's srcdoc, a slider in seconds above them; stepping either sets the other to the step

@@ -193,6 +193,8 @@
         app.setStep(app.run.steps - 1);
       } else if (e.key === "f") {
         app.fit();
+      } else if (e.key === "o" && app.state.second) {
+        app.setSecond(!app.state.second.on);
       } else if (/^[1-9]$/.test(e.key) && +e.key <= CanopyReplay.LAYERS.length) {
         const id = CanopyReplay.LAYERS[+e.key - 1].id;
         app.setLayer(id, !app.state.layers[id]);

@@ -1,4 +1,5 @@
-// The run's packed data (replay/replay_data.cpp writes it) unpacked into per-step values.
+// The run's packed data (replay/replay_data.cpp writes it, columns.js reads it) unpacked into
+// per-step values.
 // Defines the page's one global, CanopyReplay; the other scripts add to it.
 const CanopyReplay = {};
 
@@ -40,21 +41,6 @@ const CanopyReplay = {};
     });
   }
 
-  function unpackTracks(perStep, keys, labels) {
-    return perStep.map(function (perAgent) {
-      return perAgent.map(function (flat) {
-        const tracks = [];
-        for (let i = 0; i + 8 < flat.length; i += 9) {
-          tracks.push({
-            key: keys[flat[i]], label: labels[flat[i + 1]], x: flat[i + 2], y: flat[i + 3],
-            vx: flat[i + 4], vy: flat[i + 5], pxx: flat[i + 6], pxy: flat[i + 7], pyy: flat[i + 8]
-          });
-        }
-        return tracks;
-      });
-    });
-  }
-
   // Planning epochs: each agent's plan with the epochs of the teammates' plans it planned
   // against (joint_epoch), and the messages sent, in the order sent.
   function unpackEpochs(raw) {
@@ -88,18 +74,14 @@ const CanopyReplay = {};
   }
   CanopyReplay.spreadColour = spreadColour;
 
-  // track_of_target [k][a][t] (the index of agent a's track standing for person t, or -1) in one
-  // Int32Array; each [k][a] is a view of its T numbers (indexOf and [t] as before). As nested
-  // arrays it was the largest part of a city run's memory (301 × 64 × 256 numbers).
-  function packTrackOfTarget(nested, S, A, T) {
-    const flat = new Int32Array(S * A * T), out = [];
+  // track_of_target [k][a][t] (the index of agent a's track standing for person t, or -1) is one
+  // Int32Array (columns.js); each [k][a] is a view of its T numbers (indexOf and [t] as an
+  // array). As nested arrays it was the largest part of a city run's memory (301 × 64 × 256).
+  function trackOfTargetViews(flat, S, A, T) {
+    const out = [];
     for (let k = 0; k < S; k++) {
       const perAgent = [];
-      for (let a = 0; a < A; a++) {
-        const o = (k * A + a) * T;
-        flat.set(nested[k][a], o);
-        perAgent.push(flat.subarray(o, o + T));
-      }
+      for (let a = 0; a < A; a++) perAgent.push(flat.subarray((k * A + a) * T, (k * A + a + 1) * T));
       out.push(perAgent);
     }
     return out;
@@ -116,8 +98,8 @@ const CanopyReplay = {};
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
-      tracks: unpackTracks(raw.tracks, raw.keys, raw.labels),
-      trackOfTarget: packTrackOfTarget(raw.track_of_target, S, A, T),
+      tracks: raw.tracks,
+      trackOfTarget: trackOfTargetViews(raw.track_of_target, S, A, T),
       maps: raw.maps.map(function (changes) { return unpackMaps(changes, keys); }),
       paths: raw.paths.map(unpackPaths),
       epochs: unpackEpochs(raw.epochs),
@@ -134,14 +116,20 @@ const CanopyReplay = {};
       return [x0, y0, x1, y1];
     });
     run.epochs.forEach(function (ep, n) { run.epochIndex.set(ep.epoch, n); });
+    // planVersion[k]: changes at each step where some agent's planned path (a list kept while
+    // unchanged) or the planning epoch changed (slow_layers.js redraws the plans then).
+    run.planVersion = new Int32Array(S);
     // epochAt[k]: the index of the last planning epoch at or before step k, -1 before the first.
     let e = -1;
     for (let k = 0; k < S; k++) {
       while (e + 1 < run.epochs.length && run.epochs[e + 1].k <= k) e++;
       run.epochAt[k] = e;
+      let changed = k === 0 || e !== run.epochAt[k - 1];
+      for (let i = 0; i < A && !changed; i++) changed = run.paths[i][k] !== run.paths[i][k - 1];
+      run.planVersion[k] = k === 0 ? 0 : run.planVersion[k - 1] + (changed ? 1 : 0);
     }
     // Poses and positions in typed arrays; the closures keep these, not the raw data.
-    const uav = Float64Array.from(raw.uav), target = Float64Array.from(raw.target), dt = raw.dt;
+    const uav = raw.uav, target = raw.target, dt = raw.dt;  // Float64Arrays (columns.js)
     run.uav = function (k, i) {
       const o = (k * A + i) * 3;
       return { x: uav[o], y: uav[o + 1], yaw: uav[o + 2] };

@@ -58,8 +58,10 @@
   // before it (as the frames place them, render/scene_builder.cpp); where none of the six is
   // free the name is left out (the frames put it at the first place), so a crowd seen from far
   // shows the names that fit instead of a pile.
+  // A crowd (more than CanopyReplay.CROWD people on the map) shows no people's names: only
+  // their symbols keep the agents' names off them.
   function drawNames(ctx, view, run, k, truth) {
-    const font = "bold " + FONT;
+    const font = "bold " + FONT, crowd = CanopyReplay.peopleOnMap(view, run, k) > CanopyReplay.CROWD;
     ctx.font = font;
     ctx.lineJoin = "round";
     const symbols = new Boxes(), placed = new Boxes(), items = [];
@@ -73,7 +75,7 @@
     run.targets.forEach(function (target, t) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
       symbols.add({ x0: s.x - 6, y0: s.y - 6, x1: s.x + 6, y1: s.y + 6 });
-      items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true, shown: truth });
+      if (!crowd) items.unshift({ s: s, text: target.name, gap: 6, aboveFirst: true, shown: truth });
     });
     const line = 11;
     items.forEach(function (item) {

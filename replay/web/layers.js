@@ -230,7 +230,7 @@
     ctx.setLineDash([]);
   }
 
-  function drawMap(ctx, view, run, k, a) {
+  function drawOcclusionMap(ctx, view, run, k, a) {
     ctx.strokeStyle = run.agents[a].colour;
     ctx.lineWidth = 1.2;
     ctx.beginPath();  // every entry in one path, stroked once
@@ -249,6 +249,7 @@
     });
     ctx.stroke();
   }
+  CanopyReplay.drawOcclusionMap = drawOcclusionMap;
 
   // A trail lying within TRAIL_HIDDEN_PX of its person's symbol is under the disc (radius 5 px,
   // drawn over it) even with its line's half-width: it is left out, as is a trail wholly off
@@ -386,21 +387,31 @@
   }
 
   // Draws step k over the static layers of `backdrop` (a CanopyReplay.Backdrop of this run).
-  // state: {k, agent (whose beliefs), layers: {id: bool}, selection}.
-  CanopyReplay.drawMap = function (ctx, view, run, state, backdrop) {
+  // state: {k, agent (whose beliefs), layers: {id: bool}, selection, second: a second run drawn
+  // over this one, {run, on}, or none}. With `slow` (a CanopyReplay.SlowLayers of this run,
+  // slow_layers.js) the plans' fixed part is copied from its cache; without (an SVG export),
+  // drawn.
+  CanopyReplay.drawMap = function (ctx, view, run, state, backdrop, slow) {
     const k = state.k, a = state.agent, on = state.layers;
     backdrop.draw(ctx, view, on.trees);
     ctx.lineJoin = "round";
     if (on.sensors) drawSensors(ctx, view, run, k);
     if (on.links) drawLinks(ctx, view, run, k);
-    if (on.map) drawMap(ctx, view, run, k, a);
-    if (on.plans) CanopyReplay.drawPlans(ctx, view, run, k, a);
+    if (on.map) drawOcclusionMap(ctx, view, run, k, a);
+    if (on.plans) {
+      if (slow && !ctx.vector) slow.draw(ctx, view, state); else CanopyReplay.drawPlansFixed(ctx, view, run, k, a);
+      ctx.lineJoin = "round";
+      CanopyReplay.drawPlansMoving(ctx, view, run, k, a);
+    }
     if (on.truth) drawTrails(ctx, view, run, k);
     if (on.tracks) drawTracks(ctx, view, run, k, a);
     if (on.truth) CanopyReplay.drawTargets(ctx, view, run, k);
     drawSelection(ctx, view, run, k, state.selection);
     CanopyReplay.drawNames(ctx, view, run, k, on.truth);
     CanopyReplay.drawAgents(ctx, view, run, k);
+    // A second run over this one (second_run.js), at its step of the same time.
+    const second = state.second;
+    if (second && second.on) CanopyReplay.drawSecondRun(ctx, view, second.run, CanopyReplay.secondStep(run, second.run, k), on);
     drawOverlay(ctx, view, run, k);
   };
 })();

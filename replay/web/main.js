@@ -1,13 +1,16 @@
 // The replay page's start: reads the embedded run, draws its first step and keeps the map, the
 // slider, the clock and the timeline in step. CanopyReplay.app is the page's state, which the
 // browser tests drive and read.
-/* global CanopyReplay, DecompressionStream */
+/* global CanopyReplay */
 (function () {
   "use strict";
 
   const started = performance.now();
 
-  // The box (m) of everything the run visits, grown by the largest footprint's reach and 10 %.
+  // The box (m) the view fits at the start: everything the run visits (agents and people), and
+  // the largest footprint's reach about it as far as it lies in the area of interest (beyond it
+  // lies nothing of the run's), grown by 3 % of its larger side so that symbols at its edge show
+  // whole.
   function runBox(run) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, reach = 0;
     function add(q) {
@@ -21,8 +24,11 @@
       const f = a.footprint;
       reach = Math.max(reach, f.shape === "rectangle" ? 0.5 * Math.hypot(f.size[0], f.size[1]) : f.radius);
     });
-    const pad = reach + 0.1 * Math.max(x1 - x0 + 2 * reach, y1 - y0 + 2 * reach, 2);
-    return [x0 - pad, y0 - pad, x1 + pad, y1 + pad];
+    const aoi = run.aoi;
+    const bx0 = Math.min(x0, Math.max(x0 - reach, aoi[0])), by0 = Math.min(y0, Math.max(y0 - reach, aoi[1]));
+    const bx1 = Math.max(x1, Math.min(x1 + reach, aoi[2])), by1 = Math.max(y1, Math.min(y1 + reach, aoi[3]));
+    const pad = 0.03 * Math.max(bx1 - bx0, by1 - by0, 2);
+    return [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad];
   }
 
   function App(run) {
@@ -31,6 +37,7 @@
     this.ctx = this.view.canvas.getContext("2d");
     this.timeline = new CanopyReplay.Timeline(document.getElementById("timeline"), run);
     this.backdrop = new CanopyReplay.Backdrop(run);
+    this.slow = new CanopyReplay.SlowLayers(run);
     this.box = runBox(run);
     const layers = {};
     CanopyReplay.LAYERS.forEach(function (l) { layers[l.id] = true; });
@@ -51,10 +58,11 @@
   App.prototype.draw = function () {
     const t0 = performance.now(), s = this.state;
     this.view.resize();
-    CanopyReplay.drawMap(this.ctx, this.view, this.run, s, this.backdrop);
+    CanopyReplay.drawMap(this.ctx, this.view, this.run, s, this.backdrop, this.slow);
     document.getElementById("slider").value = String(s.k);
     document.getElementById("clock").textContent = "k = " + s.k + " / " + (this.run.steps - 1) +
-      "   t = " + this.run.time(s.k).toFixed(2) + " s";
+      "   t = " + this.run.time(s.k).toFixed(2) + " s" +
+      (s.second ? "   (over it k = " + CanopyReplay.secondStep(this.run, s.second.run, s.k) + ")" : "");
     if (this.series) {
       this.timeline.draw(s.k);
       const r = this.series.readout(s.k), out = document.getElementById("readout");
@@ -183,21 +191,32 @@
     requestAnimationFrame(frame);
   };
 
-  // The run's data: JSON, gzipped and in base64 (replay_page.cpp), inflated by the browser's own
-  // DecompressionStream; a page of plain JSON is read as it is.
-  function readData() {
-    const element = document.getElementById("replay-data");
-    if (element.dataset.encoding !== "gzip-base64") return Promise.resolve(JSON.parse(element.textContent));
-    const text = atob(element.textContent.trim()), bytes = new Uint8Array(text.length);
-    for (let i = 0; i < text.length; i++) bytes[i] = text.charCodeAt(i);
-    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
-    return new Response(stream).text().then(function (json) {
-      CanopyReplay.dataChars = json.length;  // the inflated size, which the tests compare
-      return JSON.parse(json);
-    });
+  // Shows or hides the second run drawn over this one (`canopy view A B --overlay`).
+  App.prototype.setSecond = function (on) {
+    if (!this.state.second) return;
+    this.state.second.on = on;
+    document.getElementById("second-on").checked = on;
+    this.draw();
+  };
+
+  // The switch of the second run, and its line in the subtitle.
+  function addSecondRun(app, second) {
+    app.state.second = { run: second, on: true };
+    const a = app.box, b = runBox(second);
+    app.box = [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];
+    document.getElementById("subtitle").textContent += " \u00b7 drawn over it: " + second.scenario +
+      ", seed " + second.seed + " (hollow darts, dashed footprints, rings)";
+    const label = document.createElement("label"), input = document.createElement("input");
+    input.type = "checkbox";
+    input.id = "second-on";
+    input.checked = true;
+    input.addEventListener("change", function () { app.setSecond(input.checked); });
+    label.appendChild(input);
+    label.appendChild(document.createTextNode(" o \u00b7 " + second.scenario + " drawn over it"));
+    document.getElementById("layers").appendChild(label);
   }
 
-  function start(raw) {
+  function start(raw, rawSecond) {
     const run = CanopyReplay.decode(raw);
     document.getElementById("scenario").textContent = run.scenario;
     document.getElementById("subtitle").textContent = "seed " + run.seed + " \u00b7 " + run.steps +
@@ -207,6 +226,7 @@
     const app = new App(run);
     CanopyReplay.app = app;
     CanopyReplay.bindControls(app);
+    if (rawSecond) addSecondRun(app, CanopyReplay.decode(rawSecond));
     // A person's timeline from the start, so that the page shows every part of itself at once.
     if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
     app.view.resize();
@@ -214,6 +234,7 @@
     // A link's fragment (share.js) restores its step, layers, view, beliefs, selection and plot.
     CanopyReplay.applyFragment(app, location.hash);
     CanopyReplay.LAYERS.forEach(function (l) { document.getElementById("layer-" + l.id).checked = app.state.layers[l.id]; });
+    if (app.state.second) document.getElementById("second-on").checked = app.state.second.on;
     document.getElementById("agent").value = String(app.state.agent);
     app.refreshTimeline();
     app.draw();
@@ -223,7 +244,8 @@
   }
 
   // Resolves once the first step is drawn (the tests wait for it).
-  CanopyReplay.ready = readData().then(start);
+  CanopyReplay.ready = Promise.all([CanopyReplay.readData(), CanopyReplay.readData("replay-data-b")])
+    .then(function (data) { start(data[0], data[1]); });
   // A top-level const is no property of the window: a side-by-side page reaches its frames'
   // pages through this one (side_by_side.js).
   window.CanopyReplay = CanopyReplay;

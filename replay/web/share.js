@@ -2,7 +2,7 @@
 // the agent whose beliefs are shown, the selection and the plotted field, and opening the page
 // with it restores them; the map exports as PNG (its pixels) and as SVG (the same layers drawn
 // as shapes and text, svg_context.js).
-// Fragment: #k=K&agent=I&sel=a3|t5&layers=trees,truth,…&view=CX,CY,SCALE&plot=FIELD
+// Fragment: #k=K&agent=I&sel=a3|t5&layers=trees,truth,…&view=CX,CY,SCALE&plot=FIELD[&second=0|1]
 /* global CanopyReplay */
 (function () {
   "use strict";
@@ -20,6 +20,7 @@
       .map(function (l) { return l.id; }).join(","));
     parts.push("view=" + [v.cx, v.cy, v.scale].map(exact).join(","));
     if (s.plot) parts.push("plot=" + encodeURIComponent(s.plot));
+    if (s.second) parts.push("second=" + (s.second.on ? 1 : 0));  // an overlay page's second run
     return parts.join("&");
   };
 
@@ -56,6 +57,10 @@
       applied.push("view");
     }
     if (fields.plot) { s.plot = fields.plot; applied.push("plot"); }
+    if (s.second && (fields.second === "0" || fields.second === "1")) {
+      s.second.on = fields.second === "1";
+      applied.push("second");
+    }
     const k = whole(fields.k, run.steps);
     if (k !== null) { s.k = k; applied.push("k"); }
     return applied;

@@ -3,8 +3,8 @@
 // of the same time (k = round(t / dt), clamped to its run). Their views are linked (while "link
 // the views" is ticked): both open on the box of both runs, and a pan or zoom in one moves the
 // other to the same centre and scale. The address's fragment (#t=SECONDS&view=CX,CY,SCALE) holds
-// the time and the left page's view, and opening it restores them. CanopySideBySide is what the
-// browser tests drive and read.
+// the time and the left page's view, and opening it restores them. One play button plays both in
+// real time. CanopySideBySide is what the browser tests drive and read.
 (function () {
   "use strict";
 
@@ -71,6 +71,26 @@
     if (fields.t !== undefined && isFinite(t) && t >= 0) side.setTime(t);
   }
 
+  // One play button for both: each animation frame moves the clock on by the time elapsed
+  // (real time), and both pages to their steps of that time, until the longer run ends.
+  const play = document.getElementById("play-both");
+  side.playing = false;
+  side.togglePlay = function () {
+    side.playing = !side.playing;
+    play.textContent = side.playing ? "\u23f8 pause" : "\u25b6 play";
+    if (!side.playing) return;
+    if (side.time >= side.end) side.setTime(0);
+    let last = null;
+    function frame(now) {
+      if (!side.playing) return;
+      if (last !== null) side.setTime(Math.min(side.end, side.time + (now - last) / 1000));
+      last = now;
+      if (side.time >= side.end) return side.togglePlay();
+      requestAnimationFrame(frame);
+    }
+    requestAnimationFrame(frame);
+  };
+
   let linking = false;
   // Moves every page's view but `from`'s to the centre and scale of `from`'s.
   side.linkViews = function (from) {
@@ -112,7 +132,9 @@
       };
     });
     const end = Math.max.apply(null, apps.map(function (app) { return app.run.time(app.run.steps - 1); }));
+    side.end = end;
     slider.max = String(end);
+    play.addEventListener("click", function () { side.togglePlay(); });
     slider.addEventListener("input", function () { side.setTime(+slider.value); });
     side.setTime(0);
     applyFragment(apps);

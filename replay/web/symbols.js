@@ -50,15 +50,48 @@
       }
       return;
     }
-    const sprite = cachedSprite("person " + ratio, 14, 14, ratio, function (c) { personDisc(c, 7, 7); });
+    const xs = [], ys = [];
     for (let t = 0; t < run.targets.length; t++) {
       const q = run.target(k, t), s = view.toScreen(q.x, q.y);
-      if (s.x < -7 || s.y < -7 || s.x > view.width + 7 || s.y > view.height + 7) continue;  // off the map
+      if (!onMap(view, s, 7)) continue;
       // At whole device pixels: a copy that needs no resampling (half a pixel at most off).
-      ctx.drawImage(sprite, Math.round((s.x - 7) * ratio) / ratio, Math.round((s.y - 7) * ratio) / ratio,
-        sprite.width / ratio, sprite.height / ratio);
+      xs.push(Math.round(s.x * ratio) / ratio);
+      ys.push(Math.round(s.y * ratio) / ratio);
     }
+    if (xs.length > CanopyReplay.CROWD) {
+      // A crowd (seen from far): each person an 8 px black square in a 1 px white rim, two fills
+      // of one path each instead of a copy per person. As wide as the disc, it covers the
+      // trails left out as under the disc (TRAIL_HIDDEN_PX and the line's half-width: 4.5 px).
+      [[C.white, 5], [C.target, 4]].forEach(function (pass) {
+        const h = pass[1];
+        ctx.beginPath();
+        for (let n = 0; n < xs.length; n++) ctx.rect(xs[n] - h, ys[n] - h, 2 * h, 2 * h);
+        ctx.fillStyle = pass[0];
+        ctx.fill();
+      });
+      return;
+    }
+    const sprite = cachedSprite("person " + ratio, 14, 14, ratio, function (c) { personDisc(c, 7, 7); });
+    for (let n = 0; n < xs.length; n++) ctx.drawImage(sprite, xs[n] - 7, ys[n] - 7, sprite.width / ratio, sprite.height / ratio);
   }
+  // More people than this on the map are a crowd: drawn as squares (drawTargets), without
+  // their names (labels.js).
+  CanopyReplay.CROWD = 64;
+
+  // Whether screen point s lies on the map or within `margin` px of it.
+  function onMap(view, s, margin) {
+    return s.x >= -margin && s.y >= -margin && s.x <= view.width + margin && s.y <= view.height + margin;
+  }
+
+  // The number of people on the map (within 7 px of it) at step k.
+  CanopyReplay.peopleOnMap = function (view, run, k) {
+    let n = 0;
+    for (let t = 0; t < run.targets.length; t++) {
+      const q = run.target(k, t);
+      if (onMap(view, view.toScreen(q.x, q.y), 7)) n++;
+    }
+    return n;
+  };
 
   // The frames' dart (render/internal/tessellate.cpp): tip ahead, two back corners, a notch.
   function dart(ctx, s, yaw, size, fill) {

@@ -32,6 +32,15 @@ expect_bad_input "a position that is not [x, y]" "$work/short" "short/record.jso
 copy no_summary && echo '{"uavs": []}' > "$work/no_summary/summary.json"
 expect_bad_input "a summary of another run" "$work/no_summary" "no_summary/summary.json: uavs"
 
+# --overlay without a second run is a usage error (exit 2), naming the missing RUN_B.
+err=$("$canopy" view "$work/good" --overlay --out "$work/out.html" 2>&1 >/dev/null)
+code=$?
+if [ "$code" -eq 2 ] && [[ "$err" == *"--overlay needs RUN_B"* ]] && [ ! -e "$work/out.html" ]; then
+  passed=$((passed + 1)); echo "ok - --overlay without RUN_B"
+else
+  failed=$((failed + 1)); echo "not ok - --overlay without RUN_B: exit $code, message: $err"
+fi
+
 # analyze links one replay per behaviour class (the ownership state at L of some trial).
 if "$canopy" sweep "$source/tests/replay/data/replay_sweep.json" --out "$work/sweep" --jobs 1 \
      >/dev/null 2>&1 && "$canopy" analyze "$work/sweep" >"$work/analyze.txt" 2>&1; then
