@@ -74,6 +74,47 @@ def _run(command, **kwargs):
     subprocess.run(command, check=True, **kwargs)
 
 
+_PERCENT = re.compile(r"^\[\s*(\d+)%\]")
+
+
+def _progress_sink():
+    """Where the build's percentage goes while pip hides its output (issue 51: pip shows only
+    "still running..." for the whole build): CANOPY_PROGRESS names a file; otherwise the
+    terminal (/dev/tty) when there is one and our own output is not going to it already."""
+    path = os.environ.get("CANOPY_PROGRESS")
+    if path:
+        return open(path, "a", encoding="utf-8")
+    if sys.stdout.isatty():
+        return None  # the lines themselves reach the terminal
+    try:
+        return open("/dev/tty", "w", encoding="utf-8")
+    except OSError:
+        return None
+
+
+def _run_with_progress(command, **kwargs):
+    """_run, echoing every line (pip shows them with -v) and writing "canopy build: N%" to
+    _progress_sink() each time CMake's percentage grows."""
+    print("canopy build:", " ".join(command), flush=True)
+    sink = _progress_sink()
+    shown = -1
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          errors="replace", **kwargs) as child:
+        for line in child.stdout:
+            sys.stdout.write(line)
+            sys.stdout.flush()
+            match = _PERCENT.match(line)
+            if sink and match and int(match.group(1)) > shown:
+                shown = int(match.group(1))
+                sink.write(f"\rcanopy build: {shown}%")
+                sink.flush()
+    if sink:
+        sink.write("\n")
+        sink.close()
+    if child.returncode != 0:
+        raise subprocess.CalledProcessError(child.returncode, command)
+
+
 def _cmake_env():
     """The environment for CMake: without pip's isolation variables, so that the real
     interpreter sees its own site-packages (Debian's numpy) when CMake asks it."""
@@ -99,7 +140,8 @@ def _build():
             _run(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
                   "-DCANOPY_BUILD_TESTS=OFF", "-DCANOPY_BUILD_BENCH=OFF",
                   f"-DPython3_EXECUTABLE={python}"], env=_cmake_env())
-    _run(["cmake", "--build", build, "-j", jobs, "--target", "_canopy", "canopy"], env=_cmake_env())
+    _run_with_progress(["cmake", "--build", build, "-j", jobs, "--target", "_canopy", "canopy"],
+                       env=_cmake_env())
     return build
 
 
@@ -194,8 +236,9 @@ def get_requires_for_build_sdist(config_settings=None):
 
 def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
     _require_numpy()
-    print("canopy build: the first build compiles canopy in Release (about 20 min on one core); "
-          "`pip install -v .` shows CMake's progress", file=sys.stderr, flush=True)
+    print("canopy build: the first build compiles canopy in Release (about 20 min on one core; "
+          "its percentage goes to the terminal); `pip install -v .` shows CMake's lines",
+          file=sys.stderr, flush=True)
     project = _project()
     name = f"{_dist_name(project)}-{project['version']}.dist-info"
     os.makedirs(os.path.join(metadata_directory, name), exist_ok=True)

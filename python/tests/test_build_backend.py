@@ -29,3 +29,23 @@ def test_a_python_without_numpy_is_told_what_to_do(tmp_path):
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "canopy-0.1.0.dist-info"
     assert "pip install -v ." in done.stderr
+
+
+def test_the_build_shows_its_percentage_where_pip_hides_the_output(tmp_path):
+    # pip captures the backend's output; the percentage goes to the terminal (here a file, as
+    # CANOPY_PROGRESS says), once per new value, and every line still reaches the output.
+    lines = ["[  3%] Building CXX object a.o", "[  3%] Building CXX object b.o",
+             "note: no percentage", "[ 50%] Linking CXX executable canopy", "[100%] Built target x"]
+    script = "import sys; print(" + repr("\n".join(lines)) + ")"
+    sink = tmp_path / "progress"
+    code = ("import canopy_build, sys; "
+            f"canopy_build._run_with_progress([sys.executable, '-c', {script!r}])")
+    env = dict(os.environ, PYTHONPATH=str(BACKEND), CANOPY_PROGRESS=str(sink))
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert done.returncode == 0, done.stderr
+    assert all(line in done.stdout for line in lines)
+    assert sink.read_bytes() == b"\rcanopy build: 3%\rcanopy build: 50%\rcanopy build: 100%\n"
+    # A failing build still fails, with its exit code.
+    code = "import canopy_build, sys; canopy_build._run_with_progress([sys.executable, '-c', 'raise SystemExit(3)'])"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env)
+    assert done.returncode != 0 and "returned non-zero exit status 3" in done.stderr
