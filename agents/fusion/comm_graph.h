@@ -51,6 +51,8 @@ class CommGraph {
     return round >= lost_rounds_ ||
            lost_[static_cast<std::size_t>(round) * neighbour_.size() + link] == 0;
   }
+  /// Whether no message of this step can be lost (no losses were drawn).
+  bool lossless() const { return lost_rounds_ == 0; }
   long messages() const { return messages_; }           // directed messages of this step
   long lostMessages() const { return lost_messages_; }  // of which lost
 

@@ -139,6 +139,33 @@ void InformationConsensus<N>::mix(std::span<const ClusterMember> members, const 
 }
 
 template <int N>
+bool InformationConsensus<N>::closedFormApplies(std::span<const ClusterMember> members,
+                                                const CommGraph& graph) {
+  return members.size() >= kClosedFormFrom && graph.complete() && graph.lossless();
+}
+
+template <int N>
+template <typename Block>
+void InformationConsensus<N>::mixOnCompleteGraph(const CommGraph& graph, int rounds,
+                                                 std::vector<Block>& current) const {
+  const int count = static_cast<int>(current.size());
+  int holders = 0;  // c: the usable members
+  Block sum = Block::Zero();
+  for (int k = 0; k < count; ++k) {
+    if (!usable_[k]) continue;
+    sum += current[k];
+    ++holders;
+  }
+  if (holders < 2) return;  // nothing heard: every value stays
+  const double pi = 1.0 / graph.agents();                    // π_ij = 1 / (1 + (n − 1))
+  const double beta = std::pow(1.0 - holders * pi, rounds);  // β^L
+  const Block mean = sum / holders;                          // ȳ
+  for (int k = 0; k < count; ++k) {
+    if (usable_[k]) current[k] = mean + beta * (current[k] - mean);  // ȳ + β^L (y_k − ȳ)
+  }
+}
+
+template <int N>
 void InformationConsensus<N>::runCi(std::span<TrackList> lists,
                                     std::span<const ClusterMember> members, const CommGraph& graph,
                                     int rounds, FusionDiagnostics& diagnostics) {
@@ -155,13 +182,18 @@ void InformationConsensus<N>::runCi(std::span<TrackList> lists,
   for (int k = 0; k < count; ++k) {
     existence_[k](0) = logOdds(lists[members[k].agent][members[k].track].existence);
   }
-  linkHolders(members, graph);
-  // Ω_i ← Σ_j π_ij Ω_j, q_i ← Σ_j π_ij q_j, L rounds (Battistelli & Chisci 2014).
-  mix(members, graph, rounds, info_, info_next_);
-  // Existence: the same rounds on the log-odds l = ln(r / (1 − r)), i.e. the normalised geometric
-  // mean of the Bernoulli distributions, as CI's information average is the Gaussians' geometric
-  // mean (docs/design-notes.md).
-  mix(members, graph, rounds, existence_, existence_next_);
+  // Ω_i ← Σ_j π_ij Ω_j, q_i ← Σ_j π_ij q_j, L rounds (Battistelli & Chisci 2014). Existence: the
+  // same rounds on the log-odds l = ln(r / (1 − r)), i.e. the normalised geometric mean of the
+  // Bernoulli distributions, as CI's information average is the Gaussians' geometric mean
+  // (docs/design-notes.md).
+  if (closedFormApplies(members, graph)) {
+    mixOnCompleteGraph(graph, rounds, info_);
+    mixOnCompleteGraph(graph, rounds, existence_);
+  } else {
+    linkHolders(members, graph);
+    mix(members, graph, rounds, info_, info_next_);
+    mix(members, graph, rounds, existence_, existence_next_);
+  }
   for (int k = 0; k < count; ++k) {
     if (!usable_[k]) continue;
     tracking::Track<N>& track = lists[members[k].agent][members[k].track];

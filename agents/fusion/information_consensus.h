@@ -45,6 +45,10 @@ namespace canopy::agents::fusion {
 template <int N>
 class InformationConsensus {
  public:
+  /// From this many members on, CI on a complete graph without losses mixes in closed form
+  /// (mixOnCompleteGraph); the paper's teams (2–4 UAVs) stay far below it.
+  static constexpr std::size_t kClosedFormFrom = 16;
+
   using TrackList = std::vector<tracking::Track<N>>;
 
   /// Overwrites the posterior of every member of every cluster with two or more members. Uses
@@ -76,6 +80,17 @@ class InformationConsensus {
   template <typename Block>
   void mix(std::span<const ClusterMember> members, const CommGraph& graph, int rounds,
            std::vector<Block>& current, std::vector<Block>& next);
+  /// mix() in closed form for a cluster of c usable members on a complete graph without losses
+  /// (CI from kClosedFormFrom members on): every weight between holders is π = 1/n (n agents),
+  /// so L rounds apply W^L with W = β I + π 11ᵀ over the holders, β = 1 − cπ; 1 is W's eigenvector
+  /// of eigenvalue 1 and every vector orthogonal to it one of eigenvalue β, so
+  ///   W^L y_k = ȳ + β^L (y_k − ȳ),
+  /// ȳ the holders' mean: O(c) instead of O(c² L). The same values as the rounds up to rounding
+  /// (tests/agents/fusion); clusters below kClosedFormFrom keep the rounds and their bits.
+  template <typename Block>
+  void mixOnCompleteGraph(const CommGraph& graph, int rounds, std::vector<Block>& current) const;
+  static bool closedFormApplies(std::span<const ClusterMember> members, const CommGraph& graph);
+
   /// Size of the holder subgraph (usable members linked through usable members) of each member.
   void holderComponents(std::span<const ClusterMember> members);
   /// Marks a member unusable (no information pair): it neither sends nor receives.

@@ -256,3 +256,76 @@ TEST(ObserverAverage, EachKeepsItsOwnWhenNobodyObserved) {
 
 }  // namespace
 }  // namespace canopy::agents::fusion
+
+namespace canopy::agents::fusion {
+namespace {
+
+// CI's L rounds on a complete graph of n agents of whom c hold the track, by the definition:
+// y_i ← Σ_{j holder, j ≠ i} (1/n) y_j + (1 − (c − 1)/n) y_i (the weight of each agent without the
+// track stays with the receiver), applied to the information pairs and the log-odds.
+void roundsByDefinition(std::vector<InfoPair>& info, std::vector<double>& log_odds, int n,
+                        int rounds) {
+  const int c = static_cast<int>(info.size());
+  const double pi = 1.0 / n;
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<InfoPair> next(info.size());
+    std::vector<double> next_odds(info.size(), 0.0);
+    for (int i = 0; i < c; ++i) {
+      next[i].omega = (1.0 - (c - 1) * pi) * info[i].omega;
+      next[i].q = (1.0 - (c - 1) * pi) * info[i].q;
+      next_odds[i] = (1.0 - (c - 1) * pi) * log_odds[i];
+      for (int j = 0; j < c; ++j) {
+        if (j == i) continue;
+        next[i].omega += pi * info[j].omega;
+        next[i].q += pi * info[j].q;
+        next_odds[i] += pi * log_odds[j];
+      }
+    }
+    info = next;
+    log_odds = next_odds;
+  }
+}
+
+TEST(Ci, ManyHoldersOnACompleteGraphMixAsTheRoundsDo) {
+  // 18 of 20 agents hold the track (the closed form from 16 members on), 5 of 20 (the rounds):
+  // both against the definition, three rounds, β = 1 − c/n ≠ 0.
+  for (const int holders : {18, 5}) {
+    const int n = 20, rounds = 3;
+    RandomStream rng(7, "test.consensus.closed_form");
+    std::vector<std::vector<tracking::TargetTrack>> lists(n);
+    Clusters clusters;
+    clusters.start = {0};
+    std::vector<InfoPair> expected;
+    std::vector<double> odds;
+    for (int i = 0; i < holders; ++i) {
+      const Vec4 x = Vec4(20.0, 30.0, 1.0, -1.0) + test::randomVector<4>(rng, 0.5);
+      lists[i] = {test::makeTrack<4>({-1, 0}, x, test::randomSpd<4>(rng, 0.5))};
+      lists[i][0].existence = 0.2 + 0.7 * rng.uniform();
+      expected.push_back(information(lists[i][0].posterior));
+      odds.push_back(std::log(lists[i][0].existence / (1.0 - lists[i][0].existence)));
+      clusters.members.push_back({i, 0, false});
+    }
+    clusters.start.push_back(holders);
+    clusters.keys = {{-1, 0}};
+    CommGraph graph;
+    graph.build(std::vector<Vec2>(n, Vec2::Zero()), kInf);
+    ASSERT_TRUE(graph.complete());
+    FusionConfig config;
+    config.rounds = rounds;
+    FusionDiagnostics diagnostics;
+    InformationConsensus<4>().run(lists, clusters, graph, config, diagnostics);
+    roundsByDefinition(expected, odds, n, rounds);
+    for (int i = 0; i < holders; ++i) {
+      const InfoPair got = information(lists[i][0].posterior);
+      EXPECT_LT((got.omega - expected[i].omega).norm() / expected[i].omega.norm(), 1e-10)
+          << holders << " holders, agent " << i;
+      EXPECT_LT((got.q - expected[i].q).norm() / expected[i].q.norm(), 1e-10) << i;
+      EXPECT_NEAR(std::log(lists[i][0].existence / (1.0 - lists[i][0].existence)), odds[i], 1e-10)
+          << i;
+    }
+    EXPECT_EQ(diagnostics.numerical_failures, 0);
+  }
+}
+
+}  // namespace
+}  // namespace canopy::agents::fusion
