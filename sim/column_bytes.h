@@ -33,6 +33,7 @@ class ColumnOut {
     bits(std::bit_cast<std::uint64_t>(v) ^ std::bit_cast<std::uint64_t>(previous));
   }
   std::string& bytes() { return bytes_; }
+  std::size_t size() const { return bytes_.size(); }
 
  private:
   void bits(std::uint64_t b) {

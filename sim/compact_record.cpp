@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "core/printable.h"
@@ -201,24 +202,7 @@ std::string CompactRecordReader::readAt(std::uint64_t offset, std::size_t bytes)
   return out;
 }
 
-std::string CompactRecordReader::linesOf(const std::string& columns,
-                                         const std::string& where) const {
-  std::string lines;
-  try {
-    StepColumnDecoder steps(columns);
-    RecordLineWriter writer(steps.labels());
-    StepRecord step;
-    while (steps.next(step)) {
-      writer.write(step, lines);
-      lines += '\n';
-    }
-  } catch (const std::exception& e) {
-    fail(where, std::string("a block of steps (") + e.what() + ")");
-  }
-  return lines;
-}
-
-std::string CompactRecordReader::decode(std::size_t i) const {
+std::string CompactRecordReader::inflate(std::size_t i) const {
   const RecordBlock& b = blocks_.at(i);
   const std::string where = "frame " + std::to_string(i);
   const std::string frame = readAt(b.offset, b.compressed);
@@ -226,12 +210,64 @@ std::string CompactRecordReader::decode(std::size_t i) const {
   if (size != b.decoded) fail(where, "a zstd frame of " + std::to_string(b.decoded) + " bytes");
   if (ZSTD_findFrameCompressedSize(frame.data(), frame.size()) != frame.size())
     fail(where, "one zstd frame of " + std::to_string(b.compressed) + " bytes");
-  std::string text(b.decoded, '\0');
-  const std::size_t n = ZSTD_decompress(text.data(), text.size(), frame.data(), frame.size());
+  std::string bytes(b.decoded, '\0');
+  const std::size_t n = ZSTD_decompress(bytes.data(), bytes.size(), frame.data(), frame.size());
   if (ZSTD_isError(n))
     fail(where, std::string("a valid zstd frame (") + ZSTD_getErrorName(n) + ")");
-  if (n != text.size()) fail(where, std::to_string(b.decoded) + " bytes");
-  if (version_ == kStepsVersion) text = linesOf(text, where);
+  if (n != bytes.size()) fail(where, std::to_string(b.decoded) + " bytes");
+  return bytes;
+}
+
+void CompactRecordReader::eachStepLine(
+    std::size_t i, std::uint32_t from,
+    const std::function<bool(const std::string&)>& line_fn) const {
+  if (version_ != kStepsVersion) throw std::logic_error("eachStepLine: a record of lines");
+  const std::string where = "frame " + std::to_string(i);
+  const std::string columns = inflate(i);
+  std::uint32_t steps = 0;
+  std::optional<StepColumnDecoder> decoder;
+  std::optional<RecordLineWriter> writer;
+  StepRecord step;
+  std::string line;
+  // What the block's bytes make of a step: a malformed block names the frame. line_fn's own
+  // exceptions pass through as they are.
+  auto nextLine = [&]() {
+    try {
+      if (!decoder) {
+        decoder.emplace(columns);
+        writer.emplace(decoder->labels());
+      }
+      while (decoder->next(step)) {
+        if (steps++ < from) continue;  // decoded (the next step is coded against it), not printed
+        line.clear();
+        writer->write(step, line);
+        return true;
+      }
+      return false;
+    } catch (const std::exception& e) {
+      fail(where, std::string("a block of steps (") + e.what() + ")");
+    }
+  };
+  while (nextLine()) {
+    if (!line_fn(line)) return;
+  }
+  if (steps != blocks_[i].lines)
+    fail(where, std::to_string(blocks_[i].lines) + " steps, as its index says");
+}
+
+std::string CompactRecordReader::decode(std::size_t i) const {
+  const RecordBlock& b = blocks_.at(i);
+  const std::string where = "frame " + std::to_string(i);
+  std::string text;
+  if (version_ == kStepsVersion) {
+    eachStepLine(i, 0, [&text](const std::string& line) {
+      text += line;
+      text += '\n';
+      return true;
+    });
+    return text;
+  }
+  text = inflate(i);
   if (text.empty() || text.back() != '\n') fail(where, "whole lines");
   std::size_t newlines = 0;
   for (const char c : text) newlines += c == '\n' ? 1 : 0;

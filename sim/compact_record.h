@@ -101,11 +101,16 @@ class CompactRecordReader {
   std::uint32_t version() const { return version_; }
   /// The text of block `i` (its whole lines, each ending in '\n'), checked against the index.
   std::string decode(std::size_t i) const;
+  /// Version 2: line_fn(line) (without '\n') for each step of block i from its step `from`
+  /// (0-based in the block) on, until it returns false; each step is formatted only when asked
+  /// for and the block is never held as text.
+  void eachStepLine(std::size_t i, std::uint32_t from,
+                    const std::function<bool(const std::string&)>& line_fn) const;
 
  private:
   [[noreturn]] void fail(const std::string& where, const std::string& expected) const;
   std::string readAt(std::uint64_t offset, std::size_t bytes) const;
-  std::string linesOf(const std::string& columns, const std::string& where) const;
+  std::string inflate(std::size_t i) const;  // block i's bytes, checked against the index
 
   // Closed by its own destructor, so also when the constructor throws (a member is destroyed
   // then, the reader is not).

@@ -42,7 +42,7 @@ class PreviousEntries {
 
 std::size_t StepColumnEncoder::bytes() const {
   std::size_t n = 0;
-  for (const ColumnOut& c : columns_) n += const_cast<ColumnOut&>(c).bytes().size();
+  for (const ColumnOut& c : columns_) n += c.size();
   return n;
 }
 
@@ -150,7 +150,7 @@ void StepColumnEncoder::truth(const StepRecord& record) {
     uavs_[i] = now;
     s.u(u.contacts.size());
     for (const world::BodyRef& r : u.contacts) {
-      s.u(static_cast<std::uint64_t>(r.kind));
+      s.i(static_cast<int>(r.kind));
       s.i(r.index);
     }
   }

@@ -44,6 +44,8 @@ class StepColumnEncoder {
   void add(const StepRecord& record);
   std::uint32_t steps() const { return steps_; }
   std::size_t bytes() const;
+  /// The open block's bytes in column c so far (before byte planes).
+  std::size_t columnBytes(StepColumn c) const { return columns_[c].size(); }
   /// Appends the open block's bytes to `out` and opens a new, empty block.
   void take(std::string& out);
 
