@@ -63,9 +63,9 @@ void StepColumnEncoder::add(const StepRecord& record) {
 // (a track's label, then its values XORed with entry j's).
 void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
   ColumnOut& s = columns_[kStructureColumn];
-  const agents::AgentBelief* before =
-      static_cast<std::size_t>(agent) < previous_.size() ? &previous_[static_cast<std::size_t>(agent)]
-                                                         : nullptr;
+  const agents::AgentBelief* before = static_cast<std::size_t>(agent) < previous_.size()
+                                          ? &previous_[static_cast<std::size_t>(agent)]
+                                          : nullptr;
   ColumnOut& map = columns_[kMapColumn];
   s.u(b.trees.size());
   PreviousEntries<agents::TreeEstimate> trees(before ? &before->trees : nullptr);
@@ -80,7 +80,8 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
         continue;
       }
       s.u(2 * ref + 2);
-      for (int k = 0; k < n; ++k) map.dx(v[static_cast<std::size_t>(k)], w[static_cast<std::size_t>(k)]);
+      for (int k = 0; k < n; ++k)
+        map.dx(v[static_cast<std::size_t>(k)], w[static_cast<std::size_t>(k)]);
       continue;
     }
     s.u(0);
@@ -132,8 +133,7 @@ void StepColumnEncoder::truth(const StepRecord& record) {
   targets_.resize(record.targets.size(), std::array<double, 4>{});
   for (std::size_t i = 0; i < record.targets.size(); ++i) {
     const TargetRecord& t = record.targets[i];
-    const std::array<double, 4> now{t.position.x(), t.position.y(), t.velocity.x(),
-                                    t.velocity.y()};
+    const std::array<double, 4> now{t.position.x(), t.position.y(), t.velocity.x(), t.velocity.y()};
     for (std::size_t k = 0; k < now.size(); ++k) c.dx(now[k], targets_[i][k]);
     targets_[i] = now;
   }
@@ -141,9 +141,9 @@ void StepColumnEncoder::truth(const StepRecord& record) {
   uavs_.resize(record.uavs.size(), std::array<double, 8>{});
   for (std::size_t i = 0; i < record.uavs.size(); ++i) {
     const UavRecord& u = record.uavs[i];
-    const std::array<double, 8> now{u.command.x(),  u.command.y(),  u.position.x(),
-                                    u.position.y(), u.velocity.x(), u.velocity.y(),
-                                    u.yaw,          u.altitude ? u.z : uavs_[i][7]};
+    const std::array<double, 8> now{
+        u.command.x(),  u.command.y(),  u.position.x(), u.position.y(),
+        u.velocity.x(), u.velocity.y(), u.yaw,          u.altitude ? u.z : uavs_[i][7]};
     for (std::size_t k = 0; k < 7; ++k) c.dx(now[k], uavs_[i][k]);
     s.u(u.altitude ? 1 : 0);
     if (u.altitude) c.dx(now[7], uavs_[i][7]);

@@ -7,10 +7,13 @@
 
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "sim/record_fields.h"
 #include "sim/record_line.h"
 
 namespace canopy::sim::step_columns_test {  // named: the sanitizer's unity build merges files
@@ -24,7 +27,8 @@ agents::TreeEstimate tree(int origin, int serial, double cx, int vertices = 0) {
   t.belief.x << cx, cx / 3, 1.25;
   t.belief.P << 0.5, 0.1, 0.0, 0.1, 0.4, 0.0, 0.0, 0.0, 0.01 * cx;
   t.outline.vertices = vertices;
-  for (int v = 0; v < vertices; ++v) t.outline.offsets[static_cast<std::size_t>(v)] = Vec2(v, -v * 0.5);
+  for (int v = 0; v < vertices; ++v)
+    t.outline.offsets[static_cast<std::size_t>(v)] = Vec2(v, -v * 0.5);
   return t;
 }
 
@@ -141,7 +145,7 @@ TEST(StepColumns, UnchangedEntriesAreReferencesChangedOnesXorTheirValues) {
   encoder.add(r);
   const std::size_t map = encoder.columnBytes(kMapColumn);
   const std::size_t tracks = encoder.columnBytes(kTrackColumn);
-  EXPECT_EQ(map, 2u * 9 * 8);   // two trees whole: 6 covariance + 3 mean values
+  EXPECT_EQ(map, 2u * 9 * 8);  // two trees whole: 6 covariance + 3 mean values
   EXPECT_EQ(tracks, 15u * 8);  // 10 + 4 + existence
   const std::size_t structure = encoder.columnBytes(kStructureColumn);
   encoder.add(r);  // nothing changed
@@ -160,6 +164,31 @@ TEST(StepColumns, UnchangedEntriesAreReferencesChangedOnesXorTheirValues) {
   for (int k = 0; k < 3; ++k) ASSERT_TRUE(decoder.next(out));
   EXPECT_EQ(out.beliefs[0].trees[1].belief.x(2), 1.5);
   EXPECT_EQ(out.beliefs[0].trees[0].belief.x(0), 5.0);
+}
+
+void keysOf(const nlohmann::json& value, const std::string& path, std::set<std::string>& out) {
+  if (value.is_object()) {
+    for (const auto& [key, child] : value.items()) {
+      const std::string at = path.empty() ? key : path + "." + key;
+      out.insert(at);
+      keysOf(child, at, out);
+    }
+  } else if (value.is_array()) {
+    for (const nlohmann::json& child : value) keysOf(child, path + "[]", out);
+  }
+}
+
+// The record's field table (record_fields.h) names exactly the keys the line writer writes: a
+// step with every optional part (outline, contacts, altitude, tree observations, a plan).
+TEST(StepColumns, TheFieldTableIsWhatTheLineWriterWrites) {
+  std::set<std::string> written, described;
+  for (int k = 0; k < 2; ++k)
+    keysOf(nlohmann::json::parse(recordLine(kLabels, step(k))), "", written);
+  for (const RecordField& f : recordFields()) {
+    EXPECT_TRUE(described.insert(f.path).second) << f.path << " twice";
+    EXPECT_TRUE(f.type[0] != '\0' && f.packing[0] != '\0' && f.meaning[0] != '\0') << f.path;
+  }
+  EXPECT_EQ(written, described);
 }
 
 TEST(StepColumns, BytePlanesGoBothWays) {
