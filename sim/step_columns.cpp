@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "sim/json_line.h"
 #include "sim/step_values.h"
 
 namespace canopy::sim {
@@ -39,6 +40,16 @@ class PreviousEntries {
 };
 
 }  // namespace
+
+void StepColumnEncoder::label(sensing::LabelId id) {
+  const auto at = static_cast<std::size_t>(id);
+  if (written_.size() <= at) written_.resize(at + 1, false);
+  if (!written_[at]) {  // as the line writer does: a label dump() refuses fails the run here
+    JsonLine::escaped(labels_.at(at));
+    written_[at] = true;
+  }
+  columns_[kStructureColumn].i(id);
+}
 
 std::size_t StepColumnEncoder::bytes() const {
   std::size_t n = 0;
@@ -112,14 +123,14 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
         continue;
       }
       s.u(2 * ref + 2);
-      s.i(t.label);
+      label(t.label);
       for (std::size_t k = 0; k < x.size(); ++k) track.dx(x[k], y[k]);
       continue;
     }
     s.u(0);
     s.i(t.key.origin);
     s.i(t.key.serial);
-    s.i(t.label);
+    label(t.label);
     for (const double value : x) track.d(value);
   }
 }
@@ -174,7 +185,7 @@ void StepColumnEncoder::scans(const StepRecord& record) {
     list(scan.visible);
     s.u(scan.observations.size());
     for (const sensing::Observation& o : scan.observations) {
-      s.i(o.label);
+      label(o.label);
       s.i(o.truth);
       c.d(o.R(0, 0));
       c.d(o.R(0, 1));

@@ -54,8 +54,10 @@ class StepColumnEncoder {
   void truth(const StepRecord& record);
   void scans(const StepRecord& record);
   void plans(const StepRecord& record);
+  void label(sensing::LabelId id);
 
   std::vector<std::string> labels_;
+  std::vector<bool> written_;  // by LabelId: checked as dump() would (the first time written)
   std::array<ColumnOut, kColumnCount> columns_;
   std::uint32_t steps_ = 0;
   // The step before, in this block.

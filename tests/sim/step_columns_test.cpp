@@ -191,6 +191,19 @@ TEST(StepColumns, TheFieldTableIsWhatTheLineWriterWrites) {
   EXPECT_EQ(written, described);
 }
 
+// A label that JSON cannot hold (invalid UTF-8) fails the step that first writes it, in either
+// form.
+TEST(StepColumns, ALabelJsonCannotHoldFailsTheStepThatWritesIt) {
+  const std::vector<std::string> labels{"tree", "bad \xff"};
+  StepRecord r;
+  r.beliefs.resize(1);
+  StepColumnEncoder encoder(labels);
+  EXPECT_NO_THROW(encoder.add(r));
+  r.beliefs[0].tracks = {track(0, 1, 1.0, 1)};
+  EXPECT_ANY_THROW(recordLine(labels, r));
+  EXPECT_ANY_THROW(encoder.add(r));
+}
+
 TEST(StepColumns, BytePlanesGoBothWays) {
   const std::string values = "ABCDEFGHabcdefgh12345678xyz";  // three values and a tail
   std::string planes;
