@@ -184,7 +184,9 @@ void StepColumnDecoder::scans(StepRecord& record) {
     values.clear();
     long long last = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      last += s.i();
+      const std::int64_t difference = s.i();  // of two ints: within ±2³²
+      if (difference < 2 * kIntMin || difference > 2 * kIntMax) s.fail("an index out of range");
+      last += difference;
       if (last < kIntMin || last > kIntMax) s.fail("an index out of range");
       values.push_back(static_cast<int>(last));
     }
