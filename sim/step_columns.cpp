@@ -42,10 +42,10 @@ class PreviousEntries {
 }  // namespace
 
 void StepColumnEncoder::label(sensing::LabelId id) {
+  const std::string& name = labels_.at(static_cast<std::size_t>(id));  // out_of_range if not one
   const auto at = static_cast<std::size_t>(id);
-  if (written_.size() <= at) written_.resize(at + 1, false);
   if (!written_[at]) {  // as the line writer does: a label dump() refuses fails the run here
-    JsonLine::escaped(labels_.at(at));
+    JsonLine::escaped(name);
     written_[at] = true;
   }
   columns_[kStructureColumn].i(id);

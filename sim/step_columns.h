@@ -39,7 +39,8 @@ enum StepColumn : int {
 
 class StepColumnEncoder {
  public:
-  explicit StepColumnEncoder(std::vector<std::string> labels) : labels_(std::move(labels)) {}
+  explicit StepColumnEncoder(std::vector<std::string> labels)
+      : labels_(std::move(labels)), written_(labels_.size(), false) {}
   /// Appends `record` to the open block.
   void add(const StepRecord& record);
   std::uint32_t steps() const { return steps_; }
