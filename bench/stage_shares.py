@@ -15,7 +15,7 @@ STAGES = [  # first match wins
     ("tracking", r"agents::tracking|agents::Agent::|OcclusionMap"),
     ("world+sensing", r"box2d|b2[A-Z]|sensing::|world::|sim::Simulation::sense|readTruth"),
     ("record", r"sim::JsonLine|RecordLineWriter|sim::Recorder|DoubleTextCache|writeBelief|metrics::|"
-               r"CompactRecordWriter|ZSTD_|libzstd|"
+               r"CompactRecordWriter|StepColumnEncoder|toPlanes|ZSTD_|libzstd|"
                r"write|memmove|memcpy|copy_"),
 ]
 

@@ -12,6 +12,8 @@
 #include "render/coverage_check.h"
 #include "replay/run_folder.h"
 #include "sim/compact_record.h"
+#include "sim/record_line.h"
+#include "sim/step_columns.h"
 #include "sim/record_reader.h"
 #include "sim/run.h"
 #include "spec/error.h"
@@ -188,6 +190,18 @@ bool readRecordInput(std::string_view data) {
   // The bytes themselves as a compact record: refused or read, never a crash.
   writeFile(dir / "raw.jsonl.zst", data);
   stepsRead(dir / "raw.jsonl.zst");
+  // The bytes as a block of step columns (index version 2's content): decoded or refused.
+  try {
+    sim::StepColumnDecoder steps(data);
+    sim::RecordLineWriter writer(steps.labels());
+    sim::StepRecord step;
+    std::string line;
+    while (steps.next(step)) {
+      line.clear();
+      writer.write(step, line);
+    }
+  } catch (const std::exception&) {
+  }
   return plain >= 0;
 }
 

@@ -7,9 +7,12 @@
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "core/printable.h"
+#include "sim/record_line.h"
+#include "sim/step_columns.h"
 #include "spec/error.h"
 #include "spec/result_lines.h"
 
@@ -18,7 +21,8 @@ namespace {
 
 constexpr std::uint32_t kSkippableMagic = 0x184D2A5C;
 constexpr std::uint32_t kIndexMagic = 0x49524E43;  // "CNRI"
-constexpr std::uint32_t kIndexVersion = 1;
+constexpr std::uint32_t kLinesVersion = 1;
+constexpr std::uint32_t kStepsVersion = 2;
 constexpr std::size_t kEntryBytes = 24;
 constexpr std::size_t kTrailerBytes = 12;
 constexpr std::size_t kHeaderBytes = 8;
@@ -58,16 +62,31 @@ CompactRecordWriter::CompactRecordWriter(Sink sink, BlockSize block)
   ZSTD_CCtx_setParameter(zstd_->cctx, ZSTD_c_enableLongDistanceMatching, 1);
 }
 
+CompactRecordWriter::CompactRecordWriter(Sink sink, BlockSize block,
+                                         std::vector<std::string> labels)
+    : CompactRecordWriter(std::move(sink), block) {
+  steps_ = std::make_unique<StepColumnEncoder>(std::move(labels));
+}
+
 CompactRecordWriter::~CompactRecordWriter() = default;
 
 void CompactRecordWriter::append(std::string_view line) {
+  if (steps_) throw std::logic_error("a compact record of steps takes steps, not lines");
   text_.append(line);
   ++lines_;
   if (text_.size() >= block_size_.bytes || lines_ >= block_size_.lines) closeBlock();
 }
 
+void CompactRecordWriter::append(const StepRecord& step) {
+  if (!steps_) throw std::logic_error("a compact record of lines takes lines, not steps");
+  steps_->add(step);
+  ++lines_;
+  if (steps_->bytes() >= block_size_.bytes || lines_ >= block_size_.lines) closeBlock();
+}
+
 void CompactRecordWriter::closeBlock() {
   if (lines_ == 0) return;
+  if (steps_) steps_->take(text_);
   if (text_.size() > kMaxBlockBytes) throw std::length_error("a record block over 512 MiB");
   compressed_.resize(ZSTD_compressBound(text_.size()));
   const std::size_t n = ZSTD_compress2(zstd_->cctx, compressed_.data(), compressed_.size(),
@@ -96,7 +115,7 @@ void CompactRecordWriter::finish() {
   }
   put32(footer, static_cast<std::uint32_t>(index_.size()));
   put32(footer, kIndexMagic);
-  put32(footer, kIndexVersion);
+  put32(footer, steps_ ? kStepsVersion : kLinesVersion);
   sink_(footer);
 }
 
@@ -127,8 +146,9 @@ CompactRecordReader::CompactRecordReader(const std::filesystem::path& path) : pa
   size_ = static_cast<std::uint64_t>(st.st_size);
   if (size_ < kHeaderBytes + kTrailerBytes) fail("", "a step index at its end (too short)");
   const std::string trailer = readAt(size_ - kTrailerBytes, kTrailerBytes);
-  if (get32(trailer, 4) != kIndexMagic || get32(trailer, 8) != kIndexVersion)
-    fail("index", "canopy's step index (version 1) as its last 12 bytes");
+  version_ = get32(trailer, 8);
+  if (get32(trailer, 4) != kIndexMagic || (version_ != kLinesVersion && version_ != kStepsVersion))
+    fail("index", "canopy's step index (version 1 or 2) as its last 12 bytes");
   const std::uint64_t count = get32(trailer, 0);
   const std::uint64_t index_bytes = kHeaderBytes + kEntryBytes * count + kTrailerBytes;
   if (index_bytes > size_) fail("index", "at most as many entries as the file has room for");
@@ -182,7 +202,7 @@ std::string CompactRecordReader::readAt(std::uint64_t offset, std::size_t bytes)
   return out;
 }
 
-std::string CompactRecordReader::decode(std::size_t i) const {
+std::string CompactRecordReader::inflate(std::size_t i) const {
   const RecordBlock& b = blocks_.at(i);
   const std::string where = "frame " + std::to_string(i);
   const std::string frame = readAt(b.offset, b.compressed);
@@ -190,12 +210,65 @@ std::string CompactRecordReader::decode(std::size_t i) const {
   if (size != b.decoded) fail(where, "a zstd frame of " + std::to_string(b.decoded) + " bytes");
   if (ZSTD_findFrameCompressedSize(frame.data(), frame.size()) != frame.size())
     fail(where, "one zstd frame of " + std::to_string(b.compressed) + " bytes");
-  std::string text(b.decoded, '\0');
-  const std::size_t n = ZSTD_decompress(text.data(), text.size(), frame.data(), frame.size());
+  std::string bytes(b.decoded, '\0');
+  const std::size_t n = ZSTD_decompress(bytes.data(), bytes.size(), frame.data(), frame.size());
   if (ZSTD_isError(n))
     fail(where, std::string("a valid zstd frame (") + ZSTD_getErrorName(n) + ")");
-  if (n != text.size() || text.back() != '\n')
-    fail(where, std::to_string(b.decoded) + " bytes of whole lines");
+  if (n != bytes.size()) fail(where, std::to_string(b.decoded) + " bytes");
+  return bytes;
+}
+
+void CompactRecordReader::eachStepLine(
+    std::size_t i, std::uint32_t from,
+    const std::function<bool(const std::string&)>& line_fn) const {
+  if (version_ != kStepsVersion) throw std::logic_error("eachStepLine: a record of lines");
+  const std::string where = "frame " + std::to_string(i);
+  const std::string columns = inflate(i);
+  std::uint32_t steps = 0;
+  std::optional<StepColumnDecoder> decoder;
+  std::optional<RecordLineWriter> writer;
+  StepRecord step;
+  std::string line;
+  // What the block's bytes make of a step: a malformed block names the frame. line_fn's own
+  // exceptions pass through as they are.
+  auto nextLine = [&]() {
+    try {
+      if (!decoder) {
+        decoder.emplace(columns);
+        writer.emplace(decoder->labels());
+      }
+      while (decoder->next(step)) {
+        if (steps++ < from) continue;  // decoded (the next step is coded against it), not printed
+        line.clear();
+        writer->write(step, line);
+        return true;
+      }
+      return false;
+    } catch (const std::exception& e) {
+      fail(where, std::string("a block of steps (") + e.what() + ")");
+    }
+  };
+  while (nextLine()) {
+    if (!line_fn(line)) return;
+  }
+  if (steps != blocks_[i].lines)
+    fail(where, std::to_string(blocks_[i].lines) + " steps, as its index says");
+}
+
+std::string CompactRecordReader::decode(std::size_t i) const {
+  const RecordBlock& b = blocks_.at(i);
+  const std::string where = "frame " + std::to_string(i);
+  std::string text;
+  if (version_ == kStepsVersion) {
+    eachStepLine(i, 0, [&text](const std::string& line) {
+      text += line;
+      text += '\n';
+      return true;
+    });
+    return text;
+  }
+  text = inflate(i);
+  if (text.empty() || text.back() != '\n') fail(where, "whole lines");
   std::size_t newlines = 0;
   for (const char c : text) newlines += c == '\n' ? 1 : 0;
   if (newlines != b.lines) fail(where, std::to_string(b.lines) + " lines, as its index says");

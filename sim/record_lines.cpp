@@ -61,7 +61,20 @@ void forEachRecordLine(const std::filesystem::path& path, const LineRange& range
       number += static_cast<int>(b.lines);
       continue;
     }
-    eachLine(reader.decode(i), number, b.first_line, range, line_fn);
+    if (reader.version() == 1) {
+      eachLine(reader.decode(i), number, b.first_line, range, line_fn);
+      continue;
+    }
+    // Version 2: one line per step, none blank.
+    const std::uint64_t skip = std::max(range.first, std::uint64_t{b.first_line}) - b.first_line;
+    number += static_cast<int>(skip);
+    std::uint64_t position = b.first_line + skip;
+    reader.eachStepLine(i, static_cast<std::uint32_t>(skip), [&](const std::string& line) {
+      if (position >= range.end) return false;
+      line_fn(line, ++number);
+      ++position;
+      return true;
+    });
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/output_file.h"
 #include "sim/compact_record.h"
+#include "sim/record_line.h"
 #include "sim/record_lines.h"
 #include "sim/step_observer.h"
 #include "spec/scenario_spec.h"
@@ -41,8 +42,5 @@ class Recorder final : public StepObserver {
   std::unique_ptr<CompactRecordWriter> compact_;  // the compact form's, else none
   std::string line_;
 };
-
-/// One step as a JSON line (without the newline); labels: the scenario's, by LabelId.
-std::string recordLine(const std::vector<std::string>& labels, const StepRecord& record);
 
 }  // namespace canopy::sim

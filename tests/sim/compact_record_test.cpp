@@ -1,7 +1,8 @@
 // The compact record (record.jsonl.zst) against the plain one: one run writes both (a second
-// Recorder in --record jsonl beside the run's own compact one), and the compact form decoded, by
-// canopy's reader and by zstd's own streaming decoder that knows nothing of the index, is the
-// plain file byte for byte; a step range decodes only its blocks; broken files are errors that
+// Recorder in --record jsonl beside the run's own compact one, of steps: index version 2), and
+// the compact form decoded by canopy's reader is the plain file byte for byte; the same lines as
+// a version-1 file (lines in zstd frames) decode alike, also by zstd's own streaming decoder that
+// knows nothing of the index; a step range decodes only its blocks; broken files are errors that
 // name the file.
 #include "sim/compact_record.h"
 
@@ -106,9 +107,18 @@ TEST(CompactRecord, DecodesToThePlainLinesOfThePaperScenariosAndMixedTeam) {
     const std::string bytes = slurp(both.compact);
     ASSERT_FALSE(both.plain.empty());
     EXPECT_EQ(linesOf(both.compact), both.plain);
-    EXPECT_EQ(zstdDecodeAll(bytes), both.plain);
     EXPECT_LT(bytes.size(), both.plain.size() / 4);  // compressed, not copied
     const CompactRecordReader reader(both.compact);
+    EXPECT_EQ(reader.version(), 2u);
+    // The same lines as a version-1 file: zstd alone gives them back.
+    const std::string lines = compactRecordOf(both.plain, {std::size_t{1} << 20, 16});
+    EXPECT_EQ(zstdDecodeAll(lines), both.plain);
+    {
+      const fs::path v1 = both.dir / "v1.zst";
+      std::ofstream(v1, std::ios::binary) << lines;
+      EXPECT_EQ(CompactRecordReader(v1).version(), 1u);
+      EXPECT_EQ(linesOf(v1), both.plain);
+    }
     const auto steps =
         static_cast<std::uint64_t>(std::count(both.plain.begin(), both.plain.end(), '\n'));
     EXPECT_EQ(reader.lines(), steps);

@@ -1,15 +1,17 @@
-// docs/output-formats.md names every key a run writes to record.jsonl and summary.json, and
+// docs/output-formats.md names every key a run writes to record.jsonl and summary.json, its
+// record table is what `canopy schema --record-markdown` prints today, and
 // docs/scenario-reference.md is what `canopy schema --markdown` prints today.
-#include <algorithm>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
 #include "core/text_file.h"
+#include "sim/record_fields.h"
 #include "sim/run.h"
 #include "spec/loader.h"
 #include "spec/schema.h"
@@ -62,6 +64,18 @@ TEST(OutputFormats, EveryKeyARunWritesIsDocumented) {
   }
 }
 
+TEST(OutputFormats, TheRecordTableIsTheFieldTables) {
+  const std::string page = readTextFile(kDocs / "output-formats.md").value();
+  const std::size_t begin = page.find(kRecordFieldsBegin);
+  const std::size_t end = page.find(kRecordFieldsEnd);
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(page.substr(begin, end + std::string(kRecordFieldsEnd).size() + 1 - begin),
+            recordFieldsMarkdown())
+      << "regenerate the part of docs/output-formats.md between its markers with "
+         "build/release/app/canopy schema --record-markdown";
+}
+
 TEST(ScenarioReference, TheCheckedInPageIsCurrent) {
   EXPECT_EQ(readTextFile(kDocs / "scenario-reference.md").value_or(""),
             spec::scenarioReferenceMarkdown())
@@ -112,8 +126,9 @@ TEST(ScenarioReference, SchemaCarriesTypesRangesDefaultsAndUnits) {
   EXPECT_EQ(fov["oneOf"][1]["required"], Json({"radius"}));
   EXPECT_EQ(fov["oneOf"][1]["additionalProperties"], false);
   // A numeric yaw or the one spelling "velocity".
-  EXPECT_EQ(sorted(schema["properties"]["uavs"]["items"]["properties"]["yaw"]["anyOf"]),
-            sorted(Json::parse(R"([{"type": "string", "enum": ["velocity"]}, {"type": "number"}])")));
+  EXPECT_EQ(
+      sorted(schema["properties"]["uavs"]["items"]["properties"]["yaw"]["anyOf"]),
+      sorted(Json::parse(R"([{"type": "string", "enum": ["velocity"]}, {"type": "number"}])")));
 }
 
 }  // namespace
