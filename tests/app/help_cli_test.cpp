@@ -147,6 +147,7 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
                                                       {"I", "0"},
                                                       {"A:B", "0:2"},
                                                       {"auto|jsonl|compact", "jsonl"},
+                                                      {"png|svg|pdf", "svg"},
                                                       {"NAME", "x"},
                                                       {"GOLDEN.csv", "g.csv"},
                                                       {"FILE", "page.html"},
