@@ -93,8 +93,10 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
   if (decision_observer_ && (config_.algorithm == PlannerAlgorithm::sma ||
                              config_.algorithm == PlannerAlgorithm::dec_pomdp))
     reportDecisions(out, uavs, views);
-  flown_ = out.plans;
-  flown_epoch_ = epoch;
+  if (decision_observer_) {
+    flown_ = out.plans;
+    flown_epoch_ = epoch;
+  }
   return out;
 }
 

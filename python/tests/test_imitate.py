@@ -47,6 +47,17 @@ def test_collect_writes_the_documented_format(cli, tmp_path):
     assert [x["seed"] for x in decisions[::26]] == [7, 8]
 
 
+def test_collect_from_dec_pomdp(cli, tmp_path):
+    out = tmp_path / "d.jsonl"
+    assert imitate.collect("trajectory_handover", out, overrides=["planner.algorithm=dec_pomdp",
+                                                                  "planner.horizon=2"]) == 26
+    header, decisions = imitate.read_demonstrations(out)
+    assert header["flown"] == header["expert"] == "dec_pomdp"
+    # Epoch 0: nothing flown yet, the teammate's intention is hovering; later its flown plan.
+    assert decisions[0]["mates"][0][2:6] == [0, 0, 0, 0]
+    assert any(d["mates"][0][2:4] != [0, 0] for d in decisions[2:])
+
+
 def random_observations(rng, n):
     out = []
     for k in range(n):
