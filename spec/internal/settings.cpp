@@ -190,7 +190,8 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.policy = nullptr;
   if (auto policy = reader.optional("policy")) {
     const ReferencedFile file = readReferencedFile(*policy, "policy file", libraryDir());
-    if (p.algorithm == agents::PlannerAlgorithm::learned) p.policy = parsePolicy(file.text, file.shown);
+    if (p.algorithm == agents::PlannerAlgorithm::learned)
+      p.policy = parsePolicy(file.text, file.shown);
   } else if (p.algorithm == agents::PlannerAlgorithm::learned) {
     std::string name = "policies/" + spec.name + ".json";
     std::error_code error;
