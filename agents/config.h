@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/enum_names.h"
@@ -86,12 +88,18 @@ struct FusionConfig {
   double interest_range = std::numeric_limits<double>::infinity();
 };
 
-enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized };
-inline constexpr EnumNames<PlannerAlgorithm, 4> kPlannerAlgorithmNames{{
+namespace planning {
+struct PolicyNetwork;  // agents/planning/policy_network.h
+}
+
+// learned: each agent flies a network trained to imitate SMA-NBO (issue 54, docs/imitation.md).
+enum class PlannerAlgorithm { none, sma, dec_pomdp, centralized, learned };
+inline constexpr EnumNames<PlannerAlgorithm, 5> kPlannerAlgorithmNames{{
     {PlannerAlgorithm::none, "none"},
     {PlannerAlgorithm::sma, "sma"},
     {PlannerAlgorithm::dec_pomdp, "dec_pomdp"},
     {PlannerAlgorithm::centralized, "centralized"},
+    {PlannerAlgorithm::learned, "learned"},
 }};
 enum class OcclusionMapMode { a_priori, dynamic, none };
 inline constexpr EnumNames<OcclusionMapMode, 3> kOcclusionMapModeNames{{
@@ -171,6 +179,8 @@ struct PlannerConfig {
   // walls of its map, and the sum of the radii plus this from another robot's intended pose
   // (docs/design-notes.md, "Plans that keep clear").
   double clearance = 0.2;
+  // learned: the network (read from planner.policy by the loader; null for other algorithms).
+  std::shared_ptr<const planning::PolicyNetwork> policy;
 };
 
 /// Simulation steps between plan instants: replan_period / dt, rounded, at least 1.

@@ -79,6 +79,11 @@ class Team {
   void observeJointProblems(planning::TeamPlanner::JointProblemObserver observer) {
     planner_.observeJointProblems(std::move(observer));
   }
+  /// TeamPlanner::observeDecisions and labelExpert: demonstrations (canopy imitate collect).
+  void observeDecisions(planning::TeamPlanner::DecisionObserver observer, bool label_expert) {
+    planner_.observeDecisions(std::move(observer));
+    planner_.labelExpert(label_expert);
+  }
 
  private:
   TeamConfig config_;

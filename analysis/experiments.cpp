@@ -14,14 +14,16 @@ const std::vector<DecisionPeriod>& decisionPeriods() {
 std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
   // TH and RA: the planners × H. Dec-POMDP runs three times: with its default joint search (block
   // coordinate descent over the joint plan), with the paper's one (global-best) swarm over the
-  // joint plan and with the local-best (ring) swarm (docs/design-notes.md), reported side by side.
+  // joint plan and with the local-best (ring) swarm (docs/design-notes.md), reported side by side;
+  // the learned planner (issue 54) flies the scenario's shipped policy beside them.
   // JE and OS: SMA-NBO, H = 5, × the occlusion map.
   const std::string planners =
       R"({"name": "planner",)"
-      R"( "values": ["sma", "dec_pomdp", "dec_pomdp_global", "dec_pomdp_local"],)"
+      R"( "values": ["sma", "dec_pomdp", "dec_pomdp_global", "dec_pomdp_local", "learned"],)"
       R"( "set": [{"planner.algorithm": "sma"}, {"planner.algorithm": "dec_pomdp"},)"
       R"({"planner.algorithm": "dec_pomdp", "planner.joint_search": "global_best"},)"
-      R"({"planner.algorithm": "dec_pomdp", "planner.joint_search": "local_best"}]},)"
+      R"({"planner.algorithm": "dec_pomdp", "planner.joint_search": "local_best"},)"
+      R"({"planner.algorithm": "learned"}]},)"
       R"({"path": "planner.horizon", "values": [1, 5]})";
   // JE and OS: the maps × the decision period, every 1 s (algorithms.md) and at every 0.2 s
   // step with 1 s actions (the paper's "a plan at every time step"; docs/design-notes.md).
@@ -81,6 +83,15 @@ const std::vector<PaperOwnership>& paperOwnership() {
       {"resource_allocation", "sma", 5, std::nullopt, 0.5, "about half reach M*"},
       {"resource_allocation", "dec_pomdp", 1, std::nullopt, 0.05, ""},
       {"resource_allocation", "sma", 1, std::nullopt, 0.125, ""},
+      // Not the paper's: the learned planner imitating SMA-NBO (issue 54, docs/imitation.md).
+      {"trajectory_handover", "learned", 5, std::nullopt, std::nullopt,
+       "learned policy (not in the paper), trained at H = 5"},
+      {"trajectory_handover", "learned", 1, std::nullopt, std::nullopt,
+       "learned policy (not in the paper), trained at H = 5"},
+      {"resource_allocation", "learned", 5, std::nullopt, std::nullopt,
+       "learned policy (not in the paper), trained at H = 5"},
+      {"resource_allocation", "learned", 1, std::nullopt, std::nullopt,
+       "learned policy (not in the paper), trained at H = 5"},
   };
   return table;
 }

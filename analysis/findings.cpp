@@ -47,6 +47,8 @@ std::vector<HorizonCase> horizonCases(const std::vector<ExperimentResult>& resul
     const ExperimentResult* r = findExperiment(results, scenario);
     if (!r) continue;
     for (const PlannerVariant& planner : kPlanners) {
+      // The paper's claim is about its planners; the learned one is reported beside them only.
+      if (std::string(planner.algorithm) == "learned") continue;
       const ConfigStatistics* h1 =
           findConfig(*r, "planner", planner.axis_value, "planner.horizon", "1");
       const ConfigStatistics* h5 =

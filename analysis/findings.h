@@ -132,6 +132,7 @@ inline constexpr PlannerVariant kPlanners[] = {
     {"dec_pomdp", "dec_pomdp", "Dec-POMDP"},
     {"dec_pomdp_global", "dec_pomdp", "Dec-POMDP, the paper's one swarm"},
     {"dec_pomdp_local", "dec_pomdp", "Dec-POMDP, local-best swarm"},
+    {"learned", "learned", "learned (imitates SMA-NBO)"},
 };
 
 }  // namespace canopy::analysis

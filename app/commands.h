@@ -52,6 +52,7 @@ std::unique_ptr<Command> makeForest(CLI::App& canopy);
 std::unique_ptr<Command> makeImport(CLI::App& canopy);
 std::unique_ptr<Command> makeSchema(CLI::App& canopy);
 std::unique_ptr<Command> makeList(CLI::App& canopy);
+std::unique_ptr<Command> makeImitate(CLI::App& canopy);
 
 /// `--size WxH` (px) on `command`, read into `size`.
 CLI::Option* addImageSize(CLI::App& command, std::optional<render::ImageSize>& size,

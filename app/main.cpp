@@ -30,6 +30,7 @@ std::vector<std::unique_ptr<Command>> makeCommands(CLI::App& canopy,
   commands.push_back(makeSweep(canopy));
   commands.push_back(makeAnalyze(canopy));
   commands.push_back(makeReproduce(canopy));
+  commands.push_back(makeImitate(canopy));
   commands.push_back(makeForest(canopy));
   commands.push_back(makeImport(canopy));
   commands.push_back(makeSchema(canopy));

@@ -71,6 +71,13 @@ class Simulation {
   void observeJointProblems(agents::planning::TeamPlanner::JointProblemObserver observer) {
     team_.observeJointProblems(std::move(observer));
   }
+  /// TeamPlanner::observeDecisions: every agent's decision as a demonstration, labelled by
+  /// SMA-NBO when the team flies a learned policy and label_expert is set; never changes the
+  /// run's flight (the labels draw only from streams the learned planner does not use).
+  void observeDecisions(agents::planning::TeamPlanner::DecisionObserver observer,
+                        bool label_expert) {
+    team_.observeDecisions(std::move(observer), label_expert);
+  }
   /// Steps between planning epochs (plan_period / dt).
   int stepsPerPlan() const { return steps_per_plan_; }
 

@@ -231,7 +231,10 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   work.fusion_units =
       steps * spec.fusion.rounds * uavs * within(spec.fusion.comm_range) * std::max(1.0, targets);
   const agents::PlannerConfig& p = spec.planner;
-  if (p.algorithm != agents::PlannerAlgorithm::none) {
+  if (p.algorithm == agents::PlannerAlgorithm::learned) {
+    // One network evaluation per agent and epoch over its tracks and teammates.
+    work.planning_units = (spec.duration / p.replan_period + 1.0) * uavs * (targets + uavs);
+  } else if (p.algorithm != agents::PlannerAlgorithm::none) {
     const double epochs = spec.duration / p.replan_period + 1.0;
     const double particles = static_cast<double>(p.pso.particles_per_step) * p.horizon;
     // R = H·Δ·v_max + footprint circumradius, the largest reach of a UAV over the horizon, and

@@ -195,7 +195,12 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"fusion.association_gate", "",
        "χ²₂ gate on the position Mahalanobis distance when matching tracks across agents"},
       {"planner", "", "nominal belief planning"},
-      {"planner.algorithm", "", "none (scripted paths), sma, dec_pomdp or centralized"},
+      {"planner.algorithm", "",
+       "none (scripted paths), sma, dec_pomdp, centralized or learned (a network imitating "
+       "SMA-NBO; docs/imitation.md)"},
+      {"planner.policy", "",
+       "learned: the policy file (docs/imitation.md); default: the scenario library's "
+       "policies/NAME.json for the scenario's name, else policies/trajectory_handover.json"},
       {"planner.horizon", "", "H, planned actions"},
       {"planner.plan_period", "s", "Δ, the length of each planned action"},
       {"planner.replan_period", "s",

@@ -65,6 +65,7 @@ FieldLog loggedFields() {
   std::sort(files.begin(), files.end());
   files.push_back(dir / "schema_probe.json");
   files.push_back(dir / "schema_probe_2uav.json");
+  files.push_back(dir / "schema_probe_learned.json");
   for (const std::filesystem::path& file : files) loadScenario(file.string(), options);
   return log;  // "" is the document itself
 }

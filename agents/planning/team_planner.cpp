@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "agents/planning/interaction.h"
+#include "agents/planning/policy_network.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -69,6 +70,7 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
     out.reports[i].agent = i;
     out.reports[i].plan = out.plans[i];
   }
+  if (decision_observer_) own_previous_ = own_;
   switch (config_.algorithm) {
     case PlannerAlgorithm::none:
       break;
@@ -85,8 +87,98 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
     case PlannerAlgorithm::centralized:
       planJoint(out, order_.front(), uavs, views[order_.front()]);
       break;
+    case PlannerAlgorithm::learned:
+      planLearned(out, uavs, views);
+      break;
+  }
+  if (decision_observer_ && (config_.algorithm == PlannerAlgorithm::sma ||
+                             config_.algorithm == PlannerAlgorithm::dec_pomdp))
+    reportDecisions(out, uavs, views);
+  if (decision_observer_) {
+    flown_ = out.plans;
+    flown_epoch_ = epoch;
   }
   return out;
+}
+
+void TeamPlanner::reportDecisions(const TeamPlan& out, std::span<const UavState> uavs,
+                                  std::span<const AgentView> views) {
+  const int n = static_cast<int>(uavs.size());
+  const int H = settings_.horizon;
+  std::vector<Plan> intentions(n);
+  for (const int i : order_) {
+    if (config_.algorithm == PlannerAlgorithm::sma) {
+      // The intentions its search held; its own entry: its previous plan, shifted.
+      intentions = out.reports[i].joint;
+      const IntentionMessage& own = own_previous_[i];
+      intentions[i] =
+          own.epoch < 0 ? hoverPlan(H) : shiftedPlan(own.plan, actionsSince(own.epoch, out.epoch), H);
+    } else {
+      for (int j = 0; j < n; ++j) {
+        intentions[j] = flown_epoch_ < 0
+                            ? hoverPlan(H)
+                            : shiftedPlan(flown_[j], actionsSince(flown_epoch_, out.epoch), H);
+      }
+    }
+    Decision d;
+    d.epoch = out.epoch;
+    d.agent = i;
+    d.observation = observe(i, uavs, views[i].tracks, views[i].map, intentions, H,
+                            settings_.period);
+    d.v_max = uavs[i].v_max;
+    d.expert = d.flown = out.plans[i].command();
+    decision_observer_(d);
+  }
+}
+
+void TeamPlanner::planLearned(TeamPlan& out, std::span<const UavState> uavs,
+                              std::span<const AgentView> views) {
+  if (!config_.policy) fail("the learned planner has no policy");
+  const int n = static_cast<int>(uavs.size());
+  const int H = settings_.horizon;
+  std::vector<IntentionLinks::Route> routes;
+  std::vector<Plan> intentions(n);
+  std::vector<int> epochs(n);
+  for (const int i : order_) {
+    links_.route(i, -1, routes);
+    for (int j = 0; j < n; ++j) {
+      const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
+      intentions[j] =
+          m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
+      epochs[j] = m.epoch;
+    }
+    const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
+    const Clock::time_point start = Clock::now();
+    Decision d;
+    d.observation = observe(i, uavs, views[i].tracks, views[i].map, intentions, H,
+                            settings_.period);
+    const Vec2 command = config_.policy->command(d.observation, uavs[i].v_max);
+    const double seconds = secondsSince(start);
+    Plan plan{std::vector<Vec2>(static_cast<std::size_t>(H), command), 0.0};
+    if (label_expert_ && decision_observer_) {
+      // DAgger's label: SMA-NBO's search for agent i against the same intentions, warm-started
+      // from its own previous plan.
+      const int self[] = {i};
+      const std::span<const Plan> warm = own_[i].epoch < 0
+                                             ? std::span<const Plan>()
+                                             : std::span<const Plan>(&intentions[i], 1);
+      const PlanSearch search =
+          optimizers_[i].optimise(problem, config_.pso, self, intentions, warm, rng_[i]);
+      d.epoch = out.epoch;
+      d.agent = i;
+      d.v_max = uavs[i].v_max;
+      d.expert = search.plans.front().command();
+      d.flown = command;
+      decision_observer_(d);
+    }
+    intentions[i] = plan;
+    epochs[i] = out.epoch;
+    out.plans[i] = plan;
+    out.reports[i] = AgentPlanReport{i, plan, intentions, epochs, 0.0, seconds, 0, 0};
+    out.messages.push_back(IntentionMessage{i, i, out.epoch, plan});
+    own_[i] = out.messages.back();
+    links_.post(routes, out.messages.back());
+  }
 }
 
 void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,

@@ -12,6 +12,7 @@
 #include "agents/occlusion_map.h"
 #include "agents/planning/intention_links.h"
 #include "agents/planning/nominal_cost.h"
+#include "agents/planning/observation.h"
 #include "agents/planning/plan.h"
 #include "agents/planning/plan_optimizer.h"
 #include "agents/planning/uav_state.h"
@@ -75,8 +76,31 @@ PlanSearch searchJointPlan(PlanOptimizer& optimizer, const PlanningProblem& prob
                            std::span<const Plan> warm, RandomStream& rng,
                            const SwarmShape& local = kLocalBest);
 
+/// One agent's decision as a demonstration (issue 54, docs/imitation.md): what it observed, what
+/// the expert chose there and what it flew. SMA-NBO: the observation is built from the intentions
+/// its search held, expert = flown. Dec-POMDP: from the teammates' plans flown since the previous
+/// epoch (shifted), as if published, expert = flown. Learned with labelling on: the learned team
+/// flies, and the expert is SMA-NBO's search for that agent against the same intentions
+/// (DAgger's labels), drawn from the agent's own "pso" stream (never used by the network).
+struct Decision {
+  int epoch = -1;
+  int agent = -1;
+  Observation observation;
+  double v_max = 0.0;  // m/s
+  Vec2 expert = Vec2::Zero();  // m/s
+  Vec2 flown = Vec2::Zero();   // m/s
+};
+
 class TeamPlanner {
  public:
+  /// Called once per agent per epoch, in planning order, after the epoch's plans are made (SMA,
+  /// Dec-POMDP; learned only with labelExpert(true)): the demonstrations of `canopy imitate
+  /// collect`. Never feeds back into what is flown.
+  using DecisionObserver = std::function<void(const Decision&)>;
+  void observeDecisions(DecisionObserver observer) { decision_observer_ = std::move(observer); }
+  /// Learned planning: also run SMA-NBO's search for every agent, to label its decision.
+  void labelExpert(bool on) { label_expert_ = on; }
+
   /// Called before every joint search (Dec-POMDP and centralised) with the epoch, the planning
   /// agent, its problem and its warm start (the previous joint plan shifted, or empty): a hook
   /// for tools that save planning states (bench/joint_search_gaps.cpp). Never feeds back.
@@ -122,6 +146,13 @@ class TeamPlanner {
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
                       std::span<const AgentView> views);
   void planJoint(TeamPlan& out, int planner, std::span<const UavState> uavs, const AgentView& view);
+  /// Learned: agents in `order` each evaluate the policy on their observation (the latest
+  /// intentions that reached them, with this epoch's of the agents before them), fly the command
+  /// for all H actions and publish that plan as SMA-NBO agents do.
+  void planLearned(TeamPlan& out, std::span<const UavState> uavs, std::span<const AgentView> views);
+  /// The demonstrations of an SMA or Dec-POMDP epoch (decision_observer_ set).
+  void reportDecisions(const TeamPlan& out, std::span<const UavState> uavs,
+                       std::span<const AgentView> views);
   /// Actions (of plan_period) elapsed from one epoch to a later one.
   double actionsSince(int earlier_epoch, int epoch) const;
   PlannerConfig config_;
@@ -136,6 +167,11 @@ class TeamPlanner {
   std::vector<int> last_joint_epoch_;          // per agent: the epoch of last_joint_
   std::vector<PlanOptimizer> optimizers_;     // per agent: its own buffers, whichever thread runs it
   JointProblemObserver joint_observer_;
+  DecisionObserver decision_observer_;
+  bool label_expert_ = false;
+  std::vector<IntentionMessage> own_previous_;  // own_ as the epoch began (decision reports)
+  std::vector<Plan> flown_;  // per UAV: the plan it applied at the previous epoch
+  int flown_epoch_ = -1;
   TaskPool* pool_ = nullptr;
   // planSequential's per-epoch scratch, by agent.
   std::vector<std::vector<IntentionLinks::Route>> routes_;  // where its message goes

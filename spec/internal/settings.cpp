@@ -1,9 +1,13 @@
 // Reading the settings sections: sensing, tracking, fusion, planner, analysis.
 #include <cmath>
+#include <filesystem>
 #include <set>
 #include <sstream>
 
+#include "spec/internal/referenced_file.h"
 #include "spec/internal/sections.h"
+#include "spec/loader.h"
+#include "spec/policy_file.h"
 
 namespace canopy::spec::internal {
 namespace {
@@ -182,6 +186,26 @@ void readPlanner(ObjectReader& root, ScenarioSpec& spec) {
   p.joint_search = reader.enumeration("joint_search", agents::kJointSearchNames, p.joint_search);
   p.joint_rounds = reader.integer("joint_rounds", p.joint_rounds, 1, 20);
   p.joint_blocks = reader.enumeration("joint_blocks", agents::kJointBlocksNames, p.joint_blocks);
+  // The learned planner's network: planner.policy, or the shipped policy of the scenario's name
+  // (policies/NAME.json in the scenario library), else the Trajectory Handover policy.
+  p.policy = nullptr;
+  if (auto policy = reader.optional("policy")) {
+    const ReferencedFile file = readReferencedFile(*policy, "policy file", libraryDir());
+    if (p.algorithm == agents::PlannerAlgorithm::learned)
+      p.policy = parsePolicy(file.text, file.shown);
+  } else if (p.algorithm == agents::PlannerAlgorithm::learned) {
+    std::string name = "policies/" + spec.name + ".json";
+    std::error_code error;
+    if (spec.name.empty() || spec.name.find('/') != std::string::npos ||
+        !std::filesystem::is_regular_file(libraryDir() / name, error))
+      name = "policies/trajectory_handover.json";
+    (*reader.field().out())["policy"] = name;
+    const Json value = name;
+    const Field field(value, reader.field().file(), reader.field().path() + ".policy", nullptr,
+                      reader.field().context());
+    const ReferencedFile file = readReferencedFile(field, "policy file", libraryDir());
+    p.policy = parsePolicy(file.text, file.shown);
+  }
   p.order.clear();
   if (auto order = reader.optional("order")) {
     const std::size_t n = spec.uavs.size();

@@ -130,7 +130,8 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
   }
   const std::set<std::string> commands = {"run",   "validate", "coverage",  "view",
                                           "record", "sweep",   "analyze",   "reproduce",
-                                          "forest", "import",  "schema",  "list"};
+                                          "forest", "import",  "schema",  "list",
+                                          "imitate"};
   std::set<std::string> in_readme;
   for (const auto& [command, options] : readme_options) in_readme.insert(command);
   EXPECT_EQ(in_readme, commands) << "README's tour lists other commands than canopy has";
@@ -171,7 +172,8 @@ TEST(HelpCli, EveryOptionInTheReadmeAndInHelpIsAcceptedByTheParser) {
     // forest and import refuse to parse without their required options.
     const std::string base = command == "forest"   ? "forest --aoi 0,0,10,10 --lambda 1 --radius 1"
                              : command == "import" ? "import x.geojson --out l.json"
-                                                   : command;
+                             : command == "imitate" ? "imitate collect"
+                                                    : command;
     for (const auto& [option, value] : options) {
       ASSERT_TRUE(value.empty() || samples.count(value)) << option << " " << value;
       const std::string args =

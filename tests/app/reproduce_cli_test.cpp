@@ -28,6 +28,11 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
               std::string::npos)
         << planner;
   }
+  // The learned planner's rows (issue 54) beside the paper's planners.
+  EXPECT_NE(report.find("| trajectory_handover | learned (imitates SMA-NBO) | 5 |"),
+            std::string::npos);
+  EXPECT_NE(report.find("| resource_allocation | learned (imitates SMA-NBO) | 1 |"),
+            std::string::npos);
   EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
   for (const char* scenario :
        {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
@@ -44,11 +49,11 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
     ++figures;
     at = end;
   }
-  // 16 Sankey diagrams (4 planners — SMA-NBO, Dec-POMDP with the paper's and the local-best joint
-  // search, centralised — × 2 horizons × 2), 2 coverage figures and 6 sensitivity maps
+  // 20 Sankey diagrams (5 planners — SMA-NBO, Dec-POMDP with the block, the paper's and the
+  // local-best joint search, learned — × 2 horizons × 2), 2 coverage figures and 6 sensitivity maps
   // (Resource Allocation; Joint Effect's occlusion × spacing per occlusion map, and its decision
   // period × footprint per map with a map).
-  EXPECT_EQ(figures, 24);
+  EXPECT_EQ(figures, 28);
   EXPECT_NE(report.find("| decisions every 0.2 s step | a_priori |"), std::string::npos);
 }
 
