@@ -7,13 +7,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "render/cairo_string.h"
+
 namespace canopy::analysis {
 namespace {
-
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 void setColour(cairo_t* cr, const Colour& c) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, c.alpha);
@@ -68,7 +65,8 @@ void draw(cairo_t* cr, const Figure& figure) {
 std::string toPdf(const Figure& figure) {
   std::string pdf;
   const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_pdf_surface_create_for_stream(append, &pdf, figure.width, figure.height),
+      cairo_pdf_surface_create_for_stream(render::appendToString, &pdf, figure.width,
+                                          figure.height),
       cairo_surface_destroy);
   // No creation date: the same figure gives the same bytes.
   cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, "");

@@ -1,5 +1,7 @@
 #include "analysis/figure_style.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,25 +17,31 @@ using Json = nlohmann::json;
 
 constexpr double kMinStyleScale = 0.25, kMaxStyleScale = 4.0;
 
-bool sameStyleRgb(const Colour& a, const Colour& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+bool sameStyleRgb(const Colour& a, const Colour& b) {
+  return a.r == b.r && a.g == b.g && a.b == b.b;
+}
 
 [[noreturn]] void styleError(const std::filesystem::path& path, const std::string& field,
-                       const std::string& message) {
+                             const std::string& message) {
   throw spec::ScenarioError(path.string(), field, message);
 }
 
-Colour readStyleColour(const Json& value, const std::filesystem::path& path, const std::string& field) {
+Colour readStyleColour(const Json& value, const std::filesystem::path& path,
+                       const std::string& field) {
   const std::string text = value.is_string() ? value.get<std::string>() : std::string();
   unsigned r = 0, g = 0, b = 0;
-  char end = 0;
-  if (text.size() != 7 || std::sscanf(text.c_str(), "#%2x%2x%2x%c", &r, &g, &b, &end) != 3)
+  const bool hex = text.size() == 7 && text[0] == '#' &&
+                   std::all_of(text.begin() + 1, text.end(),
+                               [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+  if (!hex || std::sscanf(text.c_str(), "#%2x%2x%2x", &r, &g, &b) != 3)
     styleError(path, field, "expected a colour \"#rrggbb\", got " + value.dump());
-  return {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g),
-          static_cast<std::uint8_t>(b)};
+  return {static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b)};
 }
 
-double readStyleScale(const Json& value, const std::filesystem::path& path, const std::string& field) {
-  if (!value.is_number() || !(value.get<double>() >= kMinStyleScale && value.get<double>() <= kMaxStyleScale))
+double readStyleScale(const Json& value, const std::filesystem::path& path,
+                      const std::string& field) {
+  if (!value.is_number() ||
+      !(value.get<double>() >= kMinStyleScale && value.get<double>() <= kMaxStyleScale))
     styleError(path, field, "expected a number in [0.25, 4], got " + value.dump());
   return value.get<double>();
 }
@@ -91,14 +99,16 @@ FigureStyle readFigureStyle(const std::filesystem::path& path) {
     } else if (key == "line_scale") {
       style.line_scale = readStyleScale(value, path, key);
     } else {
-      styleError(path, key, "unknown field (expected series, ink, background, font_scale, line_scale)");
+      styleError(path, key,
+                 "unknown field (expected series, ink, background, font_scale, line_scale)");
     }
   }
   return style;
 }
 
 void restyle(Figure& figure, const FigureStyle& style) {
-  if (sameStyleRgb(figure.background, FigureStyle().background)) figure.background = style.background;
+  if (sameStyleRgb(figure.background, FigureStyle().background))
+    figure.background = style.background;
   for (Shape& shape : figure.shapes) {
     if (auto* p = std::get_if<FilledPolygon>(&shape)) {
       recolour(p->fill, style);

@@ -4,19 +4,16 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
 
+#include "render/cairo_string.h"
+
 namespace canopy::render {
 namespace {
-
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
 
 void setColour(cairo_t* cr, const Rgba& c) {
   cairo_set_source_rgba(cr, c.r / 255.0, c.g / 255.0, c.b / 255.0, c.a / 255.0);
@@ -65,10 +62,10 @@ void marker(cairo_t* cr, const Marker& m, const Vec2& c) {
       break;
     case MarkerShape::square:
     case MarkerShape::arrow: {
-      const std::vector<Vec2> outline =
-          m.shape == MarkerShape::arrow
-              ? arrowDart(c, h, m.heading)
-              : std::vector<Vec2>{c + Vec2(-h, -h), c + Vec2(h, -h), c + Vec2(h, h), c + Vec2(-h, h)};
+      const std::vector<Vec2> outline = m.shape == MarkerShape::arrow
+                                            ? arrowDart(c, h, m.heading)
+                                            : std::vector<Vec2>{c + Vec2(-h, -h), c + Vec2(h, -h),
+                                                                c + Vec2(h, h), c + Vec2(-h, h)};
       path(cr, outline, true);
       fill(cr, m.fill);
       if (edge > 0.0) {
@@ -169,8 +166,8 @@ std::string sceneToVector(const Scene& scene, VectorFormat format) {
   std::string out;
   const double w = scene.viewport.size.width, h = scene.viewport.size.height;
   const std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      format == VectorFormat::pdf ? cairo_pdf_surface_create_for_stream(append, &out, w, h)
-                                  : cairo_svg_surface_create_for_stream(append, &out, w, h),
+      format == VectorFormat::pdf ? cairo_pdf_surface_create_for_stream(appendToString, &out, w, h)
+                                  : cairo_svg_surface_create_for_stream(appendToString, &out, w, h),
       cairo_surface_destroy);
   check(cairo_surface_status(surface.get()));
   if (format == VectorFormat::pdf)  // no creation date: the same scene gives the same bytes

@@ -156,7 +156,7 @@ void InformationConsensus<N>::mixOnCompleteGraph(const CommGraph& graph, int rou
     sum += current[k];
     ++holders;
   }
-  if (holders < 2) return;  // nothing heard: every value stays
+  if (holders < 2) return;                                   // nothing heard: every value stays
   const double pi = 1.0 / graph.agents();                    // π_ij = 1 / (1 + (n − 1))
   const double beta = std::pow(1.0 - holders * pi, rounds);  // β^L
   const Block mean = sum / holders;                          // ȳ

@@ -80,6 +80,7 @@ TEST(FigureStyle, BadFilesNameTheFileAndTheField) {
   } cases[] = {
       {R"({"ink": "red"})", "ink: expected a colour"},
       {R"({"ink": "#12345g"})", "ink: expected a colour"},
+      {R"({"ink": "#1234 5"})", "ink: expected a colour"},
       {R"({"series": ["#000000", 3]})", "series[1]: expected a colour"},
       {R"({"series": []})", "series: expected a list of 1 to 8"},
       {R"({"series": ["#000000","#000000","#000000","#000000","#000000","#000000","#000000","#000000","#000000"]})",

@@ -59,7 +59,7 @@ TEST(SceneVector, ArrowDartPointsAlongTheHeadingWithYDown) {
   ASSERT_EQ(dart.size(), 4u);
   EXPECT_NEAR(dart[0].x(), 50.0, 1e-12);
   EXPECT_NEAR(dart[0].y(), 40.0, 1e-12);
-  EXPECT_NEAR(dart[2].y(), 54.5, 1e-12);  // the notch 0.45 h behind the centre
+  EXPECT_NEAR(dart[2].y(), 54.5, 1e-12);                  // the notch 0.45 h behind the centre
   EXPECT_NEAR(std::abs(dart[1].x() - 50.0), 8.0, 1e-12);  // barbs 0.8 h to each side
   EXPECT_NEAR(dart[1].x() + dart[3].x(), 100.0, 1e-12);
 }

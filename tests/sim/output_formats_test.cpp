@@ -15,6 +15,7 @@
 #include "sim/run.h"
 #include "spec/loader.h"
 #include "spec/schema.h"
+#include "tests/sim/json_key_paths.h"
 
 namespace canopy::sim {
 namespace {
@@ -24,17 +25,7 @@ using Json = nlohmann::json;
 
 const fs::path kDocs = fs::path(CANOPY_SOURCE_DIR) / "docs";
 
-void keysOf(const Json& value, const std::string& path, std::set<std::string>& out) {
-  if (value.is_object()) {
-    for (const auto& [key, child] : value.items()) {
-      const std::string at = path.empty() ? key : path + "." + key;
-      out.insert(at);
-      keysOf(child, at, out);
-    }
-  } else if (value.is_array()) {
-    for (const Json& child : value) keysOf(child, path + "[]", out);
-  }
-}
+using test::keysOf;
 
 TEST(OutputFormats, EveryKeyARunWritesIsDocumented) {
   const std::string page = readTextFile(kDocs / "output-formats.md").value();

@@ -15,6 +15,7 @@
 
 #include "sim/record_fields.h"
 #include "sim/record_line.h"
+#include "tests/sim/json_key_paths.h"
 
 namespace canopy::sim::step_columns_test {  // named: the sanitizer's unity build merges files
 namespace {
@@ -166,17 +167,7 @@ TEST(StepColumns, UnchangedEntriesAreReferencesChangedOnesXorTheirValues) {
   EXPECT_EQ(out.beliefs[0].trees[0].belief.x(0), 5.0);
 }
 
-void keysOf(const nlohmann::json& value, const std::string& path, std::set<std::string>& out) {
-  if (value.is_object()) {
-    for (const auto& [key, child] : value.items()) {
-      const std::string at = path.empty() ? key : path + "." + key;
-      out.insert(at);
-      keysOf(child, at, out);
-    }
-  } else if (value.is_array()) {
-    for (const nlohmann::json& child : value) keysOf(child, path + "[]", out);
-  }
-}
+using sim::test::keysOf;
 
 // The record's field table (record_fields.h) names exactly the keys the line writer writes: a
 // step with every optional part (outline, contacts, altitude, tree observations, a plan).
