@@ -70,8 +70,10 @@ TEST_F(CanopyCli, FramesEveryKStepsAtTheGivenSize) {
 }
 
 TEST_F(CanopyCli, FramesAsSvgOrPdfWithoutGl) {
-  // Vector frames are drawn by cairo: no GL context (the preloaded stand-in counts them).
-  const std::string preload = "LD_PRELOAD=" CANOPY_NO_GL_SHIM;
+  // Vector frames are drawn by cairo: no GL context (the preloaded stand-in ends any run that
+  // asks for one; ASan, under CANOPY_SANITIZE, wants to be the first preloaded library).
+  const std::string preload =
+      std::string("ASAN_OPTIONS=verify_asan_link_order=0 LD_PRELOAD='") + CANOPY_NO_GL_SHIM + "'";
   for (const std::string format : {"svg", "pdf"}) {
     const Outcome o = canopy("run demo --out " + run(format) + " --frames --frame-every 50 " +
                                  "--size 320x200 --format " + format,
