@@ -254,10 +254,12 @@ class NominalCost {
   // order.
   std::vector<int> penalty_fixed_order_, penalty_varying_;
   bool penalty_merge_ = true;
-  // Entries of penalty_uavs_ that are free, and fixed; per track j the fixed entries by
-  // increasing distance to z_{j,H} (ties: lower entry), at [j·|fixed|]; penalty_nearest_: every
-  // such distance is finite, so the search may stop early (addTerminalPenalty).
+  // Entries of penalty_uavs_ that are free, and fixed; per track j the fixed entries at
+  // [j·|fixed|], the first nearest_sorted_ of them the nearest by increasing distance to z_{j,H}
+  // (ties: lower entry), the rest no nearer, in any order; penalty_nearest_: every such distance
+  // is finite, so the search may stop early (addTerminalPenalty).
   std::vector<int> penalty_free_entries_, penalty_fixed_entries_, nearest_fixed_;
+  std::size_t nearest_sorted_ = 0;
   bool penalty_nearest_ = true;
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;

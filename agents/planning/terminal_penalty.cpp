@@ -131,10 +131,18 @@ double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
       for (const int k : penalty_free_entries_)
         consider(k, (final_position[penalty_uavs_[k]] - z).norm());
       // The fixed ones nearest first: one farther than best_total cannot reach it (D_i ≥ 0).
+      // consider() keeps the least (total, entry) whatever the order, so the unsorted rest, each
+      // no nearer than the last sorted one, is looked at in any order and the bits stay the same.
       const std::size_t n_fixed = penalty_fixed_entries_.size();
-      for (const int *k = &nearest_fixed_[j * n_fixed], *end = k + n_fixed; k != end; ++k) {
-        if (fixed_distance[*k] > best_total) break;
-        consider(*k, fixed_distance[*k]);
+      const int* k = &nearest_fixed_[j * n_fixed];
+      const int *sorted_end = k + nearest_sorted_, *end = k + n_fixed;
+      bool stopped = false;
+      for (; k != sorted_end && !stopped; ++k) {
+        stopped = fixed_distance[*k] > best_total;
+        if (!stopped) consider(*k, fixed_distance[*k]);
+      }
+      for (; k != end && !stopped; ++k) {
+        if (fixed_distance[*k] <= best_total) consider(*k, fixed_distance[*k]);
       }
     } else {  // by entry: the first least one wins
       const Charge least = leastChargeByIndex(final_position, z, fixed_distance);
