@@ -23,8 +23,6 @@ namespace {
 // From this many tracks (or fixed UAVs) on, the terminal penalty orders them by a merge (or
 // searches them nearest first): same bits, fewer instructions (preparePenalty).
 constexpr std::size_t kFastPenaltyFrom = 8;
-// The terminal penalty's nearest-first search sorts this many fixed UAVs per track (preparePenalty).
-constexpr std::size_t kNearestSorted = 16;
 
 constexpr int kMaxFreeAgents = 64;  // one bit per free UAV in a reach mask
 
@@ -312,8 +310,7 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   }
   // Per track, the nearest fixed entries by distance (then entry), so that the penalty's search for
   // the least D_i + distance stops at the first fixed UAV farther than the best so far (D_i ≥ 0);
-  // a search that passes them all looks at the rest in any order. Sorting only the nearest
-  // kNearestSorted: a full sort per track was 11 % of a 256-UAV run (bench/RESULTS.md).
+  // a search that passes them all looks at the rest in any order.
   penalty_free_entries_.clear();
   penalty_fixed_entries_.clear();
   for (std::size_t k = 0; k < n_charged; ++k)
@@ -322,7 +319,6 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   const std::size_t n_fixed = penalty_fixed_entries_.size();
   nearest_fixed_.resize(start_.size() * n_fixed);
   penalty_nearest_ = n_fixed >= kFastPenaltyFrom;  // a few UAVs: the plain loop is faster
-  nearest_sorted_ = std::min(n_fixed, kNearestSorted);
   for (const int j : penalty_tracks_) {
     if (!penalty_nearest_) break;
     const double* distance = &terminal_distance_[j * n_charged];
@@ -330,7 +326,7 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
     std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
     for (const int k : penalty_fixed_entries_)
       penalty_nearest_ = penalty_nearest_ && std::isfinite(distance[k]);
-    std::partial_sort(order, order + nearest_sorted_, order + n_fixed, [&](int a, int b) {
+    std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
       return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
     });
   }

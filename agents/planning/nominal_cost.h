@@ -2,6 +2,7 @@
 // The NBO cost of a joint plan (algorithms.md §6; paper eqs. 5–6), evaluated on nominal target
 // trajectories. Built once per planning call (prepare), then evaluated many times by the swarm
 // without allocating.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -255,12 +256,17 @@ class NominalCost {
   std::vector<int> penalty_fixed_order_, penalty_varying_;
   bool penalty_merge_ = true;
   // Entries of penalty_uavs_ that are free, and fixed; per track j the fixed entries at
-  // [j·|fixed|], the first nearest_sorted_ of them the nearest by increasing distance to z_{j,H}
+  // [j·|fixed|], the first nearestSorted() of them the nearest by increasing distance to z_{j,H}
   // (ties: lower entry), the rest no nearer, in any order; penalty_nearest_: every such distance
   // is finite, so the search may stop early (addTerminalPenalty).
   std::vector<int> penalty_free_entries_, penalty_fixed_entries_, nearest_fixed_;
-  std::size_t nearest_sorted_ = 0;
   bool penalty_nearest_ = true;
+  // How many fixed entries per track preparePenalty sorts: a full sort per track was 11 % of a
+  // 256-UAV run (bench/RESULTS.md).
+  static constexpr std::size_t kNearestSorted = 16;
+  std::size_t nearestSorted() const {
+    return std::min(penalty_fixed_entries_.size(), kNearestSorted);
+  }
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;
 

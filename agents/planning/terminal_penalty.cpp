@@ -135,7 +135,7 @@ double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
       // no nearer than the last sorted one, is looked at in any order and the bits stay the same.
       const std::size_t n_fixed = penalty_fixed_entries_.size();
       const int* k = &nearest_fixed_[j * n_fixed];
-      const int *sorted_end = k + nearest_sorted_, *end = k + n_fixed;
+      const int *sorted_end = k + nearestSorted(), *end = k + n_fixed;
       bool stopped = false;
       for (; k != sorted_end && !stopped; ++k) {
         stopped = fixed_distance[*k] > best_total;
