@@ -88,11 +88,13 @@ def main():
     p.add_argument("--canopy", default=os.path.join(ROOT, "build", "release", "app", "canopy"))
     p.add_argument("--generate", action="append", default=[], metavar="U,M,N",
                    help="a scale point: UAVs, people, trees (repeatable)")
-    p.add_argument("--seed", action="append", type=int, default=[], help="seeds of --generate")
+    p.add_argument("--seed", action="append", type=int, default=[],
+                   help="seeds of every --generate point (repeatable; a repeated seed counts once)")
     p.add_argument("--duration", type=float, default=20.0, help="simulated seconds of --generate")
     p.add_argument("--scenario", action="append", default=[], help="a scenario name or file")
     p.add_argument("--check", action="store_true", help="run CI's guard and check its bounds")
     args = p.parse_args()
+    args.seed = list(dict.fromkeys(args.seed))  # one trial per seed: a repeat would narrow the interval
 
     print("| scenario | team OSPA (m) | held (steps) | held at end | tracks at end (least agent) "
           "| agent OSPA (m) | CPU s / sim s |")
