@@ -8,7 +8,7 @@
 #include "app/commands.h"
 #include "core/output_file.h"
 #include "core/printable.h"
-#include "gis/import.h"
+#include "gis/import_loader.h"
 #include "world/tree.h"
 
 namespace canopy::app {
@@ -108,14 +108,15 @@ int Import::run() {
   if (!diameter_field_.empty()) options_.diameter_field = diameter_field_;
   if (options().count("--attribution")) options_.attribution = attribution_;
   checkOutputFile(out_);
-  const gis::ImportResult result = gis::importLayout(options_);
+  const gis::ImportedLayout imported = gis::importThroughModule(options_);
+  const gis::ImportResult& result = imported.result;
   constexpr std::size_t kShown = 10;
   for (std::size_t i = 0; i < std::min(kShown, result.warnings.size()); ++i)
     std::fprintf(stderr, "warning: %s\n", printable(result.warnings[i], 400).c_str());
   if (result.warnings.size() > kShown)
     std::fprintf(stderr, "warning: … and %zu more\n", result.warnings.size() - kShown);
   AtomicFile file(out_);
-  file.write(gis::layoutText(result.layout));
+  file.write(imported.text);
   file.commit();
   const auto& source = result.layout["source"];
   std::printf("%s: %s\n  frame: %s\n  extent (m): %s\n", printable(out_, 200).c_str(),

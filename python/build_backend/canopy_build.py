@@ -172,6 +172,10 @@ def _package_files(build):
              if n.endswith((".py", ".pyi")) or n == "py.typed"]
     files.append((f"canopy/{os.path.basename(extension)}", extension))
     files.append(("canopy/bin/canopy", program))
+    # The program's modules (GIS for `canopy import`, MPI), opened from beside it.
+    app = os.path.dirname(program)
+    files += [(f"canopy/bin/{n}", os.path.join(app, n)) for n in sorted(os.listdir(app))
+              if n.startswith("libcanopy_") and n.endswith(".so")]
     scenarios = os.path.join(ROOT, "scenarios")
     for folder, dirs, names in os.walk(scenarios):
         dirs.sort()

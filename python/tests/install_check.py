@@ -11,6 +11,7 @@ BUILD_DIR is passed to the build backend as CANOPY_BUILD_DIR (a configured, buil
 backend only brings _canopy and canopy up to date there); "-" builds afresh in
 SOURCE_DIR/build/pip-cpXY, as a plain `pip install .` does.
 """
+import json
 import os
 import re
 import shutil
@@ -48,7 +49,8 @@ def main():
         info = {n: z.getinfo(n) for n in names}
         entry = z.read(next(n for n in names if n.endswith(".dist-info/entry_points.txt"))).decode()
     for needed in ("canopy/__init__.py", "canopy/env.py", "canopy/vector.py", "canopy/_canopy.pyi",
-                   "canopy/py.typed", "canopy/bin/canopy", "canopy/scenarios/library/demo.json",
+                   "canopy/py.typed", "canopy/bin/canopy", "canopy/bin/libcanopy_gis.so",
+                   "canopy/scenarios/library/demo.json",
                    "canopy/scenarios/schema_probe.json"):
         assert needed in names, f"{wheel}: no {needed}"
     assert any(n.startswith("canopy/_canopy.cpython-") and n.endswith(".so") for n in names)
@@ -68,6 +70,16 @@ def main():
     python = os.path.join(venv, "bin", "python")
     elsewhere = os.path.join(work, "elsewhere")
     os.makedirs(elsewhere)
+    # `canopy import` opens the GIS module packed beside the installed program: one tree.
+    tree = {"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"natural": "tree"},
+            "geometry": {"type": "Point", "coordinates": [0.12, 52.2]}}]}
+    with open(os.path.join(elsewhere, "tree.geojson"), "w") as f:
+        json.dump(tree, f)
+    run([os.path.join(venv, "bin", "canopy"), "import", "tree.geojson", "--out", "tree.json"], env=env,
+        cwd=elsewhere)
+    with open(os.path.join(elsewhere, "tree.json")) as f:
+        layout = json.loads("".join(line for line in f if not line.lstrip().startswith("//")))
+    assert len(layout["occluders"]) == 1, layout
     env["CANOPY_EXPECT_INSTALLED"] = "1"
     env["CANOPY_CLI"] = os.path.join(venv, "bin", "canopy")
     env["MPLBACKEND"] = "Agg"

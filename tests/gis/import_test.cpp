@@ -218,5 +218,29 @@ TEST(GisImport, BadFilesUnknownLayersAndMissingFieldsExitTwoNamingFileAndField) 
   fs::remove_all(dir);
 }
 
+// The program links no GDAL: `canopy import` opens the GIS module from beside the program (or
+// LIBDIR/canopy). A copy of the program with neither says which file it needs, and writes
+// nothing; every other command of the same copy runs.
+TEST(GisImport, AProgramWithoutItsModuleSaysWhichFileItNeeds) {
+  const fs::path dir = fresh("gis_no_module");
+  fs::create_directories(dir / "bin");
+  fs::copy_file(CANOPY_BINARY, dir / "bin" / "canopy");
+  write(dir / "one.geojson", Json{{"type", "FeatureCollection"}, {"features", Json::array()}}.dump());
+  const std::string program = (dir / "bin" / "canopy").string();
+  const std::string err = (dir / "err.txt").string();
+  const int code = std::system(("cd '" + dir.string() + "' && '" + program +
+                                "' import one.geojson --out layout.json 2>'" + err + "'")
+                                   .c_str());
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(code, 0);
+  EXPECT_NE(message.find("canopy import needs " + (dir / "lib").string()), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("libcanopy_gis.so"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(dir / "layout.json"));
+  EXPECT_EQ(std::system(("'" + program + "' --version >/dev/null").c_str()), 0);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace canopy::cli_test
