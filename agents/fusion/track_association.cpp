@@ -286,16 +286,20 @@ void TrackAssociation<N>::chooseKeys(const CommGraph& graph, KeyMint& mint,
 template <int N>
 void TrackAssociation<N>::planAdoptions(const CommGraph& graph) {
   adoptions_.clear();
-  adopted_for_.assign(static_cast<std::size_t>(agents_), -1);
   const int count = static_cast<int>(nodes_.size());
   for (int n = 0; n < count; ++n) {  // nodes ascend by agent: the lowest member offers first
     const int c = cluster_of_[n];
     if (!confirmed_[c]) continue;
+    // The cluster's agent set (mask_ of its root): its members, and from here on the agents it
+    // was offered to, so that an agent next to several members adopts the cluster once (the
+    // nodes of one cluster are not adjacent: a "last cluster offered" per agent let a second
+    // member offer it again, and the copies multiplied step after step).
     const std::size_t words = static_cast<std::size_t>(find(n)) * mask_words_;
     for (const int j : graph.neighbours(nodes_[n].agent)) {
-      const bool member = (mask_[words + j / 64] >> (j % 64)) & 1U;
-      if (member || adopted_for_[j] == c) continue;
-      adopted_for_[j] = c;
+      std::uint64_t& word = mask_[words + j / 64];
+      const std::uint64_t bit = std::uint64_t{1} << (j % 64);
+      if ((word & bit) != 0) continue;
+      word |= bit;
       adoptions_.push_back({c, j, n});
     }
   }

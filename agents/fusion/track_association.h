@@ -135,7 +135,6 @@ class TrackAssociation {
   std::vector<char> confirmed_;         // per cluster
   std::vector<int> order_;
   std::vector<Adoption> adoptions_;
-  std::vector<int> adopted_for_;  // per agent: last cluster it adopted
 };
 
 }  // namespace canopy::agents::fusion

@@ -161,6 +161,28 @@ TEST(TrackAssociation, TreeSeenOnlyByOneUavReachesTheOthersMap) {
   EXPECT_EQ(fusion.diagnostics().adoptions, 4);
 }
 
+// UAV1 holds nothing; UAV0 holds people A and B, UAV2 holds A: A's cluster has two members next
+// to UAV1, and between them (nodes in agent order: 0's A, 0's B, 2's A) UAV1 is offered B. UAV1
+// adopts A once and B once, UAV2 adopts B: three adoptions, two tracks each, every key once,
+// step after step. (A cluster offered again by its second member gave UAV1 a second copy of A,
+// and such copies multiplied: 16 UAVs over a city held 780 tracks each after 18 s.)
+TEST(TrackAssociation, AnAgentNextToSeveralMembersAdoptsTheClusterOnce) {
+  Team team(3);
+  team.targets[0] = {targetAt({-1, 1}, 10.0, 10.0), targetAt({-1, 2}, 50.0, 50.0)};
+  team.targets[2] = {targetAt({-1, 1}, 10.2, 10.0)};
+  TeamFusion fusion(FusionConfig{}, 3, 1);
+  for (int step = 0; step < 4; ++step) {
+    team.fuse(fusion);
+    for (int i = 0; i < 3; ++i) {
+      ASSERT_EQ(team.targets[i].size(), 2u) << "UAV" << i << ", step " << step;
+      expectUniqueKeys(team.targets[i]);
+      EXPECT_NE(findKey(team.targets[i], {-1, 1}), nullptr);
+      EXPECT_NE(findKey(team.targets[i], {-1, 2}), nullptr);
+    }
+    if (step == 0) EXPECT_EQ(fusion.diagnostics().adoptions, 3);
+  }
+}
+
 TEST(TrackAssociation, TentativeTracksAreNotAdopted) {
   Team team(2);
   team.targets[0] = {targetAt({0, 0}, 0.0, 0.0, 1.0, 1, /*confirmed=*/false)};
