@@ -72,9 +72,11 @@ inline std::string slurp(const fs::path& path) {
   return readTextFile(path).value();
 }
 
-/// An empty temporary directory path for `name` (removed if present).
+/// An empty temporary directory path for `name` (removed if present), of this process: two test
+/// suites running at once (two checkouts on one machine) never share one.
 inline fs::path fresh(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("canopy_cli_" + name);
+  const fs::path dir =
+      fs::temp_directory_path() / ("canopy_cli_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   return dir;
 }
