@@ -2,7 +2,7 @@
 """An optimistic bound on "people held" (issue 46): what a UAV team could hold if every UAV knew
 where every person is at every instant and saw perfectly.
 
-    bench/held_bound.py SCENARIO.json [--policy nearest|largest_error] [--duration S]
+    bench/held_bound.py SCENARIO.json [--policy nearest|largest_error|tracks_only] [--duration S]
 
 Each person belongs to the UAV whose start is nearest to the person's start. Each UAV flies at
 its v_max (default 5 m/s) straight toward its goal, re-chosen every step of the scenario's dt:
@@ -10,6 +10,10 @@ its v_max (default 5 m/s) straight toward its goal, re-chosen every step of the 
   - otherwise, with `nearest` (the default), the nearest of its people not in view whose track
     error exceeds half the hold distance (else the nearest one not in view); with
     `largest_error`, the one not in view whose track error is largest.
+With `tracks_only` the UAV knows no truth, only its tracks: the box and the goal are the tracks'
+predicted positions, and the goal is the nearest prediction of a person not seen for over 1 s
+that the UAV has not reached (and found empty) in the last 3 s; with none, the box's centre.
+That is no bound but a simple policy in the same ideal sensing, a yardstick for planners.
 Every person inside a footprint (axis-aligned `fov.size`, or a `fov.radius` disc) is seen, with no
 occlusion and no noise, and its track becomes its true position and velocity; unseen, the track
 moves at that velocity (constant-velocity prediction). A person is held at a step when its track
@@ -105,6 +109,7 @@ def bound(spec, policy="nearest", duration=None):
     held_pairs, held_last = 0, 0
     track = [p.at(0.0) + (0.0,) for p in people]  # (position, velocity, time seen)
     positions = list(starts)
+    looked = {}  # tracks_only: person -> when the UAV last reached its prediction
     for k in range(steps):
         t = k * dt
         truth = [p.at(t) for p in people]
@@ -128,20 +133,33 @@ def bound(spec, policy="nearest", duration=None):
                 continue
             fov = u.get("fov", {})
             hx, hy = half_extent(fov)
-            xs = [truth[j][0][0] for j in mine]
-            ys = [truth[j][0][1] for j in mine]
+            # Where the UAV believes its people are: the truth, or (tracks_only) its tracks.
+            where = {j: estimate[j] if policy == "tracks_only" else truth[j][0] for j in mine}
+            xs = [where[j][0] for j in mine]
+            ys = [where[j][1] for j in mine]
             if max(xs) - min(xs) <= 2 * hx - 2 and max(ys) - min(ys) <= 2 * hy - 2:
                 goal = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
             else:
                 here = positions[i]
                 unseen = [j for j in mine if not in_footprint(fov, here, truth[j][0])] or mine
                 error = {j: math.dist(estimate[j], truth[j][0]) for j in unseen}
-                if policy == "largest_error":
-                    target = max(unseen, key=lambda j: (error[j], -j))
+                if policy == "tracks_only":
+                    stale = [j for j in unseen
+                             if t - track[j][2] > 1.0 and t - looked.get(j, -math.inf) > 3.0]
+                    if stale:
+                        target = min(stale, key=lambda j: (math.dist(here, where[j]), j))
+                        if math.dist(here, where[target]) <= 1.0:
+                            looked[target] = t  # reached its prediction: not there
+                        goal = where[target]
+                    else:
+                        goal = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2)
                 else:
-                    drifting = [j for j in unseen if error[j] > HOLD_DISTANCE / 2] or unseen
-                    target = min(drifting, key=lambda j: (math.dist(here, truth[j][0]), j))
-                goal = truth[target][0]
+                    if policy == "largest_error":
+                        target = max(unseen, key=lambda j: (error[j], -j))
+                    else:
+                        drifting = [j for j in unseen if error[j] > HOLD_DISTANCE / 2] or unseen
+                        target = min(drifting, key=lambda j: (math.dist(here, truth[j][0]), j))
+                    goal = truth[target][0]
             step = float(u.get("v_max", 5.0)) * dt
             d = math.dist(goal, positions[i])
             if d <= step:
@@ -155,13 +173,14 @@ def bound(spec, policy="nearest", duration=None):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("scenario")
-    parser.add_argument("--policy", choices=["nearest", "largest_error"], default="nearest")
+    parser.add_argument("--policy", choices=["nearest", "largest_error", "tracks_only"], default="nearest")
     parser.add_argument("--duration", type=float, default=None, help="simulated seconds")
     args = parser.parse_args()
     if args.duration is not None and not (args.duration >= 0 and math.isfinite(args.duration)):
         fail(f"--duration: expected a finite number >= 0, got {args.duration}")
     held, last = bound(load(args.scenario), args.policy, args.duration)
-    print(f"{args.scenario}: bound on people held {100 * held:.1f} % of (step, person) pairs, "
+    what = "a tracks-only policy holds" if args.policy == "tracks_only" else "bound on people held"
+    print(f"{args.scenario}: {what} {100 * held:.1f} % of (step, person) pairs, "
           f"{100 * last:.1f} % at the end ({args.policy})")
 
 
