@@ -110,7 +110,11 @@
     const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
     return new Response(stream).arrayBuffer().then(function (buffer) {
       if (!id) CanopyReplay.dataBytes = buffer.byteLength;  // the inflated size, which the tests report
-      return CanopyReplay.readColumns(buffer);
+      const raw = CanopyReplay.readColumns(buffer);
+      // In a page comparing two runs: which run this is ("A", "B") and its folder (compare.js).
+      raw.letter = element.getAttribute("data-run");
+      raw.folder = element.getAttribute("data-folder");
+      return raw;
     });
   };
 })();

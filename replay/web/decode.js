@@ -93,7 +93,7 @@ const CanopyReplay = {};
     // Up to 8 agents keep the frames' colours; more get one colour each.
     if (A > 8) raw.agents.forEach(function (agent, i) { agent.colour = spreadColour(i); });
     const run = {
-      scenario: raw.scenario, seed: raw.seed, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
+      scenario: raw.scenario, seed: raw.seed, letter: raw.letter || null, folder: raw.folder || null, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
       plans: raw.plans, algorithm: raw.algorithm, aoi: raw.aoi, occlusionModel: raw.occlusion_model,
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
       trees: [], polygons: raw.polygons.map(points),

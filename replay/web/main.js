@@ -70,12 +70,28 @@
       Object.keys(r.fields).forEach(function (key) { out.dataset[key] = r.fields[key]; });
     }
     CanopyReplay.showNumbers(document.getElementById("numbers"), this.run, s.k, s.selection, s.agent);
+    if (s.second) this.showSecondNumbers();
     this.showHover();
     CanopyReplay.noteState(this);
     const ms = performance.now() - t0;
     this.stats.draws++;
     this.stats.drawMs += ms;
     this.stats.drawMsMax = Math.max(this.stats.drawMsMax, ms);
+  };
+
+  // Beside A's numbers, those of the second run's counterpart of the selection at its step of
+  // the same time, through the beliefs of its counterpart of the shown agent (compare.js).
+  App.prototype.showSecondNumbers = function () {
+    const s = this.state, second = s.second, box = document.getElementById("numbers-b");
+    box.hidden = !second.on;
+    if (!second.on) return;
+    const k2 = CanopyReplay.secondStep(this.run, second.run, s.k);
+    const b = CanopyReplay.counterpartAgent(this.run, second.run, s.agent);
+    const selection = CanopyReplay.counterpart(this.run, second.run, s.selection);
+    CanopyReplay.showNumbers(box, second.run, k2, b >= 0 ? selection : null, Math.max(b, 0));
+    const title = document.createElement("h2");
+    title.textContent = CanopyReplay.runTitle(second.run) + ", over it";
+    box.insertBefore(title, box.firstChild);
   };
 
   // The hover readout for the cursor at (sx, sy) CSS px on the map (null: the cursor left it).
@@ -204,15 +220,20 @@
     app.state.second = { run: second, on: true };
     const a = app.box, b = runBox(second);
     app.box = [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];
-    document.getElementById("subtitle").textContent += " \u00b7 drawn over it: " + second.scenario +
-      ", seed " + second.seed + " (hollow darts, dashed footprints, rings)";
+    document.getElementById("subtitle").textContent += " \u00b7 drawn over it: " + CanopyReplay.runTitle(second) +
+      " (hollow darts, dashed lines, rings)";
+    const numbers = document.createElement("section");
+    numbers.id = "numbers-b";
+    numbers.setAttribute("aria-live", "polite");
+    const first = document.getElementById("numbers");
+    first.parentNode.insertBefore(numbers, first.nextSibling);
     const label = document.createElement("label"), input = document.createElement("input");
     input.type = "checkbox";
     input.id = "second-on";
     input.checked = true;
     input.addEventListener("change", function () { app.setSecond(input.checked); });
     label.appendChild(input);
-    label.appendChild(document.createTextNode(" o \u00b7 " + second.scenario + " drawn over it"));
+    label.appendChild(document.createTextNode(" o \u00b7 run B (" + (second.folder || second.scenario) + ") drawn over it"));
     document.getElementById("layers").appendChild(label);
   }
 
@@ -227,6 +248,7 @@
     CanopyReplay.app = app;
     CanopyReplay.bindControls(app);
     if (rawSecond) addSecondRun(app, CanopyReplay.decode(rawSecond));
+    CanopyReplay.markRuns(app);  // which run is which, in a page comparing two (compare.js)
     // A person's timeline from the start, so that the page shows every part of itself at once.
     if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
     app.view.resize();
