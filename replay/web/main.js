@@ -115,6 +115,14 @@
     box.dataset.agent = h.agent ? h.agent.name + ":" + h.agent.distance : "";
     box.dataset.person = h.person ? h.person.name + ":" + h.person.distance : "";
     box.dataset.track = h.track ? [h.track.key, h.track.distance, h.track.mahalanobis].join(":") : "";
+    // Over it, the second run's nearest agent, person and track (through its counterpart of the
+    // shown agent) at its step of the same time.
+    const second = this.state.second, b = second ? CanopyReplay.counterpartAgent(this.run, second.run, this.state.agent) : -1;
+    box.dataset.trackB = "";
+    if (!second || !second.on || b < 0) return;
+    const h2 = CanopyReplay.hoverAt(second.run, CanopyReplay.secondStep(this.run, second.run, this.state.k), b, w.x, w.y);
+    box.textContent += "\nrun B (dashed):\n" + CanopyReplay.hoverText(h2).split("\n").slice(1).join("\n");
+    box.dataset.trackB = h2.track ? [h2.track.key, h2.track.distance, h2.track.mahalanobis].join(":") : "";
   };
 
   App.prototype.setStep = function (k) {
@@ -139,6 +147,7 @@
     this.series.trace = field.values();
     this.series.traceLabel = field.label;
     this.series.plot = field.id;
+    this.series.traceB = this.secondTrace(field.id);
     const select = document.getElementById("plot-field");
     select.textContent = "";
     fields.forEach(function (f) {
@@ -150,6 +159,22 @@
     select.value = field.id;
     document.getElementById("timeline-title").textContent = this.series.title;
     this.timeline.set(this.series);
+  };
+
+  // In an overlay, the same field of the second run's counterpart of the selection (through its
+  // counterpart of the shown agent) at each of this run's steps, i.e. at B's step of the same
+  // time (compare.js); null without a second run shown or without a counterpart.
+  App.prototype.secondTrace = function (id) {
+    const s = this.state, second = s.second;
+    if (!second || !second.on) return null;
+    const b = CanopyReplay.counterpartAgent(this.run, second.run, s.agent);
+    const selection = CanopyReplay.counterpart(this.run, second.run, s.selection);
+    if (b < 0 || !selection) return null;
+    const field = CanopyReplay.plotFields(second.run, selection, b).filter(function (f) { return f.id === id; })[0];
+    if (!field) return null;
+    const values = field.values(), out = new Float64Array(this.run.steps);
+    for (let k = 0; k < this.run.steps; k++) out[k] = values[CanopyReplay.secondStep(this.run, second.run, k)];
+    return out;
   };
 
   App.prototype.setPlot = function (id) {
@@ -212,6 +237,7 @@
     if (!this.state.second) return;
     this.state.second.on = on;
     document.getElementById("second-on").checked = on;
+    this.refreshTimeline();  // its dashed trace
     this.draw();
   };
 

@@ -174,6 +174,51 @@ async function main() {
       }
     });
 
+    await check("overlay: a plotted field of B's counterpart dashed over A's, and B's nearest track in the hover readout, are B's record's", async () => {
+      const i = 2, t = 1, a = 0, K = A.record.length;
+      const plotted = (id) => page.evaluate(`(() => { CanopyReplay.app.setPlot("${id}");
+        const s = CanopyReplay.app.series; return s.traceB ? Array.from(s.traceB) : null; })()`);
+      await page.evaluate(`CanopyReplay.app.select({ kind: "agent", index: ${i} })`);
+      const want = {
+        tracks: (kB) => B.record[kB].agents[i].tracks.length,
+        trace: (kB) => B.record[kB].agents[i].tracks.reduce((sum, tr) => sum + tr.P[0] + tr.P[4], 0)
+      };
+      for (const id of Object.keys(want)) {
+        const got = await plotted(id);
+        assert(got && got.length === K, `${id}: B's trace ${got && got.length} values for ${K} steps`);
+        for (let k = 0; k < K; k++) {
+          const w = want[id](stepOfB(A, B, k));
+          assert(Math.abs(got[k] - w) <= 2e-3 * Math.abs(w) + 1e-6, `B's ${id} at A's k=${k}: ${got[k]}, B's record ${w}`);
+        }
+      }
+      await page.evaluate(`(() => { const app = CanopyReplay.app; app.setAgent(${a}); app.select({ kind: "target", index: ${t} }); })()`);
+      const error = await plotted("error");
+      for (let k = 0; k < K; k++) {
+        const kB = stepOfB(A, B, k), tr = expect.trackOf(B, kB, a, t), q = B.record[kB].targets[t].p;
+        const w = tr ? Math.hypot(tr.x[0] - q[0], tr.x[1] - q[1]) : NaN;
+        assert(Number.isNaN(w) ? error[k] === null || Number.isNaN(error[k]) : Math.abs(error[k] - w) <= 0.02,
+          `the error of B's track of ${B.config.targets[t].name} at A's k=${k}: ${error[k]}, B's record ${w}`);
+      }
+      // The hover readout: B's nearest track of its agent a at its step, and its distance.
+      const k = 30, kB = stepOfB(A, B, k);
+      await page.evaluate(`CanopyReplay.app.setStep(${k})`);
+      const rect = await page.evaluate(`(() => { const r = document.getElementById("map").getBoundingClientRect();
+        return { x: r.left, y: r.top }; })()`);
+      for (const [fx, fy] of [[0.3, 0.4], [0.55, 0.5], [0.7, 0.62]]) {
+        const v = await page.evaluate("(({ cx, cy, scale, width, height }) => ({ cx, cy, scale, width, height }))(CanopyReplay.app.view)");
+        const px = Math.round(rect.x + v.width * fx), py = Math.round(rect.y + v.height * fy);
+        await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", x: px, y: py });
+        const got = await page.evaluate(`document.getElementById("hover").dataset.trackB`);
+        const x = v.cx + (px - rect.x - v.width / 2) / v.scale, y = v.cy - (py - rect.y - v.height / 2) / v.scale;
+        const best = B.record[kB].agents[a].tracks.map((tr) => ({ key: tr.key.join(":"), d: Math.hypot(tr.x[0] - x, tr.x[1] - y) }))
+          .sort((p, q) => p.d - q.d)[0];
+        const parts = got.split(":");
+        assert(parts.slice(0, 2).join(":") === best.key && Math.abs(+parts[2] - best.d) <= 0.02,
+          `B's nearest track at (${x.toFixed(2)}, ${y.toFixed(2)}): ${got}, B's record ${best.key} at ${best.d}`);
+      }
+      await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", x: 2, y: 2 });
+    });
+
     await check("overlay: the legend and the map say which run is which (letter, folder, scenario, seed)", async () => {
       const got = await page.evaluate(`(() => { const svg = CanopyReplay.exportSvg(CanopyReplay.app);
         const texts = Array.from(new DOMParser().parseFromString(svg, "image/svg+xml").querySelectorAll("text")).map((t) => t.textContent);
