@@ -1,9 +1,9 @@
 // The recorded fields the timeline can plot over the run for the selection: per field an id, a
 // label and its value at every step (NaN where it has none). An agent: Σ tr P of its tracks, how
 // many tracks it holds, its plan's cost (the plan of the epoch in force), the messages it sent at
-// that epoch, the teammates' plans it did not hold as planned against, its OSPA. A person: tr P
-// of the shown agent's track of it, that track's error, how many agents see it, the agent's
-// OSPA.
+// that epoch, the teammates' plans it received (held as planned against) and those it did not,
+// its OSPA. A person: tr P of the shown agent's track of it, that track's error, how many agents
+// see it, the agent's OSPA.
 /* global CanopyReplay */
 (function () {
   "use strict";
@@ -38,6 +38,11 @@
         return series(run, function (k) {
           const e = run.epochAt[k];
           return e < 0 ? NaN : run.epochs[e].sent.filter(function (m) { return m.from === i; }).length;
+        });
+      } },
+      { id: "received", label: "teammates' plans received (held as planned against)", values: function () {
+        return series(run, function (k) {
+          return CanopyReplay.intentions(run, k, i).filter(function (x) { return x.status === "ok"; }).length;
         });
       } },
       { id: "missed", label: "teammates' plans not held", values: function () {
