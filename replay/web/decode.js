@@ -74,17 +74,37 @@ const CanopyReplay = {};
   }
   CanopyReplay.spreadColour = spreadColour;
 
-  // track_of_target [k][a][t] (the index of agent a's track standing for person t, or -1) is one
-  // Int32Array (columns.js); each [k][a] is a view of its T numbers (indexOf and [t] as an
-  // array). As nested arrays it was the largest part of a city run's memory (301 × 64 × 256).
-  function trackOfTargetViews(flat, S, A, T) {
-    const out = [];
-    for (let k = 0; k < S; k++) {
-      const perAgent = [];
-      for (let a = 0; a < A; a++) perAgent.push(flat.subarray((k * A + a) * T, (k * A + a + 1) * T));
-      out.push(perAgent);
-    }
-    return out;
+  const MISSING = -2147483648;  // an Int32 column's missing number (replay/columns.h)
+  function centimetres(v) { return v === MISSING ? NaN : v / 100; }
+
+  // How many (step, agent) track lists a run keeps made (a step's drawing asks for one agent's,
+  // a plot for one agent's at every step).
+  const TRACK_LISTS_KEPT = 2048;
+
+  // The tracks of (k, a) as objects, and track_of_target (the index of a's track standing for
+  // person t, or -1) as an Int32Array of T, made from the columns when asked and the last
+  // TRACK_LISTS_KEPT kept. Made once for the whole run they were a city run's largest part of
+  // the page's memory (71 078 objects and an Int32Array of 301 × 64 × 256).
+  function trackLists(columns, keys, labels, A, T) {
+    const kept = new Map();
+    return function (k, a) {
+      const id = k * A + a;
+      let got = kept.get(id);
+      if (got) return got;
+      const list = [], of = new Int32Array(T).fill(-1), c = columns;
+      for (let j = c.start[id], m = 0; j < c.start[id + 1]; j++, m++) {
+        list.push({
+          key: keys[c.key[j]], label: labels[c.label[j]],
+          x: centimetres(c.x[j]), y: centimetres(c.y[j]), vx: centimetres(c.vx[j]), vy: centimetres(c.vy[j]),
+          pxx: c.pxx[j], pxy: c.pxy[j], pyy: c.pyy[j]
+        });
+        if (c.target[j] >= 0) of[c.target[j]] = m;
+      }
+      got = { tracks: list, of: of };
+      if (kept.size >= TRACK_LISTS_KEPT) kept.delete(kept.keys().next().value);  // the oldest
+      kept.set(id, got);
+      return got;
+    };
   }
 
   CanopyReplay.decode = function (raw) {
@@ -98,8 +118,6 @@ const CanopyReplay = {};
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
-      tracks: raw.tracks,
-      trackOfTarget: trackOfTargetViews(raw.track_of_target, S, A, T),
       maps: raw.maps.map(function (changes) { return unpackMaps(changes, keys); }),
       paths: raw.paths.map(unpackPaths),
       epochs: unpackEpochs(raw.epochs),
@@ -144,6 +162,11 @@ const CanopyReplay = {};
       return { x: target[o], y: target[o + 1] };
     };
     run.time = function (k) { return k * dt; };
+    const lists = trackLists(raw.trackColumns, keys, raw.labels, A, T);
+    // Agent a's tracks at step k ([{key, label, x, y, vx, vy, pxx, pxy, pyy}], m, m/s, m²) and
+    // the index of its track of each person (-1: none).
+    run.tracksAt = function (k, a) { return lists(k, a).tracks; };
+    run.trackOfTargetAt = function (k, a) { return lists(k, a).of; };
     return run;
   };
 })();

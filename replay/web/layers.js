@@ -313,7 +313,7 @@
   // "+" instead of "×", prefix: words before each label, placed}. Returns how many it drew.
   function drawTracks(ctx, view, run, k, a, style) {
     style = style || {};
-    const colour = run.agents[a].colour, tracks = run.tracks[k][a], of = run.trackOfTarget[k][a];
+    const colour = run.agents[a].colour, tracks = run.tracksAt(k, a), of = run.trackOfTargetAt(k, a);
     const at = tracks.map(function (t) { return view.toScreen(t.x, t.y); });
     // Ellipses in one path, then the crosses in one (white under the colour), then the labels.
     ctx.beginPath();

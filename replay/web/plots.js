@@ -25,11 +25,11 @@
     return [
       { id: "trace", label: "\u03a3 tr P of its tracks (m\u00b2)", values: function () {
         return series(run, function (k) {
-          return run.tracks[k][i].reduce(function (s, t) { return s + t.pxx + t.pyy; }, 0);
+          return run.tracksAt(k, i).reduce(function (s, t) { return s + t.pxx + t.pyy; }, 0);
         });
       } },
       { id: "tracks", label: "tracks held", values: function () {
-        return series(run, function (k) { return run.tracks[k][i].length; });
+        return series(run, function (k) { return run.tracksAt(k, i).length; });
       } },
       { id: "cost", label: "plan cost", values: function () {
         return series(run, function (k) { const p = planAt(run, k, i); return p ? p.cost : NaN; });
@@ -56,8 +56,8 @@
 
   function personFields(run, t, a) {
     const trackOf = function (k) {
-      const j = run.trackOfTarget[k][a][t];
-      return j >= 0 ? run.tracks[k][a][j] : null;
+      const j = run.trackOfTargetAt(k, a)[t];
+      return j >= 0 ? run.tracksAt(k, a)[j] : null;
     };
     return [
       { id: "trace", label: "tr P of " + run.agents[a].name + "'s track (m\u00b2)", values: function () {

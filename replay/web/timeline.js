@@ -53,8 +53,8 @@
   function targetTrace(run, a, t) {
     const out = new Float64Array(run.steps);
     for (let k = 0; k < run.steps; k++) {
-      const j = run.trackOfTarget[k][a][t];
-      const track = j >= 0 ? run.tracks[k][a][j] : null;
+      const j = run.trackOfTargetAt(k, a)[t];
+      const track = j >= 0 ? run.tracksAt(k, a)[j] : null;
       out[k] = track ? track.pxx + track.pyy : NaN;
     }
     return out;
@@ -113,7 +113,7 @@
       title = "agent " + agent.name + " (" + agent.kind + ")";
       trace = new Float64Array(run.steps);
       for (let k = 0; k < run.steps; k++) {
-        trace[k] = run.tracks[k][i].reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
+        trace[k] = run.tracksAt(k, i).reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
       }
       traceLabel = "\u03a3 tr P of its tracks (m\u00b2)";
       // Only the people its footprint held at some step (it sees and owns only those).
@@ -142,7 +142,7 @@
         };
         const fields = {
           k: String(k), agent: agent.name, trace: precise(trace[k]),
-          tracks: String(run.tracks[k][i].length),
+          tracks: String(run.tracksAt(k, i).length),
           covered: targetNames(run.inFootprint[k][i]).join(","),
           visible: targetNames(run.visible[k][i]).join(","),
           owners: run.owned ? targetNames(run.owned[k][i]).join(",") : "",
