@@ -1,6 +1,7 @@
 #include "replay/replay_changes.h"
 
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -23,19 +24,20 @@ void writePoints(const std::vector<Vec2>& points, Writer& w) {
 
 }  // namespace
 
-// Occlusion maps as changes: per agent and step, 0 when nothing changed, else [[entries set],
-// [keys removed]], an entry being [key, cx, cy, r] or [key, cx, cy, r, [dx, dy, …]]. An entry is
-// sent again only when one of its numbers moved by kMapResend or more since it was last sent
-// (a tree estimate moves a little at every observation; 5 cm is below a pixel at any zoom the
-// page starts with), so the page's map is within kMapResend of the record's.
-void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
-  w.raw(",\"maps\":[");
-  bool first_agent = true;
+// Occlusion maps as changes, in Int32 columns (positions in cm): per agent a and step k (at
+// a * S + k) how many entries are set (map_set_count) and how many keys removed
+// (map_removed_count); per entry set, in that order, its key (map_set_key, an index into the
+// keys table), centre and radius (map_set_x, _y, _r) and how many outline vertices it has
+// (map_outline_count, 0 for a disc), whose offsets from the centre follow in map_outline_x, _y;
+// the removed keys in map_removed_key. An entry is sent again only when one of its numbers
+// moved by kMapResend or more since it was last sent (a tree estimate moves a little at every
+// observation; 5 cm is below a pixel at any zoom the page starts with), so the page's map is
+// within kMapResend of the record's.
+void writeMaps(const RunFolder& run, Table& keys, Columns& c) {
+  std::vector<std::int32_t> set_count, removed_count, set_key, set_x, set_y, set_r, outline_count,
+      outline_x, outline_y, removed_key;
   for (std::size_t i = 0; i < run.spec.uavs.size(); ++i) {
-    w.comma(first_agent);
-    w.raw("[");
     std::map<int, std::vector<double>> sent;  // key → the numbers last sent
-    bool first_step = true;
     for (const RecordedStep& s : run.steps) {
       std::map<int, std::vector<double>> now;
       for (const RecordedMapEntry& e : s.agents[i].map) {
@@ -43,8 +45,7 @@ void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
         numbers = {e.crown[0], e.crown[1], e.crown[2]};
         for (const Vec2& v : e.outline) numbers.insert(numbers.end(), {v.x(), v.y()});
       }
-      Writer set, removed;
-      bool first_set = true, first_removed = true;
+      std::int32_t set = 0, removed = 0;
       for (auto& [key, numbers] : now) {
         const auto it = sent.find(key);
         bool moved = it == sent.end() || it->second.size() != numbers.size();
@@ -54,43 +55,37 @@ void writeMaps(const RunFolder& run, Table& keys, Writer& w) {
           numbers = it->second;  // what the page holds
           continue;
         }
-        set.comma(first_set);
-        set.raw("[");
-        set.integer(key);
-        for (std::size_t n = 0; n < 3; ++n) {
-          set.raw(",");
-          set.position(numbers[n]);
+        ++set;
+        set_key.push_back(key);
+        set_x.push_back(fixedPoint(numbers[0], 100.0));
+        set_y.push_back(fixedPoint(numbers[1], 100.0));
+        set_r.push_back(fixedPoint(numbers[2], 100.0));
+        outline_count.push_back(static_cast<std::int32_t>((numbers.size() - 3) / 2));
+        for (std::size_t n = 3; n + 1 < numbers.size(); n += 2) {
+          outline_x.push_back(fixedPoint(numbers[n], 100.0));
+          outline_y.push_back(fixedPoint(numbers[n + 1], 100.0));
         }
-        if (numbers.size() > 3) {
-          set.raw(",[");
-          for (std::size_t n = 3; n < numbers.size(); ++n) {
-            if (n > 3) set.raw(",");
-            set.position(numbers[n]);
-          }
-          set.raw("]");
-        }
-        set.raw("]");
       }
       for (const auto& [key, numbers] : sent) {
         if (now.count(key)) continue;
-        removed.comma(first_removed);
-        removed.integer(key);
+        ++removed;
+        removed_key.push_back(key);
       }
-      w.comma(first_step);
-      if (set.text.empty() && removed.text.empty()) {
-        w.raw("0");
-      } else {
-        w.raw("[[");
-        w.text += set.text;
-        w.raw("],[");
-        w.text += removed.text;
-        w.raw("]]");
-      }
+      set_count.push_back(set);
+      removed_count.push_back(removed);
       sent = std::move(now);
     }
-    w.raw("]");
   }
-  w.raw("]");
+  c.int32("map_set_count", set_count);
+  c.int32("map_removed_count", removed_count);
+  c.int32("map_set_key", set_key);
+  c.int32("map_set_x", set_x);
+  c.int32("map_set_y", set_y);
+  c.int32("map_set_r", set_r);
+  c.int32("map_outline_count", outline_count);
+  c.int32("map_outline_x", outline_x);
+  c.int32("map_outline_y", outline_y);
+  c.int32("map_removed_key", removed_key);
 }
 
 // Planned paths per agent and step (0: the same as the step before), then the planning epochs.

@@ -379,7 +379,7 @@ std::string replayData(const RunFolder& run) {
   writeSensing(run, w);
   Table keys, labels;
   writeTracks(run, keys, labels, c);
-  writeMaps(run, keys, w);
+  writeMaps(run, keys, c);
   writePlans(run, w);
   writeTable("keys", keys, w);
   writeTable("labels", labels, w);

@@ -55,7 +55,7 @@
   }
 
   // The header and its columns (an ArrayBuffer of the inflated data) → the object decode.js
-  // reads: the header's fields, and trees, uav, target, trackColumns.
+  // reads: the header's fields, and trees, uav, target, mapColumns, trackColumns.
   CanopyReplay.readColumns = function (buffer) {
     const n = new DataView(buffer).getUint32(0, true);
     const raw = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, n)));
@@ -77,6 +77,9 @@
     // be collected. start[k * A + a]: the first track of (k, a).
     const start = new Int32Array(S * A + 1);
     for (let id = 0; id < S * A; id++) start[id + 1] = start[id] + c.track_count[id];
+    raw.mapColumns = {};  // decode.js unpacks them (replay/replay_changes.cpp: their layout)
+    ["set_count", "removed_count", "set_key", "set_x", "set_y", "set_r", "outline_count", "outline_x", "outline_y",
+      "removed_key"].forEach(function (name) { raw.mapColumns[name] = c["map_" + name]; });
     raw.trackColumns = { start: start };
     ["key", "label", "target", "x", "y", "vx", "vy", "pxx", "pxy", "pyy"].forEach(function (name) {
       raw.trackColumns[name] = c["track_" + name].slice();

@@ -13,23 +13,39 @@ const CanopyReplay = {};
     return out;
   }
 
-  // Occlusion maps are stored as changes; every step gets its full list, sorted by key.
-  function unpackMaps(changes, keys) {
-    const held = new Map();
-    let current = [];
-    return changes.map(function (change) {
-      if (change === 0) return current;
-      change[0].forEach(function (e) {
-        held.set(e[0], {
-          key: keys[e[0]], x: e[1], y: e[2], r: e[3],
-          outline: e.length > 4 ? points(e[4]) : null
-        });
-      });
-      change[1].forEach(function (key) { held.delete(key); });
-      current = Array.from(held.keys()).sort(function (a, b) { return a - b; })
-        .map(function (key) { return held.get(key); });
-      return current;
-    });
+  // Occlusion maps are stored as changes (replay/replay_changes.cpp): per agent and step the
+  // entries set and the keys removed. Every step gets its agent's full list, sorted by key; a
+  // step without changes shares the list of the step before. → maps[agent][step].
+  function unpackMaps(c, keys, A, S) {
+    const maps = [];
+    let set = 0, outline = 0, removed = 0;
+    for (let a = 0; a < A; a++) {
+      const held = new Map(), steps = [];
+      let current = [];
+      for (let k = 0; k < S; k++) {
+        const id = a * S + k, sets = c.set_count[id], removes = c.removed_count[id];
+        for (let n = 0; n < sets; n++, set++) {
+          let corners = null;
+          if (c.outline_count[set] > 0) {
+            corners = [];
+            for (let v = 0; v < c.outline_count[set]; v++, outline++) {
+              corners.push({ x: c.outline_x[outline] / 100, y: c.outline_y[outline] / 100 });
+            }
+          }
+          held.set(c.set_key[set], {
+            key: keys[c.set_key[set]], x: c.set_x[set] / 100, y: c.set_y[set] / 100, r: c.set_r[set] / 100, outline: corners
+          });
+        }
+        for (let n = 0; n < removes; n++, removed++) held.delete(c.removed_key[removed]);
+        if (sets + removes > 0) {
+          current = Array.from(held.keys()).sort(function (p, q) { return p - q; })
+            .map(function (key) { return held.get(key); });
+        }
+        steps.push(current);
+      }
+      maps.push(steps);
+    }
+    return maps;
   }
 
   // Planned paths: 0 means the same as the step before.
@@ -118,7 +134,7 @@ const CanopyReplay = {};
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
-      maps: raw.maps.map(function (changes) { return unpackMaps(changes, keys); }),
+      maps: unpackMaps(raw.mapColumns, keys, A, S),
       paths: raw.paths.map(unpackPaths),
       epochs: unpackEpochs(raw.epochs),
       epochIndex: new Map(),

@@ -254,7 +254,7 @@ async function main() {
       await page.evaluate("CanopyReplay.app.fit()");
     });
 
-    await check("every agent's occlusion map on the page is the record's, within 5 cm", async () => {
+    await check("every agent's occlusion map on the page is the record's (centres, radii, outlines), within 5 cm", async () => {
       let entries = 0;
       for (const k of [10, 30, run.record.length - 1]) {
         for (let a = 0; a < run.record[k].agents.length; a++) {
@@ -267,6 +267,9 @@ async function main() {
             assert(s, `k=${k} agent ${a}: map entry ${e.key} missing`);
             e.x.forEach((v, n) => assert(Math.abs(v - s.x[n]) < 0.055, `k=${k} agent ${a} entry ${e.key}: ${s.x} vs ${e.x}`));
             assert(!e.outline === !s.outline, `k=${k} agent ${a} entry ${e.key}: outline shown ${!!s.outline}`);
+            (e.outline || []).forEach((v, n) => assert(s.outline.length === e.outline.length &&
+              Math.abs(v[0] - s.outline[n].x) < 0.055 && Math.abs(v[1] - s.outline[n].y) < 0.055,
+              `k=${k} agent ${a} entry ${e.key}: outline ${JSON.stringify(s.outline)} vs ${JSON.stringify(e.outline)}`));
             entries++;
           }
         }
