@@ -55,11 +55,11 @@
   }
 
   // The header and its columns (an ArrayBuffer of the inflated data) → the object decode.js
-  // reads: the header's fields, and trees, uav, target, mapColumns, trackColumns.
+  // reads: the header's fields, and trees, uav, target, mapColumns, planColumns, trackColumns.
   CanopyReplay.readColumns = function (buffer) {
     const n = new DataView(buffer).getUint32(0, true);
     const raw = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, n)));
-    if (raw.format !== 2) throw new Error("replay data of format " + raw.format + ", this page reads 2");
+    if (raw.format !== 3) throw new Error("replay data of format " + raw.format + ", this page reads 3");
     const c = {};
     raw.columns.forEach(function (d) { c[d.name] = column(buffer, 4 + n + d.offset, d); });
     const S = raw.steps, A = raw.agents.length, T = raw.targets.length;
@@ -80,6 +80,7 @@
     raw.mapColumns = {};  // decode.js unpacks them (replay/replay_changes.cpp: their layout)
     ["set_count", "removed_count", "set_key", "set_x", "set_y", "set_r", "outline_count", "outline_x", "outline_y",
       "removed_key"].forEach(function (name) { raw.mapColumns[name] = c["map_" + name]; });
+    raw.planColumns = c;  // decode.js reads the plan_, epoch_, part_ and message_ columns
     raw.trackColumns = { start: start };
     ["key", "label", "target", "x", "y", "vx", "vy", "pxx", "pxy", "pyy"].forEach(function (name) {
       raw.trackColumns[name] = c["track_" + name].slice();

@@ -48,29 +48,58 @@ const CanopyReplay = {};
     return maps;
   }
 
-  // Planned paths: 0 means the same as the step before.
-  function unpackPaths(steps) {
-    let current = [];
-    return steps.map(function (s) {
-      if (s !== 0) current = points(s);
-      return current;
-    });
+  // Points from two columns of cm (cm/s): n of them from index `from`.
+  function pointsAt(xs, ys, from, n) {
+    const out = [];
+    for (let j = from; j < from + n; j++) out.push({ x: xs[j] / 100, y: ys[j] / 100 });
+    return out;
+  }
+
+  // Planned paths (replay/replay_changes.cpp): per agent and step the number of points, or -1
+  // for the same as the step before (which shares its list). → paths[agent][step].
+  function unpackPaths(c, A, S) {
+    const paths = [];
+    let at = 0;
+    for (let a = 0; a < A; a++) {
+      const steps = [];
+      let current = [];
+      for (let k = 0; k < S; k++) {
+        const n = c.plan_path_count[a * S + k];
+        if (n >= 0) {
+          current = pointsAt(c.plan_path_x, c.plan_path_y, at, n);
+          at += n;
+        }
+        steps.push(current);
+      }
+      paths.push(steps);
+    }
+    return paths;
   }
 
   // Planning epochs: each agent's plan with the epochs of the teammates' plans it planned
   // against (joint_epoch), and the messages sent, in the order sent.
-  function unpackEpochs(raw) {
-    return raw.map(function (e) {
-      return {
-        k: e.k, epoch: e.epoch,
-        plans: e.agents.map(function (a) {
-          return { agent: a[0], cost: a[1], velocities: points(a[2]), jointEpoch: a[3] };
-        }),
-        sent: e.messages.map(function (m) {
-          return { agent: m[0], from: m[1], epoch: m[2], velocities: points(m[3]) };
-        })
-      };
-    });
+  function unpackEpochs(c) {
+    const out = [];
+    let part = 0, action = 0, joint = 0, message = 0, sentAction = 0;
+    for (let e = 0; e < c.epoch_k.length; e++) {
+      const plans = [], sent = [];
+      for (let n = 0; n < c.epoch_part_count[e]; n++, part++) {
+        const actions = c.part_action_count[part], joints = c.part_joint_count[part];
+        plans.push({ agent: c.part_agent[part], cost: c.part_cost[part],
+          velocities: pointsAt(c.part_vx, c.part_vy, action, actions),
+          jointEpoch: Array.from(c.part_joint.subarray(joint, joint + joints)) });
+        action += actions;
+        joint += joints;
+      }
+      for (let n = 0; n < c.epoch_message_count[e]; n++, message++) {
+        const actions = c.message_action_count[message];
+        sent.push({ agent: c.message_agent[message], from: c.message_from[message], epoch: c.message_epoch[message],
+          velocities: pointsAt(c.message_vx, c.message_vy, sentAction, actions) });
+        sentAction += actions;
+      }
+      out.push({ k: c.epoch_k[e], epoch: c.epoch_epoch[e], plans: plans, sent: sent });
+    }
+    return out;
   }
 
   // Agents' colours beyond the frames' eight (render/colour.cpp repeats them every 8): 16 hues
@@ -135,8 +164,8 @@ const CanopyReplay = {};
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
       maps: unpackMaps(raw.mapColumns, keys, A, S),
-      paths: raw.paths.map(unpackPaths),
-      epochs: unpackEpochs(raw.epochs),
+      paths: unpackPaths(raw.planColumns, A, S),
+      epochs: unpackEpochs(raw.planColumns),
       epochIndex: new Map(),
       epochAt: new Int32Array(S)
     };
