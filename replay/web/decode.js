@@ -13,6 +13,10 @@ const CanopyReplay = {};
     return out;
   }
 
+  const MISSING = -2147483648;  // an Int32 column's missing number (replay/columns.h)
+  // An Int32 of cm (cm/s) in m (m/s); missing: NaN.
+  function centimetres(v) { return v === MISSING ? NaN : v / 100; }
+
   // Occlusion maps are stored as changes (replay/replay_changes.cpp): per agent and step the
   // entries set and the keys removed. Every step gets its agent's full list, sorted by key; a
   // step without changes shares the list of the step before. → maps[agent][step].
@@ -29,11 +33,12 @@ const CanopyReplay = {};
           if (c.outline_count[set] > 0) {
             corners = [];
             for (let v = 0; v < c.outline_count[set]; v++, outline++) {
-              corners.push({ x: c.outline_x[outline] / 100, y: c.outline_y[outline] / 100 });
+              corners.push({ x: centimetres(c.outline_x[outline]), y: centimetres(c.outline_y[outline]) });
             }
           }
           held.set(c.set_key[set], {
-            key: keys[c.set_key[set]], x: c.set_x[set] / 100, y: c.set_y[set] / 100, r: c.set_r[set] / 100, outline: corners
+            key: keys[c.set_key[set]], x: centimetres(c.set_x[set]), y: centimetres(c.set_y[set]), r: centimetres(c.set_r[set]),
+            outline: corners
           });
         }
         for (let n = 0; n < removes; n++, removed++) held.delete(c.removed_key[removed]);
@@ -51,7 +56,7 @@ const CanopyReplay = {};
   // Points from two columns of cm (cm/s): n of them from index `from`.
   function pointsAt(xs, ys, from, n) {
     const out = [];
-    for (let j = from; j < from + n; j++) out.push({ x: xs[j] / 100, y: ys[j] / 100 });
+    for (let j = from; j < from + n; j++) out.push({ x: centimetres(xs[j]), y: centimetres(ys[j]) });
     return out;
   }
 
@@ -118,9 +123,6 @@ const CanopyReplay = {};
     }).join("");
   }
   CanopyReplay.spreadColour = spreadColour;
-
-  const MISSING = -2147483648;  // an Int32 column's missing number (replay/columns.h)
-  function centimetres(v) { return v === MISSING ? NaN : v / 100; }
 
   // How many (step, agent) track lists a run keeps made (a step's drawing asks for one agent's,
   // a plot for one agent's at every step).
