@@ -1,7 +1,7 @@
 // The page's data as it is embedded (replay/replay_data.h): gzipped, in base64, a JSON header
 // and typed columns after it. readData inflates it with the browser's own DecompressionStream
 // and turns the columns into the arrays decode.js reads: positions in metres, headings in
-// radians (Float64Array), and the tracks' columns.
+// radians (Float64Array), and the maps', plans' and tracks' columns.
 /* global CanopyReplay, DecompressionStream */
 (function () {
   "use strict";
@@ -77,9 +77,10 @@
     // be collected. start[k * A + a]: the first track of (k, a).
     const start = new Int32Array(S * A + 1);
     for (let id = 0; id < S * A; id++) start[id + 1] = start[id] + c.track_count[id];
-    raw.mapColumns = {};  // decode.js unpacks them (replay/replay_changes.cpp: their layout)
+    // The maps' columns (replay/replay_changes.cpp: their layout) stay too, copied out.
+    raw.mapColumns = {};
     ["set_count", "removed_count", "set_key", "set_x", "set_y", "set_r", "outline_count", "outline_x", "outline_y",
-      "removed_key"].forEach(function (name) { raw.mapColumns[name] = c["map_" + name]; });
+      "removed_key"].forEach(function (name) { raw.mapColumns[name] = c["map_" + name].slice(); });
     raw.planColumns = c;  // decode.js reads the plan_, epoch_, part_ and message_ columns
     raw.trackColumns = { start: start };
     ["key", "label", "target", "x", "y", "vx", "vy", "pxx", "pxy", "pyy"].forEach(function (name) {

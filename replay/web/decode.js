@@ -18,17 +18,31 @@ const CanopyReplay = {};
   function centimetres(v) { return v === MISSING ? NaN : v / 100; }
 
   // Occlusion maps are stored as changes (replay/replay_changes.cpp): per agent and step the
-  // entries set and the keys removed. Every step gets its agent's full list, sorted by key; a
-  // step without changes shares the list of the step before. → maps[agent][step].
-  function unpackMaps(c, keys, A, S) {
-    const maps = [];
-    let set = 0, outline = 0, removed = 0;
-    for (let a = 0; a < A; a++) {
-      const held = new Map(), steps = [];
-      let current = [];
-      for (let k = 0; k < S; k++) {
-        const id = a * S + k, sets = c.set_count[id], removes = c.removed_count[id];
-        for (let n = 0; n < sets; n++, set++) {
+  // entries set and the keys removed. The page keeps the columns (columns.js copies them out of
+  // the inflated data) and, per agent, the map at the last step asked for: asked for a later step, it applies
+  // the changes up to it; an earlier one, it starts again from the first step (one agent's
+  // changes over a city run take about a millisecond). A step's list is sorted by key; a step
+  // without changes shares the list of the step before. Made for every step at once, the lists
+  // were the largest part of a city run's page memory after the crowns (7.3 MB of 22).
+  // → mapAt(a, k): [{key, x, y, r, outline: [{x, y}] | null}] (m).
+  function mapLists(c, keys, A, S) {
+    // Where the changes of (a, k) start in the set, outline and removed columns (at a * S + k).
+    const setAt = new Int32Array(A * S + 1), outlineAt = new Int32Array(A * S + 1), removedAt = new Int32Array(A * S + 1);
+    for (let id = 0, set = 0; id < A * S; id++) {
+      for (let n = 0; n < c.set_count[id]; n++, set++) outlineAt[id + 1] += c.outline_count[set];
+      setAt[id + 1] = setAt[id] + c.set_count[id];
+      outlineAt[id + 1] += outlineAt[id];
+      removedAt[id + 1] = removedAt[id] + c.removed_count[id];
+    }
+    const cursors = [];
+    for (let a = 0; a < A; a++) cursors.push(null);
+    return function (a, k) {
+      let cursor = cursors[a];
+      if (!cursor || cursor.k > k) cursor = cursors[a] = { k: -1, held: new Map(), list: [] };
+      while (cursor.k < k) {
+        const id = a * S + (++cursor.k), sets = c.set_count[id], removes = c.removed_count[id];
+        let outline = outlineAt[id];
+        for (let set = setAt[id]; set < setAt[id + 1]; set++) {
           let corners = null;
           if (c.outline_count[set] > 0) {
             corners = [];
@@ -36,21 +50,20 @@ const CanopyReplay = {};
               corners.push({ x: centimetres(c.outline_x[outline]), y: centimetres(c.outline_y[outline]) });
             }
           }
-          held.set(c.set_key[set], {
+          cursor.held.set(c.set_key[set], {
             key: keys[c.set_key[set]], x: centimetres(c.set_x[set]), y: centimetres(c.set_y[set]), r: centimetres(c.set_r[set]),
             outline: corners
           });
         }
-        for (let n = 0; n < removes; n++, removed++) held.delete(c.removed_key[removed]);
+        for (let n = removedAt[id]; n < removedAt[id + 1]; n++) cursor.held.delete(c.removed_key[n]);
         if (sets + removes > 0) {
-          current = Array.from(held.keys()).sort(function (p, q) { return p - q; })
+          const held = cursor.held;
+          cursor.list = Array.from(held.keys()).sort(function (p, q) { return p - q; })
             .map(function (key) { return held.get(key); });
         }
-        steps.push(current);
       }
-      maps.push(steps);
-    }
-    return maps;
+      return cursor.list;
+    };
   }
 
   // Points from two columns of cm (cm/s): n of them from index `from`.
@@ -165,7 +178,6 @@ const CanopyReplay = {};
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
       trees: [], polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
-      maps: unpackMaps(raw.mapColumns, keys, A, S),
       paths: unpackPaths(raw.planColumns, A, S),
       epochs: unpackEpochs(raw.planColumns),
       epochIndex: new Map(),
@@ -213,6 +225,8 @@ const CanopyReplay = {};
     // Agent a's tracks at step k ([{key, label, x, y, vx, vy, pxx, pxy, pyy}], m, m/s, m²) and
     // the index of its track of each person (-1: none).
     run.tracksAt = function (k, a) { return lists(k, a).tracks; };
+    // Agent a's occlusion map at step k.
+    run.mapAt = mapLists(raw.mapColumns, keys, A, S);
     run.trackOfTargetAt = function (k, a) { return lists(k, a).of; };
     return run;
   };

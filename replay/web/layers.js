@@ -234,7 +234,7 @@
     ctx.strokeStyle = run.agents[a].colour;
     ctx.lineWidth = 1.2;
     ctx.beginPath();  // every entry in one path, stroked once
-    run.maps[a][k].forEach(function (e) {
+    run.mapAt(a, k).forEach(function (e) {
       if (e.outline) {
         e.outline.forEach(function (o, n) {
           const s = view.toScreen(e.x + o.x, e.y + o.y);

@@ -113,7 +113,7 @@
       ctx.setLineDash(DASH);
       CanopyReplay.drawOcclusionMap(ctx, view, second, k2, b);
       ctx.setLineDash([]);
-      stats.mapEntries = second.maps[b][k2].length;
+      stats.mapEntries = second.mapAt(b, k2).length;
     }
     if (on.plans) stats.planPoints = drawPlans(ctx, view, second, k2);
     if (on.tracks && b >= 0) {

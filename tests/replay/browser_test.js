@@ -256,9 +256,9 @@ async function main() {
 
     await check("every agent's occlusion map on the page is the record's (centres, radii, outlines), within 5 cm", async () => {
       let entries = 0;
-      for (const k of [10, 30, run.record.length - 1]) {
+      for (const k of [10, 30, run.record.length - 1, 20, 5]) {  // forward, then back (the page keeps one step's map)
         for (let a = 0; a < run.record[k].agents.length; a++) {
-          const shown = await page.evaluate(`CanopyReplay.app.run.maps[${a}][${k}]
+          const shown = await page.evaluate(`CanopyReplay.app.run.mapAt(${a}, ${k})
             .map((e) => ({ key: e.key, x: [e.x, e.y, e.r], outline: e.outline }))`);
           const recorded = run.record[k].agents[a].map;
           assert(shown.length === recorded.length, `k=${k} agent ${a}: ${shown.length} map entries shown, ${recorded.length} recorded`);
