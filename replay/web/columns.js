@@ -64,12 +64,7 @@
     raw.columns.forEach(function (d) { c[d.name] = column(buffer, 4 + n + d.offset, d); });
     const S = raw.steps, A = raw.agents.length, T = raw.targets.length;
     const tx = scaled(c.tree_x, 100), ty = scaled(c.tree_y, 100), tr = scaled(c.tree_r, 100);
-    raw.trees = new Float64Array(3 * tx.length);
-    for (let i = 0; i < tx.length; i++) {
-      raw.trees[3 * i] = tx[i];
-      raw.trees[3 * i + 1] = ty[i];
-      raw.trees[3 * i + 2] = tr[i];
-    }
+    raw.trees = { length: tx.length, x: tx, y: ty, r: tr };  // crowns' centres and radii (m)
     raw.uav = interleave(S, A, [c.uav_x, c.uav_y, c.uav_yaw], [100, 100, 1000]);
     raw.target = interleave(S, T, [c.target_x, c.target_y], [100, 100]);
     // Tracks: track_count[k * A + a] of them at (k, a), in order. They stay columns (decode.js

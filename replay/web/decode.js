@@ -176,16 +176,16 @@ const CanopyReplay = {};
       scenario: raw.scenario, seed: raw.seed, letter: raw.letter || null, folder: raw.folder || null, dt: raw.dt, steps: S, planSteps: raw.plan_steps,
       plans: raw.plans, algorithm: raw.algorithm, aoi: raw.aoi, occlusionModel: raw.occlusion_model,
       commRange: raw.comm_range, commLatency: raw.comm_latency, commDrop: raw.comm_drop, m: raw.m, agents: raw.agents, targets: raw.targets,
-      trees: [], polygons: raw.polygons.map(points),
+      polygons: raw.polygons.map(points),
       inFootprint: raw.in_footprint, visible: raw.visible, owned: raw.owned, ospa: raw.ospa,
       paths: unpackPaths(raw.planColumns, A, S),
       epochs: unpackEpochs(raw.planColumns),
       epochIndex: new Map(),
       epochAt: new Int32Array(S)
     };
-    for (let i = 0; i + 2 < raw.trees.length; i += 3) {
-      run.trees.push({ x: raw.trees[i], y: raw.trees[i + 1], r: raw.trees[i + 2] });
-    }
+    // The crowns as three Float64Arrays, {length, x, y, r} (100 230 objects were 6.5 MB of a
+    // city page's memory).
+    run.trees = raw.trees;
     run.treeGrid = new CanopyReplay.TreeGrid(run.trees);  // backdrop.js
     run.polygonBoxes = run.polygons.map(function (v) {
       let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;

@@ -139,8 +139,8 @@
   // grid finds the crowns; walls by their boxes).
   function crownsNear(run, p, r) {
     const out = [];
-    run.treeGrid.each(p.x - r, p.y - r, p.x + r, p.y + r, function (t) {
-      if (Math.abs(t.x - p.x) <= r + t.r && Math.abs(t.y - p.y) <= r + t.r) out.push(t);
+    run.treeGrid.each(p.x - r, p.y - r, p.x + r, p.y + r, function (x, y, rt) {
+      if (Math.abs(x - p.x) <= r + rt && Math.abs(y - p.y) <= r + rt) out.push({ x: x, y: y, r: rt });
     });
     run.polygons.forEach(function (v, n) {
       const b = run.polygonBoxes[n];

@@ -369,7 +369,8 @@ async function main() {
         v.zoom(40, v.width / 2, v.height / 2); app.draw();
         const a = v.toWorld(0, v.height), b = v.toWorld(v.width, 0);
         let inView = 0;
-        app.run.trees.forEach((t) => { if (t.x + t.r >= a.x && t.x - t.r <= b.x && t.y + t.r >= a.y && t.y - t.r <= b.y) inView++; });
+        const t = app.run.trees;
+        for (let i = 0; i < t.length; i++) if (t.x[i] + t.r[i] >= a.x && t.x[i] - t.r[i] <= b.x && t.y[i] + t.r[i] >= a.y && t.y[i] - t.r[i] <= b.y) inView++;
         const zoomed = Object.assign({}, app.backdrop.stats);
         app.setStep(app.state.k + 1);
         const stepped = app.backdrop.stats.renders;
