@@ -90,13 +90,12 @@ std::string folderName(const RunFolder& run) {
 // inflates with the browser's own DecompressionStream (columns.js). `letter` ("A", "B"; empty:
 // a page of one run) names the run in a comparison (web/compare.js), with its folder's name.
 std::string dataElement(const RunFolder& run, std::string_view id, std::string_view letter = {}) {
-  const std::string names =
-      letter.empty() ? std::string()
-                     : " data-run=\"" + htmlEscaped(letter) + "\" data-folder=\"" +
-                           htmlEscaped(folderName(run)) + "\"";
+  const std::string names = letter.empty()
+                                ? std::string()
+                                : " data-run=\"" + htmlEscaped(letter) + "\" data-folder=\"" +
+                                      htmlEscaped(folderName(run)) + "\"";
   return "<script type=\"application/octet-stream\" id=\"" + std::string(id) + "\"" + names +
-         " data-encoding=\"columns-gzip-base64\">" + base64(gzipped(replayData(run))) +
-         "</script>";
+         " data-encoding=\"columns-gzip-base64\">" + base64(gzipped(replayData(run))) + "</script>";
 }
 
 // The page of `run`, with `overlay` (or none) drawn over it on the same clock. `letter` names
