@@ -31,7 +31,7 @@ std::string hexColour(int agent) {
 
 void writeModel(const RunFolder& run, Writer& w, Columns& columns) {
   const spec::ScenarioSpec& spec = run.spec;
-  w.raw("\"format\":2,\"scenario\":");
+  w.raw("\"format\":3,\"scenario\":");
   w.string(spec.name);
   w.raw(",\"seed\":");
   w.integer(static_cast<long long>(spec.seed));
@@ -379,8 +379,8 @@ std::string replayData(const RunFolder& run) {
   writeSensing(run, w);
   Table keys, labels;
   writeTracks(run, keys, labels, c);
-  writeMaps(run, keys, w);
-  writePlans(run, w);
+  writeMaps(run, keys, c);
+  writePlans(run, c);
   writeTable("keys", keys, w);
   writeTable("labels", labels, w);
   c.describe(w);

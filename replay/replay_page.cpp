@@ -78,23 +78,37 @@ void fill(std::string& page, std::string_view name, const std::string& content) 
   page.replace(at, slot.size(), content);
 }
 
-// The data of `run` in the element `id`: gzipped, in base64 (replay_data.h), which the page
-// inflates with the browser's own DecompressionStream (columns.js).
-std::string dataElement(const RunFolder& run, std::string_view id) {
-  return "<script type=\"application/octet-stream\" id=\"" + std::string(id) +
-         "\" data-encoding=\"columns-gzip-base64\">" + base64(gzipped(replayData(run))) +
-         "</script>";
+// The name of the folder a run was read from ("out/m/" → "m"), which a page comparing two runs
+// shows beside each run's letter.
+std::string folderName(const RunFolder& run) {
+  std::filesystem::path dir = run.dir.lexically_normal();
+  if (dir.filename().empty()) dir = dir.parent_path();
+  return dir.filename().string();
 }
 
-// The page of `run`, with `overlay` (or none) drawn over it on the same clock.
-std::string pageOf(const RunFolder& run, const RunFolder* overlay) {
+// The data of `run` in the element `id`: gzipped, in base64 (replay_data.h), which the page
+// inflates with the browser's own DecompressionStream (columns.js). `letter` ("A", "B"; empty:
+// a page of one run) names the run in a comparison (web/compare.js), with its folder's name.
+std::string dataElement(const RunFolder& run, std::string_view id, std::string_view letter = {}) {
+  const std::string names = letter.empty()
+                                ? std::string()
+                                : " data-run=\"" + htmlEscaped(letter) + "\" data-folder=\"" +
+                                      htmlEscaped(folderName(run)) + "\"";
+  return "<script type=\"application/octet-stream\" id=\"" + std::string(id) + "\"" + names +
+         " data-encoding=\"columns-gzip-base64\">" + base64(gzipped(replayData(run))) + "</script>";
+}
+
+// The page of `run`, with `overlay` (or none) drawn over it on the same clock. `letter` names
+// `run` in a comparison (empty: a page of one run).
+std::string pageOf(const RunFolder& run, const RunFolder* overlay, std::string_view letter = {}) {
   std::string page(web::kTemplate);
   fill(page, "title",
        htmlEscaped(overlay ? run.spec.name + " + " + overlay->spec.name : run.spec.name));
   fill(page, "style", "<style>\n" + std::string(web::kStyle) + "</style>");
   fill(page, "data",
-       dataElement(run, "replay-data") +
-           (overlay ? "\n" + dataElement(*overlay, "replay-data-b") : std::string()));
+       overlay ? dataElement(run, "replay-data", "A") + "\n" +
+                     dataElement(*overlay, "replay-data-b", "B")
+               : dataElement(run, "replay-data", letter));
   std::string scripts;
   for (std::string_view script : web::scripts())
     scripts += "<script>\n" + std::string(checkedScript(script)) + "</script>\n";
@@ -127,8 +141,8 @@ std::string sideBySidePage(const RunFolder& a, const RunFolder& b) {
   // Escaped for a double-quoted attribute, a page holds no "<" and no slot of its own.
   fill(page, "frames",
        "<iframe id=\"run-a\" title=\"" + htmlEscaped(a.spec.name) + "\" srcdoc=\"" +
-           htmlEscaped(replayPage(a)) + "\"></iframe>\n<iframe id=\"run-b\" title=\"" +
-           htmlEscaped(b.spec.name) + "\" srcdoc=\"" + htmlEscaped(replayPage(b)) +
+           htmlEscaped(pageOf(a, nullptr, "A")) + "\"></iframe>\n<iframe id=\"run-b\" title=\"" +
+           htmlEscaped(b.spec.name) + "\" srcdoc=\"" + htmlEscaped(pageOf(b, nullptr, "B")) +
            "\"></iframe>");
   return page;
 }

@@ -10,15 +10,16 @@
 
   const LOD_PX = 2;  // device px: a crown's diameter below which it joins the density raster
 
-  // Crowns (discs {x, y, r}, m) binned into square cells of `cell` metres, ~8 crowns a cell.
+  // Crowns (discs: trees.x[i], trees.y[i], trees.r[i], m, Float64Arrays of trees.length) binned
+  // into square cells of `cell` metres, ~8 crowns a cell.
   function TreeGrid(trees) {
     this.trees = trees;
     this.n = trees.length;
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity, rmax = 0;
-    trees.forEach(function (t) {
-      x0 = Math.min(x0, t.x); y0 = Math.min(y0, t.y); x1 = Math.max(x1, t.x); y1 = Math.max(y1, t.y);
-      rmax = Math.max(rmax, t.r);
-    });
+    for (let i = 0; i < this.n; i++) {
+      x0 = Math.min(x0, trees.x[i]); y0 = Math.min(y0, trees.y[i]); x1 = Math.max(x1, trees.x[i]); y1 = Math.max(y1, trees.y[i]);
+      rmax = Math.max(rmax, trees.r[i]);
+    }
     this.rmax = rmax;
     if (!this.n) return;
     const area = Math.max((x1 - x0) * (y1 - y0), 1);
@@ -33,8 +34,7 @@
     // Counting sort of the crowns by cell: start[c] .. start[c + 1] index order[].
     const cellOf = new Int32Array(this.n), start = new Int32Array(this.nx * this.ny + 1);
     for (let i = 0; i < this.n; i++) {
-      const t = trees[i];
-      const c = Math.floor((t.y - y0) / cell) * this.nx + Math.floor((t.x - x0) / cell);
+      const c = Math.floor((trees.y[i] - y0) / cell) * this.nx + Math.floor((trees.x[i] - x0) / cell);
       cellOf[i] = c;
       start[c + 1]++;
     }
@@ -45,7 +45,7 @@
     this.order = order;
   }
 
-  // Calls visit(tree) for every crown that may reach into the box [x0, x1] × [y0, y1] (m)
+  // Calls visit(x, y, r) for every crown that may reach into the box [x0, x1] × [y0, y1] (m)
   // (those of the cells the box grown by the largest radius touches); returns how many.
   TreeGrid.prototype.each = function (x0, y0, x1, y1, visit) {
     if (!this.n) return 0;
@@ -57,7 +57,8 @@
       for (let i = i0; i <= i1; i++) {
         const c = j * g.nx + i;
         for (let s = g.start[c]; s < g.start[c + 1]; s++) {
-          visit(g.trees[g.order[s]]);
+          const t = g.order[s];
+          visit(g.trees.x[t], g.trees.y[t], g.trees.r[t]);
           n++;
         }
       }
@@ -100,10 +101,10 @@
       ctx.fillStyle = C.treeFill;
       ctx.strokeStyle = C.treeEdge;
       ctx.lineWidth = 1;
-      run.treeGrid.each(a.x, a.y, b.x, b.y, function (t) {
-        const s = view.toScreen(t.x, t.y), rs = t.r * view.scale;
+      run.treeGrid.each(a.x, a.y, b.x, b.y, function (x, y, r) {
+        const s = view.toScreen(x, y), rs = r * view.scale;
         if (s.x + rs < 0 || s.x - rs > view.width || s.y + rs < 0 || s.y - rs > view.height) return;
-        if (2 * t.r * px >= LOD_PX) {
+        if (2 * r * px >= LOD_PX) {
           ctx.beginPath();
           ctx.arc(s.x, s.y, rs, 0, 2 * Math.PI);
           ctx.fill();
@@ -113,7 +114,7 @@
         }
         const i = Math.floor(s.x * ratio), j = Math.floor(s.y * ratio);
         if (i < 0 || j < 0 || i >= W || j >= H) return;
-        density[j * W + i] += Math.PI * t.r * t.r * px * px;
+        density[j * W + i] += Math.PI * r * r * px * px;
         raster++;
       });
       if (raster) {

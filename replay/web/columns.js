@@ -1,8 +1,7 @@
 // The page's data as it is embedded (replay/replay_data.h): gzipped, in base64, a JSON header
 // and typed columns after it. readData inflates it with the browser's own DecompressionStream
 // and turns the columns into the arrays decode.js reads: positions in metres, headings in
-// radians (Float64Array), the tracks per step and agent, and the track of each person as one
-// Int32Array.
+// radians (Float64Array), and the maps', plans' and tracks' columns.
 /* global CanopyReplay, DecompressionStream */
 (function () {
   "use strict";
@@ -56,49 +55,34 @@
   }
 
   // The header and its columns (an ArrayBuffer of the inflated data) → the object decode.js
-  // reads: the header's fields, and trees, uav, target, tracks, track_of_target.
+  // reads: the header's fields, and trees, uav, target, mapColumns, planColumns, trackColumns.
   CanopyReplay.readColumns = function (buffer) {
     const n = new DataView(buffer).getUint32(0, true);
     const raw = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, n)));
-    if (raw.format !== 2) throw new Error("replay data of format " + raw.format + ", this page reads 2");
+    if (raw.format !== 3) throw new Error("replay data of format " + raw.format + ", this page reads 3");
     const c = {};
     raw.columns.forEach(function (d) { c[d.name] = column(buffer, 4 + n + d.offset, d); });
     const S = raw.steps, A = raw.agents.length, T = raw.targets.length;
     const tx = scaled(c.tree_x, 100), ty = scaled(c.tree_y, 100), tr = scaled(c.tree_r, 100);
-    raw.trees = new Float64Array(3 * tx.length);
-    for (let i = 0; i < tx.length; i++) {
-      raw.trees[3 * i] = tx[i];
-      raw.trees[3 * i + 1] = ty[i];
-      raw.trees[3 * i + 2] = tr[i];
-    }
+    raw.trees = { length: tx.length, x: tx, y: ty, r: tr };  // crowns' centres and radii (m)
     raw.uav = interleave(S, A, [c.uav_x, c.uav_y, c.uav_yaw], [100, 100, 1000]);
     raw.target = interleave(S, T, [c.target_x, c.target_y], [100, 100]);
-    // Tracks: track_count[k * A + a] of them at (k, a), in order; the person each stands for
-    // gives track_of_target [k][a][t] (-1: none).
-    raw.tracks = [];
-    raw.track_of_target = new Int32Array(S * A * T).fill(-1);
-    const key = c.track_key, label = c.track_label, target = c.track_target;
-    let j = 0;
-    for (let k = 0; k < S; k++) {
-      const perAgent = [];
-      for (let a = 0; a < A; a++) {
-        const list = [], count = c.track_count[k * A + a];
-        for (let m = 0; m < count; m++, j++) {
-          list.push({
-            key: raw.keys[key[j]], label: raw.labels[label[j]],
-            x: fixed(c.track_x[j]), y: fixed(c.track_y[j]), vx: fixed(c.track_vx[j]), vy: fixed(c.track_vy[j]),
-            pxx: c.track_pxx[j], pxy: c.track_pxy[j], pyy: c.track_pyy[j]
-          });
-          if (target[j] >= 0) raw.track_of_target[(k * A + a) * T + target[j]] = m;
-        }
-        perAgent.push(list);
-      }
-      raw.tracks.push(perAgent);
-    }
+    // Tracks: track_count[k * A + a] of them at (k, a), in order. They stay columns (decode.js
+    // makes the objects of one (k, a) when asked); copied out, so that the inflated data can
+    // be collected. start[k * A + a]: the first track of (k, a).
+    const start = new Int32Array(S * A + 1);
+    for (let id = 0; id < S * A; id++) start[id + 1] = start[id] + c.track_count[id];
+    // The maps' columns (replay/replay_changes.cpp: their layout) stay too, copied out.
+    raw.mapColumns = {};
+    ["set_count", "removed_count", "set_key", "set_x", "set_y", "set_r", "outline_count", "outline_x", "outline_y",
+      "removed_key"].forEach(function (name) { raw.mapColumns[name] = c["map_" + name].slice(); });
+    raw.planColumns = c;  // decode.js reads the plan_, epoch_, part_ and message_ columns
+    raw.trackColumns = { start: start };
+    ["key", "label", "target", "x", "y", "vx", "vy", "pxx", "pxy", "pyy"].forEach(function (name) {
+      raw.trackColumns[name] = c["track_" + name].slice();
+    });
     return raw;
   };
-
-  function fixed(v) { return v === MISSING ? NaN : v / 100; }
 
   // Resolves to the page's data (readColumns of the element `id`, #replay-data unless given),
   // or to null when the page has no such element.
@@ -110,7 +94,11 @@
     const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
     return new Response(stream).arrayBuffer().then(function (buffer) {
       if (!id) CanopyReplay.dataBytes = buffer.byteLength;  // the inflated size, which the tests report
-      return CanopyReplay.readColumns(buffer);
+      const raw = CanopyReplay.readColumns(buffer);
+      // In a page comparing two runs: which run this is ("A", "B") and its folder (compare.js).
+      raw.letter = element.getAttribute("data-run");
+      raw.folder = element.getAttribute("data-folder");
+      return raw;
     });
   };
 })();

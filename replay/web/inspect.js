@@ -37,7 +37,7 @@
     if (agent) out.agent = { index: agent.index, name: run.agents[agent.index].name, distance: agent.distance };
     const person = nearest(run.targets.length, function (t) { return run.target(k, t); }, x, y);
     if (person) out.person = { index: person.index, name: run.targets[person.index].name, distance: person.distance };
-    const tracks = run.tracks[k][a];
+    const tracks = run.tracksAt(k, a);
     const track = nearest(tracks.length, function (j) { return tracks[j]; }, x, y);
     if (track) {
       const t = tracks[track.index];
@@ -84,8 +84,8 @@
         return { from: run.agents[item.from].name, epoch: item.epoch, status: item.status };
       });
     }
-    const of = run.trackOfTarget[k][i];
-    out.tracks = run.tracks[k][i].map(function (t, j) {
+    const of = run.trackOfTargetAt(k, i);
+    out.tracks = run.tracksAt(k, i).map(function (t, j) {
       const target = of.indexOf(j);
       return { key: t.key, label: t.label, x: t.x, y: t.y, trace: t.pxx + t.pyy,
         person: target >= 0 ? run.targets[target].name : null };
@@ -96,7 +96,7 @@
   // Person t's numbers at step k, through agent a's beliefs: its position, a's track of it (the
   // one the OSPA assignment gives), the track's error and tr P.
   CanopyReplay.personNumbers = function (run, k, t, a) {
-    const q = run.target(k, t), j = run.trackOfTarget[k][a][t], track = j >= 0 ? run.tracks[k][a][j] : null;
+    const q = run.target(k, t), j = run.trackOfTargetAt(k, a)[t], track = j >= 0 ? run.tracksAt(k, a)[j] : null;
     return { k: k, name: run.targets[t].name, x: q.x, y: q.y, agent: run.agents[a].name,
       track: track ? { key: track.key, x: track.x, y: track.y, trace: track.pxx + track.pyy,
         error: Math.hypot(track.x - q.x, track.y - q.y) } : null };

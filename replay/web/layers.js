@@ -139,8 +139,8 @@
   // grid finds the crowns; walls by their boxes).
   function crownsNear(run, p, r) {
     const out = [];
-    run.treeGrid.each(p.x - r, p.y - r, p.x + r, p.y + r, function (t) {
-      if (Math.abs(t.x - p.x) <= r + t.r && Math.abs(t.y - p.y) <= r + t.r) out.push(t);
+    run.treeGrid.each(p.x - r, p.y - r, p.x + r, p.y + r, function (x, y, rt) {
+      if (Math.abs(x - p.x) <= r + rt && Math.abs(y - p.y) <= r + rt) out.push({ x: x, y: y, r: rt });
     });
     run.polygons.forEach(function (v, n) {
       const b = run.polygonBoxes[n];
@@ -234,7 +234,7 @@
     ctx.strokeStyle = run.agents[a].colour;
     ctx.lineWidth = 1.2;
     ctx.beginPath();  // every entry in one path, stroked once
-    run.maps[a][k].forEach(function (e) {
+    run.mapAt(a, k).forEach(function (e) {
       if (e.outline) {
         e.outline.forEach(function (o, n) {
           const s = view.toScreen(e.x + o.x, e.y + o.y);
@@ -307,8 +307,13 @@
   }
   CanopyReplay.ellipse = ellipse;
 
-  function drawTracks(ctx, view, run, k, a) {
-    const colour = run.agents[a].colour, tracks = run.tracks[k][a], of = run.trackOfTarget[k][a];
+  // Agent a's tracks at step k: each a 2σ ellipse, a cross at its mean and a label "track KEY →
+  // PERSON" (where it covers no label in style.placed, a CanopyReplay.Boxes, which then holds
+  // it). style: a second run's look (second_run.js) or none: {dash: the ellipses' dash, plus:
+  // "+" instead of "×", prefix: words before each label, placed}. Returns how many it drew.
+  function drawTracks(ctx, view, run, k, a, style) {
+    style = style || {};
+    const colour = run.agents[a].colour, tracks = run.tracksAt(k, a), of = run.trackOfTargetAt(k, a);
     const at = tracks.map(function (t) { return view.toScreen(t.x, t.y); });
     // Ellipses in one path, then the crosses in one (white under the colour), then the labels.
     ctx.beginPath();
@@ -319,11 +324,18 @@
     });
     ctx.strokeStyle = colour;
     ctx.lineWidth = 1.5;
+    if (style.dash) ctx.setLineDash(style.dash);
     ctx.stroke();
+    ctx.setLineDash([]);
     ctx.beginPath();
     at.forEach(function (s) {
-      ctx.moveTo(s.x - 5, s.y - 5); ctx.lineTo(s.x + 5, s.y + 5);
-      ctx.moveTo(s.x + 5, s.y - 5); ctx.lineTo(s.x - 5, s.y + 5);
+      if (style.plus) {
+        ctx.moveTo(s.x, s.y - 6); ctx.lineTo(s.x, s.y + 6);
+        ctx.moveTo(s.x - 6, s.y); ctx.lineTo(s.x + 6, s.y);
+      } else {
+        ctx.moveTo(s.x - 5, s.y - 5); ctx.lineTo(s.x + 5, s.y + 5);
+        ctx.moveTo(s.x + 5, s.y - 5); ctx.lineTo(s.x - 5, s.y + 5);
+      }
     });
     ctx.lineCap = "round";
     ctx.strokeStyle = C.white;
@@ -333,19 +345,21 @@
     ctx.lineWidth = 2.5;
     ctx.stroke();
     ctx.lineCap = "butt";
-    const placed = new CanopyReplay.Boxes();
+    const placed = style.placed || new CanopyReplay.Boxes();
     ctx.font = FONT;
     ctx.fillStyle = colour;
     tracks.forEach(function (t, j) {
       const s = at[j], target = of.indexOf(j);
-      const text = "track " + t.key + (target >= 0 ? " \u2192 " + run.targets[target].name : "");
+      const text = (style.prefix || "") + "track " + t.key + (target >= 0 ? " \u2192 " + run.targets[target].name : "");
       // A label only where it covers none drawn before it.
       const box = { x0: s.x + 7, y0: s.y + 3, x1: s.x + 7 + CanopyReplay.textWidth(ctx, text, FONT), y1: s.y + 16 };
       if (placed.hits(box)) return;
       placed.add(box);
       ctx.fillText(text, s.x + 7, s.y + 14);
     });
+    return tracks.length;
   }
+  CanopyReplay.drawTracks = drawTracks;
 
   function drawSelection(ctx, view, run, k, selection) {
     if (!selection) return;
@@ -360,17 +374,23 @@
     ctx.setLineDash([]);
   }
 
-  function drawOverlay(ctx, view, run, k) {
+  // The clock's panel, top left: the run (with its letter when two are compared), the time and
+  // the step; under it the second run drawn over this one and its step, when shown.
+  function drawOverlay(ctx, view, run, k, second) {
     ctx.font = FONT;
-    const text = run.scenario + "   t = " + run.time(k).toFixed(2) + " s   k = " + k;
-    const w = ctx.measureText(text).width;
+    const lines = [(run.letter ? "run " + run.letter + ": " : "") + run.scenario + "   t = " + run.time(k).toFixed(2) + " s   k = " + k];
+    if (second && second.on) {
+      lines.push("run " + (second.run.letter || "B") + " over it (dashed): " + second.run.scenario + "   k = " +
+        CanopyReplay.secondStep(run, second.run, k));
+    }
+    const w = Math.max.apply(null, lines.map(function (l) { return ctx.measureText(l).width; }));
     ctx.fillStyle = C.panel;
-    ctx.fillRect(4, 4, w + 10, 20);
+    ctx.fillRect(4, 4, w + 10, 6 + 14 * lines.length);
     ctx.strokeStyle = C.panelEdge;
     ctx.lineWidth = 1;
-    ctx.strokeRect(4.5, 4.5, w + 9, 19);
+    ctx.strokeRect(4.5, 4.5, w + 9, 5 + 14 * lines.length);
     ctx.fillStyle = C.text;
-    ctx.fillText(text, 9, 18);
+    lines.forEach(function (l, n) { ctx.fillText(l, 9, 18 + 14 * n); });
     // The scale bar, bottom left.
     const metres = CanopyReplay.scaleBarLength(view.width / view.scale);
     if (!(metres > 0)) return;
@@ -404,14 +424,16 @@
       CanopyReplay.drawPlansMoving(ctx, view, run, k, a);
     }
     if (on.truth) drawTrails(ctx, view, run, k);
-    if (on.tracks) drawTracks(ctx, view, run, k, a);
+    // The labels of both runs' tracks placed without overlap (a second run's too, second_run.js).
+    const trackLabels = new CanopyReplay.Boxes();
+    CanopyReplay.drawnTracks = on.tracks ? drawTracks(ctx, view, run, k, a, { placed: trackLabels }) : 0;
     if (on.truth) CanopyReplay.drawTargets(ctx, view, run, k);
     drawSelection(ctx, view, run, k, state.selection);
     CanopyReplay.drawNames(ctx, view, run, k, on.truth);
     CanopyReplay.drawAgents(ctx, view, run, k);
     // A second run over this one (second_run.js), at its step of the same time.
     const second = state.second;
-    if (second && second.on) CanopyReplay.drawSecondRun(ctx, view, second.run, CanopyReplay.secondStep(run, second.run, k), on);
-    drawOverlay(ctx, view, run, k);
+    if (second && second.on) CanopyReplay.drawSecondRun(ctx, view, run, second.run, state, trackLabels);
+    drawOverlay(ctx, view, run, k, second);
   };
 })();

@@ -70,12 +70,28 @@
       Object.keys(r.fields).forEach(function (key) { out.dataset[key] = r.fields[key]; });
     }
     CanopyReplay.showNumbers(document.getElementById("numbers"), this.run, s.k, s.selection, s.agent);
+    if (s.second) this.showSecondNumbers();
     this.showHover();
     CanopyReplay.noteState(this);
     const ms = performance.now() - t0;
     this.stats.draws++;
     this.stats.drawMs += ms;
     this.stats.drawMsMax = Math.max(this.stats.drawMsMax, ms);
+  };
+
+  // Beside A's numbers, those of the second run's counterpart of the selection at its step of
+  // the same time, through the beliefs of its counterpart of the shown agent (compare.js).
+  App.prototype.showSecondNumbers = function () {
+    const s = this.state, second = s.second, box = document.getElementById("numbers-b");
+    box.hidden = !second.on;
+    if (!second.on) return;
+    const k2 = CanopyReplay.secondStep(this.run, second.run, s.k);
+    const b = CanopyReplay.counterpartAgent(this.run, second.run, s.agent);
+    const selection = CanopyReplay.counterpart(this.run, second.run, s.selection);
+    CanopyReplay.showNumbers(box, second.run, k2, b >= 0 ? selection : null, Math.max(b, 0));
+    const title = document.createElement("h2");
+    title.textContent = CanopyReplay.runTitle(second.run) + ", over it";
+    box.insertBefore(title, box.firstChild);
   };
 
   // The hover readout for the cursor at (sx, sy) CSS px on the map (null: the cursor left it).
@@ -99,6 +115,14 @@
     box.dataset.agent = h.agent ? h.agent.name + ":" + h.agent.distance : "";
     box.dataset.person = h.person ? h.person.name + ":" + h.person.distance : "";
     box.dataset.track = h.track ? [h.track.key, h.track.distance, h.track.mahalanobis].join(":") : "";
+    // Over it, the second run's nearest agent, person and track (through its counterpart of the
+    // shown agent) at its step of the same time.
+    const second = this.state.second, b = second ? CanopyReplay.counterpartAgent(this.run, second.run, this.state.agent) : -1;
+    box.dataset.trackB = "";
+    if (!second || !second.on || b < 0) return;
+    const h2 = CanopyReplay.hoverAt(second.run, CanopyReplay.secondStep(this.run, second.run, this.state.k), b, w.x, w.y);
+    box.textContent += "\nrun B (dashed):\n" + CanopyReplay.hoverText(h2).split("\n").slice(1).join("\n");
+    box.dataset.trackB = h2.track ? [h2.track.key, h2.track.distance, h2.track.mahalanobis].join(":") : "";
   };
 
   App.prototype.setStep = function (k) {
@@ -123,6 +147,7 @@
     this.series.trace = field.values();
     this.series.traceLabel = field.label;
     this.series.plot = field.id;
+    this.series.traceB = this.secondTrace(field.id);
     const select = document.getElementById("plot-field");
     select.textContent = "";
     fields.forEach(function (f) {
@@ -134,6 +159,22 @@
     select.value = field.id;
     document.getElementById("timeline-title").textContent = this.series.title;
     this.timeline.set(this.series);
+  };
+
+  // In an overlay, the same field of the second run's counterpart of the selection (through its
+  // counterpart of the shown agent) at each of this run's steps, i.e. at B's step of the same
+  // time (compare.js); null without a second run shown or without a counterpart.
+  App.prototype.secondTrace = function (id) {
+    const s = this.state, second = s.second;
+    if (!second || !second.on) return null;
+    const b = CanopyReplay.counterpartAgent(this.run, second.run, s.agent);
+    const selection = CanopyReplay.counterpart(this.run, second.run, s.selection);
+    if (b < 0 || !selection) return null;
+    const field = CanopyReplay.plotFields(second.run, selection, b).filter(function (f) { return f.id === id; })[0];
+    if (!field) return null;
+    const values = field.values(), out = new Float64Array(this.run.steps);
+    for (let k = 0; k < this.run.steps; k++) out[k] = values[CanopyReplay.secondStep(this.run, second.run, k)];
+    return out;
   };
 
   App.prototype.setPlot = function (id) {
@@ -196,6 +237,7 @@
     if (!this.state.second) return;
     this.state.second.on = on;
     document.getElementById("second-on").checked = on;
+    this.refreshTimeline();  // its dashed trace
     this.draw();
   };
 
@@ -204,15 +246,20 @@
     app.state.second = { run: second, on: true };
     const a = app.box, b = runBox(second);
     app.box = [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];
-    document.getElementById("subtitle").textContent += " \u00b7 drawn over it: " + second.scenario +
-      ", seed " + second.seed + " (hollow darts, dashed footprints, rings)";
+    document.getElementById("subtitle").textContent += " \u00b7 drawn over it: " + CanopyReplay.runTitle(second) +
+      " (hollow darts, dashed lines, rings)";
+    const numbers = document.createElement("section");
+    numbers.id = "numbers-b";
+    numbers.setAttribute("aria-live", "polite");
+    const first = document.getElementById("numbers");
+    first.parentNode.insertBefore(numbers, first.nextSibling);
     const label = document.createElement("label"), input = document.createElement("input");
     input.type = "checkbox";
     input.id = "second-on";
     input.checked = true;
     input.addEventListener("change", function () { app.setSecond(input.checked); });
     label.appendChild(input);
-    label.appendChild(document.createTextNode(" o \u00b7 " + second.scenario + " drawn over it"));
+    label.appendChild(document.createTextNode(" o \u00b7 run B (" + (second.folder || second.scenario) + ") drawn over it"));
     document.getElementById("layers").appendChild(label);
   }
 
@@ -227,6 +274,7 @@
     CanopyReplay.app = app;
     CanopyReplay.bindControls(app);
     if (rawSecond) addSecondRun(app, CanopyReplay.decode(rawSecond));
+    CanopyReplay.markRuns(app);  // which run is which, in a page comparing two (compare.js)
     // A person's timeline from the start, so that the page shows every part of itself at once.
     if (run.targets.length) app.state.selection = { kind: "target", index: 0 };
     app.view.resize();

@@ -1,9 +1,9 @@
 // The recorded fields the timeline can plot over the run for the selection: per field an id, a
 // label and its value at every step (NaN where it has none). An agent: Σ tr P of its tracks, how
 // many tracks it holds, its plan's cost (the plan of the epoch in force), the messages it sent at
-// that epoch, the teammates' plans it did not hold as planned against, its OSPA. A person: tr P
-// of the shown agent's track of it, that track's error, how many agents see it, the agent's
-// OSPA.
+// that epoch, the teammates' plans it received (held as planned against) and those it did not,
+// its OSPA. A person: tr P of the shown agent's track of it, that track's error, how many agents
+// see it, the agent's OSPA.
 /* global CanopyReplay */
 (function () {
   "use strict";
@@ -25,11 +25,11 @@
     return [
       { id: "trace", label: "\u03a3 tr P of its tracks (m\u00b2)", values: function () {
         return series(run, function (k) {
-          return run.tracks[k][i].reduce(function (s, t) { return s + t.pxx + t.pyy; }, 0);
+          return run.tracksAt(k, i).reduce(function (s, t) { return s + t.pxx + t.pyy; }, 0);
         });
       } },
       { id: "tracks", label: "tracks held", values: function () {
-        return series(run, function (k) { return run.tracks[k][i].length; });
+        return series(run, function (k) { return run.tracksAt(k, i).length; });
       } },
       { id: "cost", label: "plan cost", values: function () {
         return series(run, function (k) { const p = planAt(run, k, i); return p ? p.cost : NaN; });
@@ -38,6 +38,11 @@
         return series(run, function (k) {
           const e = run.epochAt[k];
           return e < 0 ? NaN : run.epochs[e].sent.filter(function (m) { return m.from === i; }).length;
+        });
+      } },
+      { id: "received", label: "teammates' plans received (held as planned against)", values: function () {
+        return series(run, function (k) {
+          return CanopyReplay.intentions(run, k, i).filter(function (x) { return x.status === "ok"; }).length;
         });
       } },
       { id: "missed", label: "teammates' plans not held", values: function () {
@@ -51,8 +56,8 @@
 
   function personFields(run, t, a) {
     const trackOf = function (k) {
-      const j = run.trackOfTarget[k][a][t];
-      return j >= 0 ? run.tracks[k][a][j] : null;
+      const j = run.trackOfTargetAt(k, a)[t];
+      return j >= 0 ? run.tracksAt(k, a)[j] : null;
     };
     return [
       { id: "trace", label: "tr P of " + run.agents[a].name + "'s track (m\u00b2)", values: function () {

@@ -4,7 +4,8 @@
 // the views" is ticked): both open on the box of both runs, and a pan or zoom in one moves the
 // other to the same centre and scale. The address's fragment (#t=SECONDS&view=CX,CY,SCALE) holds
 // the time and the left page's view, and opening it restores them. One play button plays both in
-// real time. CanopySideBySide is what the browser tests drive and read.
+// real time. The layers, the shown agent's beliefs, the selection and the plotted field set in
+// either page are set in the other too. CanopySideBySide is what the browser tests drive and read.
 (function () {
   "use strict";
 
@@ -107,8 +108,50 @@
     linking = false;
   };
 
+  // What one page's user changes that the other page follows: the layers, the agent whose
+  // beliefs are shown, the selection and the plotted field; an agent or a person by its
+  // counterpart in the other run (the same name, else the same place: compare.js).
+  let mirroring = false;
+  function mirror(apps) {
+    const replays = frames.map(function (frame) { return frame.contentWindow.CanopyReplay; });
+    const follow = {
+      setLayer: function (from, to, args) { return [args[0], args[1]]; },
+      setPlot: function (from, to, args) { return [args[0]]; },
+      setAgent: function (from, to, args) {
+        const i = replays[to].counterpartAgent(apps[from].run, apps[to].run, args[0]);
+        return i >= 0 ? [i] : null;
+      },
+      select: function (from, to, args) {
+        const selection = replays[to].counterpart(apps[from].run, apps[to].run, args[0]);
+        return selection ? [selection] : null;
+      }
+    };
+    Object.keys(follow).forEach(function (name) {
+      apps.forEach(function (app, n) {
+        const own = app[name].bind(app);
+        app[name] = function () {
+          const given = arguments;
+          own.apply(null, given);
+          if (mirroring) return;
+          mirroring = true;
+          try {
+            apps.forEach(function (other, m) {
+              const args = m === n ? null : follow[name](n, m, given);
+              if (args) other[name].apply(other, args);
+            });
+          } finally {
+            mirroring = false;
+          }
+        };
+      });
+    });
+    // Each page's legend says which run it shows and which is beside it.
+    apps.forEach(function (app, n) { replays[n].markRuns(app, apps[1 - n].run); });
+  }
+
   side.ready = Promise.all(frames.map(readyOf)).then(function (apps) {
     side.apps = apps;
+    mirror(apps);
     // Both pages open on the box that holds both runs.
     const box = apps.map(function (app) { return app.box; }).reduce(function (a, b) {
       return [Math.min(a[0], b[0]), Math.min(a[1], b[1]), Math.max(a[2], b[2]), Math.max(a[3], b[3])];

@@ -53,8 +53,8 @@
   function targetTrace(run, a, t) {
     const out = new Float64Array(run.steps);
     for (let k = 0; k < run.steps; k++) {
-      const j = run.trackOfTarget[k][a][t];
-      const track = j >= 0 ? run.tracks[k][a][j] : null;
+      const j = run.trackOfTargetAt(k, a)[t];
+      const track = j >= 0 ? run.tracksAt(k, a)[j] : null;
       out[k] = track ? track.pxx + track.pyy : NaN;
     }
     return out;
@@ -113,7 +113,7 @@
       title = "agent " + agent.name + " (" + agent.kind + ")";
       trace = new Float64Array(run.steps);
       for (let k = 0; k < run.steps; k++) {
-        trace[k] = run.tracks[k][i].reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
+        trace[k] = run.tracksAt(k, i).reduce(function (s, tr) { return s + tr.pxx + tr.pyy; }, 0);
       }
       traceLabel = "\u03a3 tr P of its tracks (m\u00b2)";
       // Only the people its footprint held at some step (it sees and owns only those).
@@ -142,7 +142,7 @@
         };
         const fields = {
           k: String(k), agent: agent.name, trace: precise(trace[k]),
-          tracks: String(run.tracks[k][i].length),
+          tracks: String(run.tracksAt(k, i).length),
           covered: targetNames(run.inFootprint[k][i]).join(","),
           visible: targetNames(run.visible[k][i]).join(","),
           owners: run.owned ? targetNames(run.owned[k][i]).join(",") : "",
@@ -188,28 +188,38 @@
     this.canvas.style.height = this.height() + "px";
   };
 
-  function lineChart(ctx, tl, values, top, width, colour, label) {
+  // A chart of `values` per step; `second` (a second run's values at the same steps, or none)
+  // dashed over it on the same scale.
+  function lineChart(ctx, tl, values, top, width, colour, label, second) {
     let max = 0;
-    for (let k = 0; k < values.length; k++) if (isFinite(values[k])) max = Math.max(max, values[k]);
+    [values, second || []].forEach(function (list) {
+      for (let k = 0; k < list.length; k++) if (isFinite(list[k])) max = Math.max(max, list[k]);
+    });
     if (!(max > 0)) max = 1;
     ctx.strokeStyle = "rgb(200,200,195)";
     ctx.lineWidth = 1;
     ctx.strokeRect(LEFT + 0.5, top + 0.5, width - LEFT - 8, CHART);
-    ctx.beginPath();
-    let pen = false;
-    for (let k = 0; k < values.length; k++) {
-      if (!isFinite(values[k])) { pen = false; continue; }
-      const x = tl.x(k, width), y = top + CHART - CHART * values[k] / max;
-      if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
-      pen = true;
-    }
-    ctx.strokeStyle = colour;
-    ctx.lineWidth = 1.5;
-    ctx.stroke();
+    [values, second].forEach(function (list, n) {
+      if (!list) return;
+      ctx.beginPath();
+      let pen = false;
+      for (let k = 0; k < list.length; k++) {
+        if (!isFinite(list[k])) { pen = false; continue; }
+        const x = tl.x(k, width), y = top + CHART - CHART * list[k] / max;
+        if (pen) ctx.lineTo(x, y); else ctx.moveTo(x, y);
+        pen = true;
+      }
+      ctx.strokeStyle = colour;
+      ctx.lineWidth = 1.5;
+      ctx.setLineDash(n ? [5, 3] : []);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    });
     ctx.fillStyle = "rgb(20,20,20)";
     ctx.fillText(label, 4, top + 12);
     ctx.fillStyle = "rgb(90,90,90)";
     ctx.fillText("max " + max.toPrecision(3), 4, top + 26);
+    if (second) ctx.fillText("dashed: run B", 4, top + 40);
   }
 
   Timeline.prototype.drawHistory = function (ctx, width) {
@@ -217,7 +227,7 @@
     ctx.fillStyle = "rgb(250,250,246)";
     ctx.fillRect(0, 0, width, this.height());
     ctx.font = FONT;
-    lineChart(ctx, this, s.trace, 2, width, s.colour, s.traceLabel);
+    lineChart(ctx, this, s.trace, 2, width, s.colour, s.traceLabel, s.traceB);
     let top = CHART + 10;
     const self = this;
     s.strips.forEach(function (strip) {

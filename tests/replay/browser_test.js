@@ -254,11 +254,11 @@ async function main() {
       await page.evaluate("CanopyReplay.app.fit()");
     });
 
-    await check("every agent's occlusion map on the page is the record's, within 5 cm", async () => {
+    await check("every agent's occlusion map on the page is the record's (centres, radii, outlines), within 5 cm", async () => {
       let entries = 0;
-      for (const k of [10, 30, run.record.length - 1]) {
+      for (const k of [10, 30, run.record.length - 1, 20, 5]) {  // forward, then back (the page keeps one step's map)
         for (let a = 0; a < run.record[k].agents.length; a++) {
-          const shown = await page.evaluate(`CanopyReplay.app.run.maps[${a}][${k}]
+          const shown = await page.evaluate(`CanopyReplay.app.run.mapAt(${a}, ${k})
             .map((e) => ({ key: e.key, x: [e.x, e.y, e.r], outline: e.outline }))`);
           const recorded = run.record[k].agents[a].map;
           assert(shown.length === recorded.length, `k=${k} agent ${a}: ${shown.length} map entries shown, ${recorded.length} recorded`);
@@ -267,6 +267,9 @@ async function main() {
             assert(s, `k=${k} agent ${a}: map entry ${e.key} missing`);
             e.x.forEach((v, n) => assert(Math.abs(v - s.x[n]) < 0.055, `k=${k} agent ${a} entry ${e.key}: ${s.x} vs ${e.x}`));
             assert(!e.outline === !s.outline, `k=${k} agent ${a} entry ${e.key}: outline shown ${!!s.outline}`);
+            (e.outline || []).forEach((v, n) => assert(s.outline.length === e.outline.length &&
+              Math.abs(v[0] - s.outline[n].x) < 0.055 && Math.abs(v[1] - s.outline[n].y) < 0.055,
+              `k=${k} agent ${a} entry ${e.key}: outline ${JSON.stringify(s.outline)} vs ${JSON.stringify(e.outline)}`));
             entries++;
           }
         }
@@ -366,7 +369,8 @@ async function main() {
         v.zoom(40, v.width / 2, v.height / 2); app.draw();
         const a = v.toWorld(0, v.height), b = v.toWorld(v.width, 0);
         let inView = 0;
-        app.run.trees.forEach((t) => { if (t.x + t.r >= a.x && t.x - t.r <= b.x && t.y + t.r >= a.y && t.y - t.r <= b.y) inView++; });
+        const t = app.run.trees;
+        for (let i = 0; i < t.length; i++) if (t.x[i] + t.r[i] >= a.x && t.x[i] - t.r[i] <= b.x && t.y[i] + t.r[i] >= a.y && t.y[i] - t.r[i] <= b.y) inView++;
         const zoomed = Object.assign({}, app.backdrop.stats);
         app.setStep(app.state.k + 1);
         const stepped = app.backdrop.stats.renders;

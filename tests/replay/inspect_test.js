@@ -147,6 +147,7 @@ async function main() {
         trace: (k) => run.record[k].agents[i].tracks.reduce((s, tr) => s + tr.P[0] + tr.P[4], 0),
         cost: (k) => { const l = planLine(run, k); return l ? l.plan.agents.find((q) => q.agent === i).cost : NaN; },
         sent: (k) => { const l = planLine(run, k); return l ? l.plan.messages.filter((m) => m.from === i).length : NaN; },
+        received: (k) => heldAt(run, k, i).filter((h) => h.endsWith(":ok")).length,
         missed: (k) => heldAt(run, k, i).filter((h) => !h.endsWith(":ok")).length,
         ospa: (k) => run.summary.uavs[i].ospa_m[k]
       };

@@ -60,7 +60,7 @@ async function main() {
       const got = await page.evaluate(`(() => { const r = CanopyReplay.app.run, out = [];
         for (let k = 0; k < r.steps; k++) out.push({
           uavs: r.agents.map((a, i) => r.uav(k, i)), targets: r.targets.map((t, n) => r.target(k, n)),
-          tracks: r.tracks[k], of: r.trackOfTarget[k].map((v) => Array.from(v)) });
+          tracks: r.agents.map((a, i) => r.tracksAt(k, i)), of: r.agents.map((a, i) => Array.from(r.trackOfTargetAt(k, i))) });
         return out; })()`);
       assert(got.length === run.record.length, got.length + " steps on the page, " + run.record.length + " recorded");
       let tracks = 0, associated = 0;
