@@ -67,5 +67,40 @@ TEST(LearnedBehaviours, KeptOnlyWhenTheIntervalsOverlap) {
   EXPECT_EQ(keptText(proportion(0, 20), proportion(20, 20)), "higher than SMA-NBO");
 }
 
+// The report's table: each timed configuration's figures and its ratio to the learned planner's
+// in the same setting; no section when --timing-trials is 0.
+TEST(DecisionTime, ReportTableAndRatioToLearned) {
+  ExperimentResult r;
+  r.experiment.scenario = "trajectory_handover";
+  r.analysis.specs.emplace_back().uavs.emplace_back();  // the configuration section reads one
+  for (const char* planner : {"sma", "learned"}) {
+    ConfigStatistics& s = r.analysis.configs.emplace_back();
+    s.point = {std::string("planner=\"") + planner + "\"", "planner.horizon=5"};
+    s.states = {"M*"};
+  }
+  DecisionTime sma, learned;
+  sma.trials = learned.trials = 5;
+  sma.calls = learned.calls = 130;
+  sma.mean_us = {8000.0, {7000.0, 9000.0}, 5};
+  sma.median_us = 3000.0;
+  learned.mean_us = {4.0, {3.0, 5.0}, 5};
+  learned.median_us = 3.0;
+  r.decision_times = {sma, learned};
+  ReportContext ctx;
+  ctx.timing_trials = 5;
+  const std::string md = reportMarkdown({r}, ctx);
+  // 8000 / 4 = 2000 by the means, 3000 / 3 = 1000 by the medians.
+  EXPECT_NE(md.find("| trajectory_handover | H = 5 | SMA-NBO | 5 | 130 | 8.00 ms [7.00, 9.00] | "
+                    "3.00 ms |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| 2000× / 1000× |"), std::string::npos);
+  EXPECT_NE(md.find("| trajectory_handover | H = 5 | learned (imitates SMA-NBO) | 5 | 130 | "
+                    "4.0 µs [3.0, 5.0] | 3.0 µs |"),
+            std::string::npos);
+  ctx.timing_trials = 0;
+  EXPECT_EQ(reportMarkdown({r}, ctx).find("## Decision time per agent"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace canopy::analysis

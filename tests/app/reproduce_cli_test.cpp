@@ -15,7 +15,8 @@ using canopy::cli_test::slurp;
 TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   const fs::path dir = fresh("reproduce");
   const canopy::cli_test::Outcome outcome =
-      canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() + " --trials 2 --jobs 2");
+      canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() +
+                                                      " --trials 2 --jobs 2 --timing-trials 1");
   ASSERT_EQ(outcome.code, 0) << outcome.err;
   const std::string report = slurp(dir / "report.md");
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
@@ -29,7 +30,8 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   EXPECT_NE(report.find("| team_6 | 6 | learned (imitates SMA-NBO) | 2 |"), std::string::npos);
   EXPECT_NE(report.find("| rotated_90 | 2 | SMA-NBO | 2 |"), std::string::npos);
   EXPECT_NE(report.find("## Decision time per agent"), std::string::npos);
-  EXPECT_NE(report.find("| trajectory_handover | H = 5 | learned (imitates SMA-NBO) | 2 | 52 |"),
+  // One trial timed per configuration (--timing-trials 1): 13 epochs × 2 agents.
+  EXPECT_NE(report.find("| trajectory_handover | H = 5 | learned (imitates SMA-NBO) | 1 | 26 |"),
             std::string::npos);
   // Dec-POMDP with each joint search (README): the default block search, the paper's one swarm
   // and the ring swarm, in Resource Allocation at H = 5.
