@@ -34,19 +34,24 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed) {
   struct Row {
     const char* scenario;
     bool ownership;
+    bool learned = false;  // the occlusion maps flown by the learned planner
   };
+  // The learned planner over the occlusion experiments (issue 54): the scenario's shipped policy.
+  const std::string fixed_learned = R"("planner.algorithm": "learned", "planner.horizon": 5)";
   std::vector<Experiment> experiments;
   for (const Row row : {Row{"trajectory_handover", true}, Row{"resource_allocation", true},
-                        Row{"joint_effect", false}, Row{"occlusion_sharing", false}}) {
-    const std::string name = row.scenario;
-    // The same text a sweep file would hold, so that DIR/<scenario>/sweep.json reloads.
-    const std::string text = "{\"name\": \"" + name + "\", \"scenario\": \"" + name +
+                        Row{"joint_effect", false}, Row{"occlusion_sharing", false},
+                        Row{"joint_effect", false, true}, Row{"occlusion_sharing", false, true}}) {
+    const std::string scenario = row.scenario;
+    const std::string name = scenario + (row.learned ? "_learned" : "");
+    // The same text a sweep file would hold, so that DIR/<name>/sweep.json reloads.
+    const std::string text = "{\"name\": \"" + name + "\", \"scenario\": \"" + scenario +
                              "\", \"trials\": " + std::to_string(trials) +
                              ", \"seed\": " + std::to_string(seed) + ", \"set\": {" +
-                             (row.ownership ? "" : fixed_sma) + "}, \"axes\": [" +
-                             (row.ownership ? planners : maps) + "]}";
-    experiments.push_back(
-        {name, experiments::loadSweepText(text, name + ".json"), row.ownership, {}});
+                             (row.ownership ? "" : row.learned ? fixed_learned : fixed_sma) +
+                             "}, \"axes\": [" + (row.ownership ? planners : maps) + "]}";
+    experiments.push_back({name, experiments::loadSweepText(text, name + ".json"), row.ownership,
+                           {}, row.ownership});
   }
   return experiments;
 }
@@ -70,6 +75,16 @@ std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
         {s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership, s.maps});
   }
   return studies;
+}
+
+std::vector<Experiment> learnedStudies(int trials, std::uint64_t seed) {
+  const std::filesystem::path file =
+      spec::libraryDir().parent_path() / "sweeps" / "learned_heldout.json";
+  return {{"learned_heldout",
+           experiments::withTrialsAndSeed(experiments::loadSweep(file.string()), trials, seed),
+           true,
+           {},
+           true}};
 }
 
 const std::vector<PaperOwnership>& paperOwnership() {

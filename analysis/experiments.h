@@ -12,10 +12,13 @@ namespace canopy::analysis {
 
 /// One row group of the paper's table.
 struct Experiment {
-  std::string scenario;  // library name; also the sweep's name and directory
+  // The sweep's name and directory: the library scenario's name for the paper's table (the
+  // scenario itself is sweep.scenario), "joint_effect_learned" for its learned rows.
+  std::string scenario;
   experiments::SweepSpec sweep;
   bool ownership = false;  // analysed by ownership (TH, RA) or by occlusion (JE, OS)
   HeatmapRequest maps;     // what its sensitivity maps show (default: M* or hidden coverage)
+  bool timed = false;      // its planners' decision times are measured (decision_time.h)
 };
 
 /// A decision period (planner.replan_period, s) the occlusion experiments run with: every 1 s
@@ -29,8 +32,15 @@ const std::vector<DecisionPeriod>& decisionPeriods();
 
 /// TH and RA: SMA-NBO and Dec-POMDP × H ∈ {1, 5}; JE and OS: SMA-NBO, H = 5, × occlusion map
 /// ∈ {a-priori, dynamic, none} × decision period; `trials` per configuration (the paper: 40, 560
-/// trials in all).
+/// trials in all). Then the learned planner's rows that are not the paper's: TH and RA carry it
+/// on their planner axis; joint_effect_learned and occlusion_sharing_learned fly JE and OS with
+/// it (the scenario's shipped policy, H = 5) over the same maps and decision periods.
 std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed);
+
+/// The learned planner's held-out variants (scenarios/sweeps/learned_heldout.json: Trajectory
+/// Handover turned, scaled and tiled to 4 and 6 UAVs, SMA-NBO beside the shipped policy) with
+/// `trials` per configuration and the given seed; timed.
+std::vector<Experiment> learnedStudies(int trials, std::uint64_t seed);
 
 /// The sensitivity studies of scenarios/sweeps/ (ra_distance_horizon, je_occlusion_spacing,
 /// je_reaction), with `trials` per configuration and the given seed; `ownership` as above.

@@ -8,6 +8,7 @@
 
 #include "analysis/findings.h"
 #include "analysis/heatmap.h"
+#include "analysis/report_learned.h"
 #include "analysis/report_numbers.h"
 #include "analysis/report_occlusion.h"
 
@@ -112,7 +113,7 @@ void writeConfiguration(std::ostream& md, const std::vector<ExperimentResult>& r
 }
 
 void writeOwnershipRow(std::ostream& md, const PaperOwnership& paper, const char* label,
-                       const ConfigStatistics& s) {
+                       const ConfigStatistics& s, const DecisionTime* time) {
   const Estimate half = s.stateEstimate("M*", 2), end = s.stateEstimate("M*", 4);
   const Estimate reached = proportion(s.reachedBy("M*", s.columns[2]), s.trials);
   md << "| " << paper.scenario << " | " << label << " | " << paper.horizon << " | " << s.trials
@@ -120,7 +121,8 @@ void writeOwnershipRow(std::ostream& md, const PaperOwnership& paper, const char
      << (paper.at_half ? pct(*paper.at_half) : "—") << " | "
      << (paper.at_half ? paperVerdict(*paper.at_half, half) : "—") << " | "
      << percentWithInterval(end) << " | " << (paper.at_end ? pct(*paper.at_end) : "—") << " | "
-     << (paper.at_end ? paperVerdict(*paper.at_end, end) : "—") << " | " << paper.note << " |\n";
+     << (paper.at_end ? paperVerdict(*paper.at_end, end) : "—") << " | "
+     << (time ? decisionTimeText(*time) : "—") << " | " << paper.note << " |\n";
 }
 
 void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& results) {
@@ -131,10 +133,13 @@ void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& resul
   md << "In brackets the 95 % Wilson interval. \"In M* at L/2\" is the Sankey's snapshot at "
         "k = L/2, the paper's measure; \"reached M* by L/2\" counts the trials that were in M* at "
         "some step k ≤ L/2. \"Paper inside?\" says whether the paper's number lies inside our "
-        "interval, and Δ = paper − ours.\n\n";
+        "interval, and Δ = paper − ours. The decision time per agent is the mean wall time of "
+        "one agent's planning call with its interval (\"Decision time per agent\" below says "
+        "how it is measured and gives its spread).\n\n";
   md << "| scenario | algorithm | H | trials | in M* at L/2 (ours) | reached M* by L/2 (ours) | "
-        "paper | paper inside? | M* at L (ours) | paper | paper inside? | note |\n";
-  md << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---|---|\n";
+        "paper | paper inside? | M* at L (ours) | paper | paper inside? | decision time per agent | "
+        "note |\n";
+  md << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---|---:|---|\n";
   for (const PaperOwnership& paper : paperOwnership()) {
     const ExperimentResult* r = findExperiment(results, paper.scenario);
     if (!r) continue;
@@ -142,7 +147,7 @@ void writeOwnership(std::ostream& md, const std::vector<ExperimentResult>& resul
       if (planner.algorithm != paper.algorithm) continue;
       const ConfigStatistics* s = findConfig(*r, "planner", planner.axis_value, "planner.horizon",
                                              std::to_string(paper.horizon));
-      if (s) writeOwnershipRow(md, paper, planner.label, *s);
+      if (s) writeOwnershipRow(md, paper, planner.label, *s, decisionTimeOf(*r, *s));
     }
   }
   md << "\n";
@@ -282,10 +287,11 @@ void writeWhereItEmerges(std::ostream& md, const std::vector<ExperimentResult>& 
 }
 
 std::string reportMarkdown(const std::vector<ExperimentResult>& results, const ReportContext& ctx,
-                           const std::vector<ExperimentResult>& studies) {
+                           const std::vector<ExperimentResult>& studies,
+                           const std::vector<ExperimentResult>& learned) {
   std::ostringstream md;
   int total_trials = 0;  // every trial analysed, run now or read back
-  for (const auto* set : {&results, &studies}) {
+  for (const auto* set : {&results, &studies, &learned}) {
     for (const ExperimentResult& r : *set) {
       for (const ConfigStatistics& s : r.analysis.configs) total_trials += s.trials;
     }
@@ -295,6 +301,9 @@ std::string reportMarkdown(const std::vector<ExperimentResult>& results, const R
   writeConfiguration(md, results);
   writeOwnership(md, results);
   writeOcclusion(md, results);
+  writeLearnedBehaviours(md, results);
+  writeLearnedHeldOut(md, learned);
+  writeDecisionTimes(md, results, learned, ctx);
   const Findings findings = computeFindings(results);
   writeReaction(md, findings);
   md << "## The paper's qualitative findings, checked\n\n";

@@ -29,7 +29,8 @@ const char* paperReaction(const std::string& map) {
 void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& results) {
   md << "## Occlusion awareness: Joint Effect and Occlusion Sharing\n\n";
   md << "Mean number of footprints on the occluded trajectory while it is hidden (wasted "
-        "coverage), and the frequency of Occlusion_Aware (margin h = 1 s), with SMA-NBO, H = 5, "
+        "coverage), and the frequency of Occlusion_Aware (margin h = 1 s), with SMA-NBO, H = 5 "
+        "(and the learned planner flying the scenario's shipped policy, not in the paper), "
         "per occlusion map and decision period: every 1 s (the first design's, "
         "docs/design-notes.md) or at every 0.2 s "
         "step with 1 s actions (the paper's \"generates a plan … at every time step\"; "
@@ -37,14 +38,15 @@ void writeOcclusion(std::ostream& md, const std::vector<ExperimentResult>& resul
   md << "In brackets the 95 % interval: for the coverage, Student t over the trials' own means "
         "on the logit scale of coverage / UAVs (so that it stays inside [0, UAVs]), for the "
         "frequencies Wilson.\n\n";
-  md << "| scenario | trajectory | hidden | map | decisions every (s) | trials | mean coverage "
-        "while hidden | P[OA] | P[OA \\| e] (trials with e) |\n";
-  md << "|---|---|---|---|---:|---:|---:|---:|---:|\n";
+  md << "| scenario | planner | trajectory | hidden | map | decisions every (s) | trials | mean "
+        "coverage while hidden | P[OA] | P[OA \\| e] (trials with e) |\n";
+  md << "|---|---|---|---|---|---:|---:|---:|---:|---:|\n";
   for (const ExperimentResult& r : results) {
     if (r.experiment.ownership) continue;
     for (const ConfigStatistics& s : r.analysis.configs) {
       for (const OcclusionStatistics& o : s.occlusions) {
-        md << "| " << r.experiment.scenario << " | "
+        md << "| " << r.experiment.sweep.scenario << " | "
+           << (axisText(s, "planner.algorithm") == "learned" ? "learned" : "SMA-NBO") << " | "
            << r.analysis.specs.front().targets[o.target].name << " | "
            << num(o.hidden.first * s.dt, "%.1f") << "–" << num(o.hidden.last * s.dt, "%.1f")
            << " s | " << axisText(s, "planner.occlusion_map") << " | " << decisionsOf(s) << " | "

@@ -26,7 +26,7 @@ TEST(HelpCli, EveryCommandHasHelpListingItsOptionsWithDefaults) {
       {"record", {"--steps A:B", "--agent I"}},
       {"sweep", {"--jobs N", "--shard I/N", "--mpi", "--status DIR"}},
       {"analyze", {"--out DIR", "--state NAME", "--before-hiding S"}},
-      {"reproduce", {"--trials N", "--seed S"}},
+      {"reproduce", {"--trials N", "--seed S", "--timing-trials N"}},
       {"forest", {"--aoi", "--lambda L", "--min-gap G"}},
       {"import", {"--out LAYOUT.json", "--origin LAT,LON", "--bbox W,S,E,N", "--radius-field NAME"}},
       {"list", {}}};

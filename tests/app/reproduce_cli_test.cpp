@@ -15,11 +15,24 @@ using canopy::cli_test::slurp;
 TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   const fs::path dir = fresh("reproduce");
   const canopy::cli_test::Outcome outcome =
-      canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() + " --trials 2 --jobs 2");
+      canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() +
+                                                      " --trials 2 --jobs 2 --timing-trials 1");
   ASSERT_EQ(outcome.code, 0) << outcome.err;
   const std::string report = slurp(dir / "report.md");
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
-  EXPECT_NE(report.find("| occlusion_sharing | III |"), std::string::npos);
+  EXPECT_NE(report.find("| occlusion_sharing | SMA-NBO | III |"), std::string::npos);
+  // The learned planner (issue 54): Occlusion_Aware and Occlusion_Share beside SMA-NBO's, its
+  // held-out variants, and every timed planner's decision time per agent.
+  EXPECT_NE(report.find("| occlusion_sharing | learned | III |"), std::string::npos);
+  EXPECT_NE(report.find("| Occlusion_Aware (P[OA]) | joint_effect | I "), std::string::npos);
+  EXPECT_NE(report.find("| Ownership_Change (M* at L) | resource_allocation | H = 5 |"),
+            std::string::npos);
+  EXPECT_NE(report.find("| team_6 | 6 | learned (imitates SMA-NBO) | 2 |"), std::string::npos);
+  EXPECT_NE(report.find("| rotated_90 | 2 | SMA-NBO | 2 |"), std::string::npos);
+  EXPECT_NE(report.find("## Decision time per agent"), std::string::npos);
+  // One trial timed per configuration (--timing-trials 1): 13 epochs × 2 agents.
+  EXPECT_NE(report.find("| trajectory_handover | H = 5 | learned (imitates SMA-NBO) | 1 | 26 |"),
+            std::string::npos);
   // Dec-POMDP with each joint search (README): the default block search, the paper's one swarm
   // and the ring swarm, in Resource Allocation at H = 5.
   for (const char* planner :
@@ -35,7 +48,8 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
             std::string::npos);
   EXPECT_NE(report.find("H = 5 is more cooperative than H = 1"), std::string::npos);
   for (const char* scenario :
-       {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing"}) {
+       {"trajectory_handover", "resource_allocation", "joint_effect", "occlusion_sharing",
+        "joint_effect_learned", "occlusion_sharing_learned", "learned_heldout"}) {
     EXPECT_TRUE(fs::exists(dir / scenario / "summary.json")) << scenario;
     EXPECT_TRUE(fs::exists(dir / scenario / "analysis" / "ownership_states.csv")) << scenario;
   }
@@ -50,10 +64,10 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
     at = end;
   }
   // 20 Sankey diagrams (5 planners — SMA-NBO, Dec-POMDP with the block, the paper's and the
-  // local-best joint search, learned — × 2 horizons × 2), 2 coverage figures and 6 sensitivity maps
-  // (Resource Allocation; Joint Effect's occlusion × spacing per occlusion map, and its decision
-  // period × footprint per map with a map).
-  EXPECT_EQ(figures, 28);
+  // local-best joint search, learned — × 2 horizons × 2), 4 coverage figures (SMA-NBO's and the
+  // learned planner's in JE and OS) and 6 sensitivity maps (Resource Allocation; Joint Effect's
+  // occlusion × spacing per occlusion map, and its decision period × footprint per map with a map).
+  EXPECT_EQ(figures, 30);
   EXPECT_NE(report.find("| decisions every 0.2 s step | a_priori |"), std::string::npos);
 }
 
