@@ -179,7 +179,9 @@ TEST(TrackAssociation, AnAgentNextToSeveralMembersAdoptsTheClusterOnce) {
       EXPECT_NE(findKey(team.targets[i], {-1, 1}), nullptr);
       EXPECT_NE(findKey(team.targets[i], {-1, 2}), nullptr);
     }
-    if (step == 0) EXPECT_EQ(fusion.diagnostics().adoptions, 3);
+    if (step == 0) {
+      EXPECT_EQ(fusion.diagnostics().adoptions, 3);
+    }
   }
 }
 
