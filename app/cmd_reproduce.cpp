@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "core/output_file.h"
 #include "core/printable.h"
+#include "core/progress.h"
 #include "core/text_file.h"
 #include "experiments/sweep_mpi.h"
 
@@ -54,6 +55,7 @@ int Reproduce::run() {
   const analysis::FigureStyle style = readStyleOption(style_);  // a bad file: exit 2 first
   // Every folder it will write into, before the first trial runs.
   checkOutputFile(std::filesystem::path(out_) / "report.md");
+  const StagesSilenced quiet;  // the sweeps' bars say how far it got
   // The sensitivity maps: half the trials per cell (at least 1), on the same seed.
   const std::vector<analysis::Experiment> paper = analysis::paperExperiments(trials_, seed_);
   const std::vector<analysis::Experiment> sensitivity =

@@ -13,6 +13,7 @@
 #include "core/number_text.h"
 #include "core/output_file.h"
 #include "core/printable.h"
+#include "core/progress.h"
 #include "experiments/sweep.h"
 #include "experiments/sweep_mpi.h"
 #include "replay/trial_replays.h"
@@ -71,6 +72,8 @@ int runSweepWithProgress(const experiments::SweepSpec& sweep, const std::filesys
   // would lead the trial files out of it; a device, FIFO or socket in DIR is not ours to
   // replace. Refused before anything is written.
   checkSweepOutputs(sweep, out);
+  // The bar shows the sweep; a trial's own stages ("running steps") would break into it.
+  const StagesSilenced quiet;
   ProgressBar bar(shard.whole() ? sweep.name
                                 : sweep.name + " shard " + std::to_string(shard.index) + "/" +
                                       std::to_string(shard.count));

@@ -17,6 +17,19 @@ ProgressHook setProgressHook(ProgressHook hook);
 /// Hands (stage, done, total) to the hook, if one is set.
 void reportProgress(const char* stage, double done, double total);
 
+/// While alive, stages reach no hook (for a command that draws bars of its own, such as a
+/// sweep's, into which a trial's "running steps" would break); the hook is restored after.
+class StagesSilenced {
+ public:
+  StagesSilenced() : previous_(setProgressHook(nullptr)) {}
+  ~StagesSilenced() { setProgressHook(previous_); }
+  StagesSilenced(const StagesSilenced&) = delete;
+  StagesSilenced& operator=(const StagesSilenced&) = delete;
+
+ private:
+  ProgressHook previous_;
+};
+
 /// A loop's progress: the start is reported, then add() counts units and reports every `every`
 /// of them; the end of the stage (finish() or the destructor) is reported once more.
 class ProgressCounter {

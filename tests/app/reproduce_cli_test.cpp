@@ -18,6 +18,8 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
       canopy::cli_test::runIn(dir.parent_path(), "reproduce --out " + dir.string() +
                                                       " --trials 2 --jobs 2 --timing-trials 1");
   ASSERT_EQ(outcome.code, 0) << outcome.err;
+  // The sweeps' bars only: no trial's stage line ("canopy: running steps: …") breaks into them.
+  EXPECT_EQ(outcome.err.find("canopy: running steps"), std::string::npos) << outcome.err;
   const std::string report = slurp(dir / "report.md");
   EXPECT_NE(report.find("| trajectory_handover | SMA-NBO | 5 |"), std::string::npos);
   EXPECT_NE(report.find("| occlusion_sharing | SMA-NBO | III |"), std::string::npos);
