@@ -83,6 +83,15 @@ struct Long {  // a count that may pass 2³¹ (cost evaluations)
   }
 };
 
+struct Bool {
+  static constexpr const char* kType = "boolean";
+  static void write(LineOut& out, bool v) { out.j.boolean(v); }
+  static void read(const LineIn& in, const Json& v, bool& x, const At& at) {
+    if (!v.is_boolean()) in.fail(at, "true or false");
+    x = v.get<bool>();
+  }
+};
+
 struct Number {
   static constexpr const char* kType = "number";
   static void write(LineOut& out, double v) { out.j.number(v); }

@@ -38,11 +38,13 @@ RecordSchema makeSchema() {
            field<StepRecord>("scans", [](auto& s) -> auto& { return s.uavs; },
                              Objects<Scan, &RecordSchema::scans, Count::uavs, ScanOf>{}, "",
                              "one per UAV (of `uavs`)",
-                             "per UAV, what its camera reported this step"),
+                             "per UAV, what its camera reported this step")
+               .perAgent(),
            field<StepRecord>("agents", [](auto& s) -> auto& { return s.beliefs; },
                              Objects<AgentBelief, &RecordSchema::agents, Count::uavs>{}, "",
                              "structure: count",
-                             "per agent (one per UAV), its fused belief after this step"),
+                             "per agent (one per UAV), its fused belief after this step")
+               .perAgent(),
            field<StepRecord>("plan", [](auto& s) -> auto& { return s.plan; },
                              Optional<TeamPlan, &RecordSchema::plan>{}, "", "structure: a flag",
                              "on planning epochs only")

@@ -85,12 +85,19 @@ struct Field {
   bool (*present)(const T&) = nullptr;  // written only when true; nullptr: always written
   void (*found)(T&) = nullptr;          // read: the key was there (sets what present() tests)
   void (*reset)(T&) = nullptr;          // sets the value to its type's default
+  bool per_agent = false;               // a list with one entry per agent (`--agent I` cuts it)
 
   /// The field written only when `is(t)`, optional when read (`mark(t)` once read).
   Field when(bool (*is)(const T&), void (*mark)(T&) = nullptr) const {
     Field f = *this;
     f.present = is;
     f.found = mark;
+    return f;
+  }
+  /// The field a list of one entry per agent (record_slice.h keeps entry I of it).
+  Field perAgent() const {
+    Field f = *this;
+    f.per_agent = true;
     return f;
   }
 };
