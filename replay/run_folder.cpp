@@ -75,13 +75,14 @@ RecordedStep recordedStep(const sim::StepRecord& record, const std::vector<std::
 
 std::vector<RecordedStep> readRecord(const fs::path& path, const spec::ScenarioSpec& spec) {
   std::vector<RecordedStep> steps;
-  sim::forEachRecordStep(path, sim::shapeOf(spec), {}, [&](const sim::StepRecord& record,
-                                                           int number) {
-    if (record.step != static_cast<int>(steps.size()))
-      sim::failRecordLine(path.string(), number, "k",
-                          "step " + std::to_string(steps.size()) + " (one line per step, in order)");
-    steps.push_back(recordedStep(record, spec.labels));
-  });
+  sim::forEachRecordStep(
+      path, sim::shapeOf(spec), {}, [&](const sim::StepRecord& record, int number) {
+        if (record.step != static_cast<int>(steps.size()))
+          sim::failRecordLine(
+              path.string(), number, "k",
+              "step " + std::to_string(steps.size()) + " (one line per step, in order)");
+        steps.push_back(recordedStep(record, spec.labels));
+      });
   if (steps.empty()) throw ScenarioError(path.string(), "", "has no steps");
   return steps;
 }

@@ -57,7 +57,8 @@ inline double readNumber(const LineIn& in, const Json& v, const At& at) {
 /// Numbers of a fixed-size list: element n of the JSON list goes to set(n, value).
 template <typename Set>
 void readNumbers(const LineIn& in, const Json& v, std::size_t size, const At& at, Set set) {
-  if (!v.is_array() || v.size() != size) in.fail(at, "a list of " + std::to_string(size) + " numbers");
+  if (!v.is_array() || v.size() != size)
+    in.fail(at, "a list of " + std::to_string(size) + " numbers");
   for (std::size_t n = 0; n < size; ++n) {
     if (!v[n].is_number()) in.fail(at, "a list of " + std::to_string(size) + " numbers");
     set(n, v[n].get<double>());
@@ -134,8 +135,9 @@ struct Mean {
 /// A symmetric N × N matrix as its upper triangle, row by row: P00, P01, …, P0n, P11, ….
 template <int N>
 struct Upper {
-  static constexpr const char* kType =
-      N == 2 ? "[number × 3]" : N == 3 ? "[number × 6]" : "[number × 10]";
+  static constexpr const char* kType = N == 2   ? "[number × 3]"
+                                       : N == 3 ? "[number × 6]"
+                                                : "[number × 10]";
   template <typename M>
   static void write(LineOut& out, const M& P) {
     out.j.beginArray();
@@ -165,8 +167,8 @@ struct Key {  // a track's global key [origin, serial]
     out.j.endArray();
   }
   static void read(const LineIn& in, const Json& v, agents::TrackKey& k, const At& at) {
-    const auto origin = v.is_array() && v.size() == 2 ? spec::integerWithin(v[0], INT_MIN, INT_MAX)
-                                                      : std::nullopt;
+    const auto origin =
+        v.is_array() && v.size() == 2 ? spec::integerWithin(v[0], INT_MIN, INT_MAX) : std::nullopt;
     const auto serial = origin ? spec::integerWithin(v[1], INT_MIN, INT_MAX) : std::nullopt;
     if (!serial) in.fail(at, "a key [origin, serial] (two integers)");
     k = {static_cast<int>(*origin), static_cast<int>(*serial)};
@@ -229,7 +231,8 @@ struct OutlinePoints {  // a polygon's vertex offsets, at most Outline::kMaxVert
   }
   static void read(const LineIn& in, const Json& v, sensing::Outline& o, const At& at) {
     if (!v.is_array() || v.size() > sensing::Outline::kMaxVertices)
-      in.fail(at, "a list of at most " + std::to_string(sensing::Outline::kMaxVertices) + " [x, y]");
+      in.fail(at,
+              "a list of at most " + std::to_string(sensing::Outline::kMaxVertices) + " [x, y]");
     o.vertices = static_cast<int>(v.size());
     for (std::size_t k = 0; k < v.size(); ++k)
       Point::read(in, v[k], o.offsets[k], At{&at, nullptr, static_cast<long>(k)});
@@ -273,7 +276,8 @@ struct Objects {
       list.clear();
       list.resize(v.size());
     } else {  // a part of each item of a list read already (the UAVs' scans)
-      if (list.size() != v.size()) in.fail(at, "a list of " + std::to_string(list.size()) + " entries");
+      if (list.size() != v.size())
+        in.fail(at, "a list of " + std::to_string(list.size()) + " entries");
       for (auto& item : list) View{}(item) = E{};
     }
     for (std::size_t i = 0; i < v.size(); ++i) {

@@ -163,7 +163,8 @@ void writeObject(LineOut& out, const Table<T>& table, const T& t) {
 }
 
 template <typename T>
-void readObject(const LineIn& in, const spec::Json& json, const Table<T>& table, T& t, const At& at) {
+void readObject(const LineIn& in, const spec::Json& json, const Table<T>& table, T& t,
+                const At& at) {
   if (!json.is_object()) in.fail(at, "an object");
   for (const Field<T>& f : table.fields()) {
     const At here{&at, f.key};

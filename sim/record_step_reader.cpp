@@ -13,7 +13,8 @@ RecordShape shapeOf(const spec::ScenarioSpec& spec) {
 
 void failRecordLine(const std::string& file, int line, const std::string& field,
                     const std::string& expected) {
-  throw spec::ScenarioError(file, "line " + std::to_string(line) + (field.empty() ? "" : ": " + field),
+  throw spec::ScenarioError(file,
+                            "line " + std::to_string(line) + (field.empty() ? "" : ": " + field),
                             "expected " + expected);
 }
 

@@ -38,9 +38,9 @@ DemoRun demo(int steps) {
 // UavRecord::climb, which the record does not hold: one entry.
 RecordSchema withClimb() {
   RecordSchema schema = recordSchema();
-  schema.uavs.add(field<UavRecord>("climb", [](auto& u) -> auto& { return u.climb; },
-                                   codec::Number{}, "m/s", kGenericPacking,
-                                   "the climb flown over the step (m/s)"));
+  schema.uavs.add(field<UavRecord>(
+      "climb", [](auto& u) -> auto& { return u.climb; }, codec::Number{}, "m/s", kGenericPacking,
+      "the climb flown over the step (m/s)"));
   return schema;
 }
 
@@ -105,10 +105,9 @@ TEST(RecordFields, ANewFieldIsWrittenReadAndDocumentedFromItsOneEntry) {
 TEST(RecordFields, ANewTrackFieldCountsInTheRuleForUnchangedEntries) {
   const DemoRun run = demo(30);
   RecordSchema schema = recordSchema();
-  schema.tracks.add(field<agents::TrackEstimate>("confirmed",
-                                                 [](auto& t) -> auto& { return t.confirmed; },
-                                                 codec::Bool{}, "", kGenericPacking,
-                                                 "the track is confirmed"));
+  schema.tracks.add(field<agents::TrackEstimate>(
+      "confirmed", [](auto& t) -> auto& { return t.confirmed; }, codec::Bool{}, "", kGenericPacking,
+      "the track is confirmed"));
   StepRecord before = run.steps.back();
   std::size_t tracks = 0;
   for (agents::AgentBelief& b : before.beliefs) {
@@ -159,8 +158,7 @@ TEST(RecordFields, TheReaderNamesTheFieldOfAFault) {
       << errorOf(bad);
   bad = line;
   bad["uavs"][0]["p"] = json::array({1.0});
-  EXPECT_NE(errorOf(bad).find("line 7: uavs.0.p: expected [x, y] (two numbers)"),
-            std::string::npos)
+  EXPECT_NE(errorOf(bad).find("line 7: uavs.0.p: expected [x, y] (two numbers)"), std::string::npos)
       << errorOf(bad);
   bad = line;
   bad["agents"].erase(1);
