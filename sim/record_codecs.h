@@ -148,12 +148,15 @@ struct Upper {
   }
   template <typename M>
   static void read(const LineIn& in, const Json& v, M& P, const At& at) {
-    std::vector<std::pair<int, int>> cells;
-    for (int r = 0; r < N; ++r) {
-      for (int c = r; c < N; ++c) cells.emplace_back(r, c);
-    }
-    readNumbers(in, v, cells.size(), at, [&](std::size_t n, double d) {
-      P(cells[n].first, cells[n].second) = P(cells[n].second, cells[n].first) = d;
+    static const std::vector<std::pair<int, int>> kCells = [] {  // (row, column), in order
+      std::vector<std::pair<int, int>> cells;
+      for (int r = 0; r < N; ++r) {
+        for (int c = r; c < N; ++c) cells.emplace_back(r, c);
+      }
+      return cells;
+    }();
+    readNumbers(in, v, kCells.size(), at, [&](std::size_t n, double d) {
+      P(kCells[n].first, kCells[n].second) = P(kCells[n].second, kCells[n].first) = d;
     });
   }
 };
@@ -252,14 +255,15 @@ struct Contacts {
                    const At& at);
 };
 
-/// A list of objects of type E, each read and written by the schema's table `Member`, each
-/// element `View{}(item)` of the container's items (identity, or a part of each: a UAV's scan).
+/// The item itself (Objects' default view).
 struct Same {
   template <typename X>
   X& operator()(X& x) const {
     return x;
   }
 };
+/// A list of objects of type E, each read and written by the schema's table `Member`, each
+/// element `View{}(item)` of the container's items (the item, or a part of each: a UAV's scan).
 template <typename E, auto Member, Count C = Count::any, typename View = Same>
 struct Objects {
   static constexpr const char* kType = "list";
