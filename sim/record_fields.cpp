@@ -1,7 +1,7 @@
 #include "sim/record_fields.h"
 
 namespace canopy::sim {
-namespace {
+namespace record_tables {  // named, and holding its using-directive: unity builds merge files
 
 using namespace codec;
 using agents::AgentBelief;
@@ -233,10 +233,10 @@ RecordSchema makeSchema() {
   };
 }
 
-}  // namespace
+}  // namespace record_tables
 
 const RecordSchema& recordSchema() {
-  static const RecordSchema schema = makeSchema();
+  static const RecordSchema schema = record_tables::makeSchema();
   return schema;
 }
 
