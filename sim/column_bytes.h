@@ -81,6 +81,13 @@ class ColumnIn {
     if (n > values.remaining() / bytes_each) fail("a count larger than its values' bytes");
     return static_cast<std::size_t>(n);
   }
+  /// The next n bytes as they are.
+  std::string_view raw(std::size_t n) {
+    if (n > remaining()) fail("ends inside a text");
+    const std::string_view out = bytes_.substr(at_, n);
+    at_ += n;
+    return out;
+  }
   double d() { return std::bit_cast<double>(bits()); }
   double dx(double previous) {
     return std::bit_cast<double>(bits() ^ std::bit_cast<std::uint64_t>(previous));

@@ -20,9 +20,9 @@ namespace canopy::sim {
 spec::ScenarioSpec readManifest(const std::filesystem::path& path);
 
 /// The truth of every line of the record at `path` (record.jsonl or record.jsonl.zst) within
-/// `range`, checked against `spec`: one entry per UAV and per target on every line.
-/// WorldSnapshot's step, time, uavs[].position and yaw and targets[].position are filled;
-/// nothing else is recorded as truth.
+/// `range`, each line read whole by the one line reader (record_step_reader.h) against `spec`.
+/// WorldSnapshot's step, time, the UAVs' position, velocity, yaw, contacts and altitude (a UAV
+/// without one: its scenario's) and the targets' position and velocity are filled.
 std::vector<world::WorldSnapshot> readRecordTruth(const std::filesystem::path& path,
                                                   const spec::ScenarioSpec& spec,
                                                   const LineRange& range = {});

@@ -1,5 +1,10 @@
 #include "sim/record_slice.h"
 
+#include <algorithm>
+#include <vector>
+
+#include "sim/record_fields.h"
+
 namespace canopy::sim {
 namespace {
 
@@ -46,10 +51,23 @@ std::optional<std::string_view> element(std::string_view array, std::size_t inde
   return std::nullopt;
 }
 
+// The quoted keys of the step's lists of one entry per agent (record_fields.h: "agents", "scans").
+const std::vector<std::string>& perAgentKeys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> out;
+    for (const Field<StepRecord>& f : recordSchema().step.fields()) {
+      if (f.per_agent) out.push_back("\"" + std::string(f.key) + "\"");
+    }
+    return out;
+  }();
+  return keys;
+}
+
 }  // namespace
 
 std::optional<std::string> agentSlice(std::string_view line, std::size_t agent) {
   if (line.empty() || line.front() != '{') return std::nullopt;
+  const std::vector<std::string>& per_agent = perAgentKeys();
   std::string out = "{";
   std::size_t at = 1;
   int cut = 0;
@@ -66,7 +84,8 @@ std::optional<std::string> agentSlice(std::string_view line, std::size_t agent) 
     if (out.size() > 1) out += ',';
     out.append(key);
     out += ':';
-    if ((key == "\"agents\"" || key == "\"scans\"") && value.front() == '[') {
+    const bool cut_here = std::find(per_agent.begin(), per_agent.end(), key) != per_agent.end();
+    if (cut_here && value.front() == '[') {
       const std::optional<std::string_view> entry = element(value, agent);
       if (!entry) return std::nullopt;
       out += '[';
@@ -78,7 +97,7 @@ std::optional<std::string> agentSlice(std::string_view line, std::size_t agent) 
     }
     at = value_end + (line[value_end] == ',' ? 1 : 0);
   }
-  if (cut != 2) return std::nullopt;
+  if (cut != static_cast<int>(per_agent.size())) return std::nullopt;
   out += '}';
   return out;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // One agent's part of a record line, cut from its text: `canopy record --agent I`. The line keeps
-// every key, byte for byte, except that its "agents" and "scans" lists hold only entry I (agent I's
-// belief and UAV I's scan), so what a reader of the whole line does with agents[0] it does here
-// with agent I.
+// every key, byte for byte, except that its lists of one entry per agent (the fields marked so in
+// record_fields.cpp: "agents" and "scans") hold only entry I (agent I's belief and UAV I's scan),
+// so what a reader of the whole line does with agents[0] it does here with agent I.
 #include <optional>
 #include <string>
 #include <string_view>

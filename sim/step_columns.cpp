@@ -65,6 +65,7 @@ void StepColumnEncoder::add(const StepRecord& record) {
     belief(static_cast<int>(i), record.beliefs[i]);
   scans(record);
   plans(record);
+  extras_.encode(extras_.schema().step, record, s);
   previous_ = record.beliefs;
   ++steps_;
 }
@@ -80,19 +81,25 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
   ColumnOut& map = columns_[kMapColumn];
   s.u(b.trees.size());
   PreviousEntries<agents::TreeEstimate> trees(before ? &before->trees : nullptr);
+  const RecordSchema& schema = extras_.schema();
+  const bool map_extras = !schema.map.generic().empty();
+  const bool track_extras = !schema.tracks.generic().empty();
   TreeValues v{}, w{};
   for (const agents::TreeEstimate& t : b.trees) {
     const int n = gather(t, v);
     const int j = trees.find(t.key);
     const auto ref = static_cast<std::uint64_t>(j);
+    const std::string extra = map_extras ? extras_.text(schema.map, t) : std::string();
     if (j >= 0 && gather(before->trees[ref], w) == n) {
-      if (sameBits(v, w, n)) {
+      if (sameBits(v, w, n) &&
+          (!map_extras || extra == extras_.text(schema.map, before->trees[ref]))) {
         s.u(2 * ref + 1);
         continue;
       }
       s.u(2 * ref + 2);
       for (int k = 0; k < n; ++k)
         map.dx(v[static_cast<std::size_t>(k)], w[static_cast<std::size_t>(k)]);
+      s.bytes() += extra;
       continue;
     }
     s.u(0);
@@ -100,6 +107,7 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
     s.i(t.key.serial);
     s.u(static_cast<std::uint64_t>(t.outline.vertices));
     for (int k = 0; k < n; ++k) map.d(v[static_cast<std::size_t>(k)]);
+    s.bytes() += extra;
   }
   ColumnOut& plan = columns_[kPlanColumn];
   s.u(b.planned_path.size());
@@ -115,16 +123,19 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
     gather(t, x);
     const int j = tracks.find(t.key);
     const auto ref = static_cast<std::uint64_t>(j);
+    const std::string extra = track_extras ? extras_.text(schema.tracks, t) : std::string();
     if (j >= 0) {
       const agents::TrackEstimate& was = before->tracks[ref];
       gather(was, y);
-      if (was.label == t.label && sameBits(x, y, kTrackValues)) {
+      if (was.label == t.label && sameBits(x, y, kTrackValues) &&
+          (!track_extras || extra == extras_.text(schema.tracks, was))) {
         s.u(2 * ref + 1);
         continue;
       }
       s.u(2 * ref + 2);
       label(t.label);
       for (std::size_t k = 0; k < x.size(); ++k) track.dx(x[k], y[k]);
+      s.bytes() += extra;
       continue;
     }
     s.u(0);
@@ -132,7 +143,9 @@ void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
     s.i(t.key.serial);
     label(t.label);
     for (const double value : x) track.d(value);
+    s.bytes() += extra;
   }
+  extras_.encode(schema.agents, b, s);
 }
 
 void StepColumnEncoder::truth(const StepRecord& record) {
@@ -147,6 +160,7 @@ void StepColumnEncoder::truth(const StepRecord& record) {
     const std::array<double, 4> now{t.position.x(), t.position.y(), t.velocity.x(), t.velocity.y()};
     for (std::size_t k = 0; k < now.size(); ++k) c.dx(now[k], targets_[i][k]);
     targets_[i] = now;
+    extras_.encode(extras_.schema().targets, t, s);
   }
   s.u(record.uavs.size());
   uavs_.resize(record.uavs.size(), std::array<double, 8>{});
@@ -164,6 +178,7 @@ void StepColumnEncoder::truth(const StepRecord& record) {
       s.i(static_cast<int>(r.kind));
       s.i(r.index);
     }
+    extras_.encode(extras_.schema().uavs, u, s);
   }
 }
 
@@ -193,7 +208,9 @@ void StepColumnEncoder::scans(const StepRecord& record) {
       c.d(o.z.x());
       c.d(o.z.y());
       if (o.label == sensing::kTreeLabel) c.d(o.radius);
+      extras_.encode(extras_.schema().observations, o, s);
     }
+    extras_.encode(extras_.schema().scans, scan, s);
   }
 }
 
@@ -220,6 +237,7 @@ void StepColumnEncoder::plans(const StepRecord& record) {
     s.u(r.joint_epoch.size());
     for (const int e : r.joint_epoch) s.i(e);
     velocities(r.plan);
+    extras_.encode(extras_.schema().plan_agents, r, s);
   }
   s.u(plan.messages.size());
   for (const auto& m : plan.messages) {
@@ -227,7 +245,9 @@ void StepColumnEncoder::plans(const StepRecord& record) {
     s.i(m.epoch);
     s.i(m.from);
     velocities(m.plan);
+    extras_.encode(extras_.schema().messages, m, s);
   }
+  extras_.encode(extras_.schema().plan, plan, s);
 }
 
 void StepColumnEncoder::take(std::string& out) {

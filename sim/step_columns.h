@@ -10,7 +10,9 @@
 // entry, and nothing more when every value it records (key, label, mean, covariance's upper
 // triangle, existence, outline) has the same bits; otherwise its values follow XORed with that
 // entry's (equal leading bits become zero bytes). UAV and target truth is XORed with the same
-// UAV's or target's at the step before. Everything else is written whole.
+// UAV's or target's at the step before. Everything else is written whole. A field of the record's
+// tables (record_fields.h) with no packing of its own follows its object's values as its JSON
+// text (record_extras.h), and counts in "the same bits" as that text.
 //
 // Block bytes: u labels, each (u length, bytes); u columns (= kColumnCount), each u size; then the
 // columns. Integers and counts go to the structure column (varints), doubles to the column of
@@ -18,11 +20,13 @@
 // second bytes, …: zstd then sees the zero and slowly changing high bytes together).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "sim/column_bytes.h"
+#include "sim/record_extras.h"
 #include "sim/step_record.h"
 
 namespace canopy::sim {
@@ -39,8 +43,11 @@ enum StepColumn : int {
 
 class StepColumnEncoder {
  public:
-  explicit StepColumnEncoder(std::vector<std::string> labels)
-      : labels_(std::move(labels)), written_(labels_.size(), false) {}
+  /// schema: the record's (a table's fields without a packing of their own go as
+  /// record_extras.h says).
+  explicit StepColumnEncoder(std::vector<std::string> labels,
+                             const RecordSchema& schema = recordSchema())
+      : labels_(std::move(labels)), written_(labels_.size(), false), extras_(schema, labels_) {}
   /// Appends `record` to the open block.
   void add(const StepRecord& record);
   std::uint32_t steps() const { return steps_; }
@@ -59,6 +66,7 @@ class StepColumnEncoder {
 
   std::vector<std::string> labels_;
   std::vector<bool> written_;  // by LabelId: checked as dump() would (the first time written)
+  RecordExtras extras_;
   std::array<ColumnOut, kColumnCount> columns_;
   std::uint32_t steps_ = 0;
   // The step before, in this block.
@@ -70,7 +78,7 @@ class StepColumnEncoder {
 /// Reads a block's steps. Every malformed byte is a std::runtime_error naming what is wrong.
 class StepColumnDecoder {
  public:
-  explicit StepColumnDecoder(std::string_view block);
+  explicit StepColumnDecoder(std::string_view block, const RecordSchema& schema = recordSchema());
   const std::vector<std::string>& labels() const { return labels_; }
   /// True while a step remains: rebuilds its recorded fields into `record`.
   bool next(StepRecord& record);
@@ -80,8 +88,15 @@ class StepColumnDecoder {
   void truth(StepRecord& record);
   void scans(StepRecord& record);
   void plans(StepRecord& record);
+  template <typename T>
+  void extra(const Table<T>& table, T& t) {
+    if (!table.generic().empty())
+      extras_->decode(table, t, columns_[kStructureColumn], uavs_.size(), targets_.size());
+  }
 
+  const RecordSchema& schema_;
   std::vector<std::string> labels_;
+  std::optional<RecordExtras> extras_;            // once the labels are read
   std::array<std::string, kColumnCount> planes_;  // double columns back in value order
   std::array<ColumnIn, kColumnCount> columns_;
   std::vector<agents::AgentBelief> previous_;

@@ -16,7 +16,8 @@ constexpr const char* kColumnNames[kColumnCount] = {"structure", "truth", "map",
 
 }  // namespace
 
-StepColumnDecoder::StepColumnDecoder(std::string_view block) {
+StepColumnDecoder::StepColumnDecoder(std::string_view block, const RecordSchema& schema)
+    : schema_(schema) {
   ColumnIn header(block, "header");
   const std::size_t labels = header.count();
   for (std::size_t i = 0; i < labels; ++i) {
@@ -25,6 +26,7 @@ StepColumnDecoder::StepColumnDecoder(std::string_view block) {
     labels_.emplace_back(block.substr(at, length));
     header = ColumnIn(block.substr(at + length), "header");
   }
+  extras_.emplace(schema_, labels_);
   const std::size_t columns = header.count();
   if (columns != kColumnCount) header.fail("6 columns");
   std::array<std::size_t, kColumnCount> sizes{};
@@ -61,6 +63,7 @@ bool StepColumnDecoder::next(StepRecord& record) {
   for (std::size_t i = 0; i < agents; ++i) belief(static_cast<int>(i), record.beliefs[i]);
   scans(record);
   plans(record);
+  extra(schema_.step, record);
   previous_ = record.beliefs;
   return true;
 }
@@ -91,6 +94,7 @@ void StepColumnDecoder::belief(int agent, agents::AgentBelief& b) {
         for (int k = 0; k < n; ++k)
           v[static_cast<std::size_t>(k)] = map.dx(w[static_cast<std::size_t>(k)]);
         scatter(v, b.trees.back());
+        extra(schema_.map, b.trees.back());
       }
       continue;
     }
@@ -103,6 +107,7 @@ void StepColumnDecoder::belief(int agent, agents::AgentBelief& b) {
     const int n = 9 + 2 * t.outline.vertices;
     for (int k = 0; k < n; ++k) v[static_cast<std::size_t>(k)] = map.d();
     scatter(v, t);
+    extra(schema_.map, t);
   }
   ColumnIn& plan = columns_[kPlanColumn];
   const std::size_t path = s.countOf(plan, 16);
@@ -126,6 +131,7 @@ void StepColumnDecoder::belief(int agent, agents::AgentBelief& b) {
         gather(t, y);
         for (std::size_t k = 0; k < x.size(); ++k) x[k] = track.dx(y[k]);
         scatter(x, t);
+        extra(schema_.tracks, t);
       }
       continue;
     }
@@ -135,7 +141,9 @@ void StepColumnDecoder::belief(int agent, agents::AgentBelief& b) {
     t.label = s.bounded(0, labels, "label");
     for (double& value : x) value = track.d();
     scatter(x, t);
+    extra(schema_.tracks, t);
   }
+  extra(schema_.agents, b);
 }
 
 void StepColumnDecoder::truth(StepRecord& record) {
@@ -151,6 +159,7 @@ void StepColumnDecoder::truth(StepRecord& record) {
     for (double& value : now) value = c.dx(value);
     record.targets[i].position = Vec2(now[0], now[1]);
     record.targets[i].velocity = Vec2(now[2], now[3]);
+    extra(schema_.targets, record.targets[i]);
   }
   const std::size_t uavs = s.count();
   record.uavs.resize(uavs);
@@ -173,6 +182,7 @@ void StepColumnDecoder::truth(StepRecord& record) {
       r.kind = static_cast<world::BodyKind>(s.bounded(0, 4, "body kind"));
       r.index = s.bounded(kIntMin, kIntMax, "body index");
     }
+    extra(schema_.uavs, u);
   }
 }
 
@@ -209,7 +219,9 @@ void StepColumnDecoder::scans(StepRecord& record) {
       const double zx = c.d();
       o.z = Vec2(zx, c.d());
       if (o.label == sensing::kTreeLabel) o.radius = c.d();
+      extra(schema_.observations, o);
     }
+    extra(schema_.scans, scan);
   }
 }
 
@@ -238,6 +250,7 @@ void StepColumnDecoder::plans(StepRecord& record) {
     for (std::size_t k = 0; k < epochs; ++k)
       r.joint_epoch.push_back(s.bounded(kIntMin, kIntMax, "epoch"));
     velocities(r.plan);
+    extra(schema_.plan_agents, r);
   }
   const std::size_t messages = s.count();
   for (std::size_t i = 0; i < messages; ++i) {
@@ -246,7 +259,9 @@ void StepColumnDecoder::plans(StepRecord& record) {
     m.epoch = s.bounded(kIntMin, kIntMax, "epoch");
     m.from = s.bounded(kIntMin, kIntMax, "from");
     velocities(m.plan);
+    extra(schema_.messages, m);
   }
+  extra(schema_.plan, plan);
 }
 
 }  // namespace canopy::sim
