@@ -19,7 +19,7 @@ class Reproduce : public Command {
  public:
   explicit Reproduce(CLI::App& canopy)
       : Command(canopy, "reproduce", "canopy reproduce --out DIR [options]",
-                "The paper's experiment table and three sensitivity studies → DIR/report.md.") {
+                "The paper's experiment table and four sensitivity studies → DIR/report.md.") {
     CLI::App& o = options();
     addOutputDir(o, "--out", out_, "where the sweeps and report.md go")->default_str("required");
     addValue(o, "--trials", "N", trials_, integerIn(1, 100000),
