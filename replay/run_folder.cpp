@@ -188,6 +188,7 @@ RecordedStep step(const LineReader& r, const Json& json, const spec::ScenarioSpe
     RecordedAgent& a = s.agents.emplace_back();
     a.position = r.point(r.member(uavs[n], "p", "uavs." + id), "uavs." + id + ".p");
     a.yaw = r.number(uavs[n], "yaw", "uavs." + id);
+    if (uavs[n].is_object() && uavs[n].contains("z")) a.z = r.number(uavs[n], "z", "uavs." + id);
     if (uavs[n].is_object() && uavs[n].contains("contacts")) {  // only at steps with one
       const Json& contacts = uavs[n]["contacts"];
       if (!contacts.is_array()) r.fail("uavs." + id + ".contacts", "a list of names");

@@ -72,6 +72,7 @@
       raw.trees[3 * i + 2] = tr[i];
     }
     raw.uav = interleave(S, A, [c.uav_x, c.uav_y, c.uav_yaw], [100, 100, 1000]);
+    if (c.uav_z) raw.uav_z = interleave(S, A, [c.uav_z], [100]);  // altitudes (issue 53)
     raw.target = interleave(S, T, [c.target_x, c.target_y], [100, 100]);
     // Tracks: track_count[k * A + a] of them at (k, a), in order; the person each stands for
     // gives track_of_target [k][a][t] (-1: none).
