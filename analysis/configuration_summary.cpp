@@ -36,7 +36,8 @@ std::vector<ConfigurationSummary> summariseConfigurations(const SweepAnalysis& a
   std::vector<ConfigurationSummary> rows;
   for (const ConfigStatistics& s : analysis.configs) {
     std::string category = s.id, series;
-    if (!s.point.empty()) category = displayValue(s.point.front().substr(s.point.front().find('=') + 1));
+    if (!s.point.empty())
+      category = displayValue(s.point.front().substr(s.point.front().find('=') + 1));
     for (std::size_t a = 1; a < s.point.size(); ++a) {
       if (a > 1) series += ", ";
       series += pointText(s.point[a]);
@@ -83,11 +84,12 @@ Figure configurationFigure(const std::vector<ConfigurationSummary>& rows,
     const double ly = 50 + legend_row * static_cast<double>(s);
     const int c = static_cast<int>(s);
     f.shapes.push_back(FilledPolygon{seriesMarker(c, Vec2(left + 10, ly), 5.0), seriesColour(c)});
-    f.shapes.push_back(Label{Vec2(left + 24, ly + 4),
-                             series[s].empty() ? "all" : series[s], 10, Anchor::start, kInk});
+    f.shapes.push_back(Label{Vec2(left + 24, ly + 4), series[s].empty() ? "all" : series[s], 10,
+                             Anchor::start, kInk});
   }
-  f.shapes.push_back(Label{Vec2(f.width - right, 54), "markers: mean over trials; bars: 95 % interval",
-                           10, Anchor::end, kInk});
+  f.shapes.push_back(Label{Vec2(f.width - right, 54),
+                           "markers: mean over trials; bars: 95 % interval", 10, Anchor::end,
+                           kInk});
   struct Panel {
     const char* heading;
     Estimate ConfigurationSummary::*value;
@@ -99,7 +101,8 @@ Figure configurationFigure(const std::vector<ConfigurationSummary>& rows,
       {"team OSPA (m), mean over the run", &ConfigurationSummary::team_ospa, false},
       {"people held: fraction, mean over the run", &ConfigurationSummary::held, true}};
   const double plot_w = f.width - left - right;
-  const double column = categories.empty() ? plot_w : plot_w / static_cast<double>(categories.size());
+  const double column =
+      categories.empty() ? plot_w : plot_w / static_cast<double>(categories.size());
   for (int p = 0; p < 3; ++p) {
     const double y0 = top + p * (panel_h + panel_gap);
     double y_max = 1.0;
@@ -127,14 +130,14 @@ Figure configurationFigure(const std::vector<ConfigurationSummary>& rows,
     auto py = [&](double v) { return y0 + panel_h * (1.0 - std::clamp(v / y_max, 0.0, 1.0)); };
     for (int g = 0; g <= 4; ++g) {  // grid and values
       const double v = y_max * g / 4.0;
-      f.shapes.push_back(Line{{Vec2(left, py(v)), Vec2(left + plot_w, py(v))}, 1,
-                              Colour{200, 200, 200}});
+      f.shapes.push_back(
+          Line{{Vec2(left, py(v)), Vec2(left + plot_w, py(v))}, 1, Colour{200, 200, 200}});
       char text[16];
       std::snprintf(text, sizeof text, "%.2f", v);
       f.shapes.push_back(Label{Vec2(left - 8, py(v) + 4), text, 9, Anchor::end, kInk});
     }
-    f.shapes.push_back(Line{{Vec2(left, y0), Vec2(left, y0 + panel_h), Vec2(left + plot_w, y0 + panel_h)},
-                            1.5, kInk});
+    f.shapes.push_back(Line{
+        {Vec2(left, y0), Vec2(left, y0 + panel_h), Vec2(left + plot_w, y0 + panel_h)}, 1.5, kInk});
     f.shapes.push_back(Label{Vec2(left, y0 - 10), panels[p].heading, 10, Anchor::start, kInk});
     for (std::size_t c = 0; c < categories.size(); ++c) {
       const double x = left + column * (static_cast<double>(c) + 0.5);
@@ -144,19 +147,22 @@ Figure configurationFigure(const std::vector<ConfigurationSummary>& rows,
     for (const ConfigurationSummary& r : rows) {
       const Estimate& e = r.*panels[p].value;
       if (e.trials == 0) continue;
-      const auto c = std::find(categories.begin(), categories.end(), r.category) - categories.begin();
+      const auto c =
+          std::find(categories.begin(), categories.end(), r.category) - categories.begin();
       const auto s = std::find(series.begin(), series.end(), r.series) - series.begin();
       // Series side by side within the category's column.
-      const double x = left + column * (static_cast<double>(c) + 0.5) +
-                       column * 0.5 * ((static_cast<double>(s) + 0.5) / static_cast<double>(series.size()) - 0.5);
+      const double x =
+          left + column * (static_cast<double>(c) + 0.5) +
+          column * 0.5 *
+              ((static_cast<double>(s) + 0.5) / static_cast<double>(series.size()) - 0.5);
       const Colour colour = seriesColour(static_cast<int>(s));
       if (e.ci.bounded()) {
         f.shapes.push_back(Line{{Vec2(x, py(e.ci.low)), Vec2(x, py(e.ci.high))}, 2, colour});
         for (const double end : {e.ci.low, e.ci.high})
           f.shapes.push_back(Line{{Vec2(x - 5, py(end)), Vec2(x + 5, py(end))}, 2, colour});
       }
-      f.shapes.push_back(FilledPolygon{seriesMarker(static_cast<int>(s), Vec2(x, py(e.value)), 5.0),
-                                       colour});
+      f.shapes.push_back(
+          FilledPolygon{seriesMarker(static_cast<int>(s), Vec2(x, py(e.value)), 5.0), colour});
     }
   }
   return f;

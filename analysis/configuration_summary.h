@@ -30,8 +30,7 @@ std::vector<ConfigurationSummary> summariseConfigurations(const SweepAnalysis& a
 
 /// Three panels (coverage, team OSPA, held), the first axis's values across, one series per
 /// combination of the other axes: each mean a marker, its 95 % interval a bar.
-Figure configurationFigure(const std::vector<ConfigurationSummary>& rows,
-                           const std::string& title);
+Figure configurationFigure(const std::vector<ConfigurationSummary>& rows, const std::string& title);
 
 /// The table in Markdown, a heading, the figure <figures_dir>/<stem>.png, and how many trials.
 std::string configurationMarkdown(const std::vector<ConfigurationSummary>& rows,

@@ -160,6 +160,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   heads_ = false;
   for (const UavState& u : problem.uavs)
     heads_ = heads_ || u.occlusion == sensing::OcclusionModel::volumes;
+  height_ = heads_;
+  for (const Mover& mover : free_) height_ = height_ || mover.camera;
 
   // Cost scope "reach": a fixed UAV out of every free UAV's reach plays no part
   // (readsPlanOf), and a track whose nominal positions all lie beyond reach(f) plays no part in

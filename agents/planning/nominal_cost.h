@@ -224,8 +224,12 @@ class NominalCost {
                         std::span<double> costs);
   void evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
                     std::span<double> costs);
-  inline void evaluateBody(std::span<const Vec2> actions, std::span<const double> climbs,
-                           std::span<double> costs);
+  // kHeight: some free agent has a camera or uses `volumes`, or the team mixes models (height_);
+  // without, the body is the paper's loop exactly (no per-measurement test of them).
+  template <bool kHeight>
+  [[gnu::always_inline]] inline void evaluateBody(std::span<const Vec2> actions,
+                                                  std::span<const double> climbs,
+                                                  std::span<double> costs);
   // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
   double addTerminalPenalty(int lane, double J);
   // addTerminalPenalty() with many tracks or fixed UAVs (preparePenalty's penalty_merge_,
@@ -267,6 +271,7 @@ class NominalCost {
   std::vector<int> climbers_;          // the free UAVs (f) whose altitude is free, in order
   std::vector<int> climb_slot_;        // per free UAV: its place in climbers_, or −1
   bool heads_ = false;  // some agent uses `volumes`: occluded_ is the head-in-a-volume test
+  bool height_ = false;  // heads_, or some free agent has a camera (evaluateBody<true>)
   int n_uavs_ = 0;
   // Clearance: per free agent, the map's solid parts within its reach over the horizon (empty
   // for a UAV); the fixed bodies' intended positions, T per body; and which free agents keep

@@ -17,18 +17,21 @@ namespace canopy::agents::planning {
 [[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
                                                        std::span<const double> climbs,
                                                        std::span<double> costs) {
-  evaluateBody(actions, climbs, costs);
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 #else  // elsewhere the baseline build only
 void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
                                std::span<double> costs) {
-  evaluateBody(actions, climbs, costs);
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 #endif
 
 void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
                                    std::span<double> costs) {
-  evaluateBody(actions, climbs, costs);
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 
 void NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions,
@@ -43,6 +46,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   return cost;
 }
 
+template <bool kHeight>
 [[gnu::always_inline]] inline void NominalCost::evaluateBody(std::span<const Vec2> actions,
                                                              std::span<const double> climbs,
                                                              std::span<double> costs) {
@@ -93,15 +97,14 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         final_position_[lane * n_uavs_ + free_index_[f]] =
             Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
       }
-      if (free_[f].camera) {  // h_{f,t} per lane (heightsOf's operations, lane by lane)
+      if (kHeight && free_[f].camera) {  // h_{f,t} per lane, heightsOf's operations
         HeightLanes* heights = &free_height_[f * T];
         const int slot = climb_slot_[f];
         double* h = height_scratch_.data();
         for (int lane = 0; lane < kLanes; ++lane) {
-          const double* rates =
-              slot < 0 || climbs.empty()
-                  ? nullptr
-                  : climbs.data() + candidate[lane] * per_climbs + static_cast<std::size_t>(slot) * H;
+          const std::size_t offset =
+              candidate[lane] * per_climbs + static_cast<std::size_t>(slot < 0 ? 0 : slot) * H;
+          const double* rates = slot < 0 || climbs.empty() ? nullptr : climbs.data() + offset;
           heightsOf(free_[f], rates, h);
           for (int t = 0; t < T; ++t) heights[t].h[lane] = h[t];
         }
@@ -130,12 +133,13 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           const int f = std::countr_zero(bits);
           const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
           const Mover& uav = free_[f];
-          if (heads_ && !uav.volumes && under_crown_[k]) continue;  // its model hides it
-          const V4 h = uav.camera ? free_height_[static_cast<std::size_t>(f) * T + t].h : V4{};
+          const bool camera = kHeight && uav.camera;
+          if (kHeight && heads_ && !uav.volumes && under_crown_[k]) continue;  // its model hides it
+          const V4 h = camera ? free_height_[static_cast<std::size_t>(f) * T + t].h : V4{};
           // φ(h) = φ(z)·h/z (class comment)
-          M4 sees = uav.camera ? footprintHoldsScaled(uav.at_origin, pose, z, uav.z / h)
-                               : footprintHolds(uav.at_origin, pose, z);
-          if (uav.line_of_sight || uav.volumes) {  // tested once here, not per lane in sightClear
+          M4 sees = camera ? footprintHoldsScaled(uav.at_origin, pose, z, uav.z / h)
+                           : footprintHolds(uav.at_origin, pose, z);
+          if (uav.line_of_sight || (kHeight && uav.volumes)) {  // once here, not per lane
             for (int lane = 0; lane < kLanes; ++lane) {
               if (sees[lane] != 0 &&
                   !sightClear(uav, Vec2(pose.x[lane], pose.y[lane]),
@@ -146,7 +150,7 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
           }
           if (!lanes::anyLane(sees)) continue;
           NoiseLanes R;
-          if (uav.camera) {  // (ℓ(h)/ℓ(h_ref))·R_ref, the sensor's model
+          if (camera) {  // (ℓ(h)/ℓ(h_ref))·R_ref, the sensor's model
             R = rangeBearingCovariance(z, pose.x, pose.y, uav.reference);
             const V4 factor = slantFactor(z, pose.x, pose.y, h);
             R.r00 *= factor;

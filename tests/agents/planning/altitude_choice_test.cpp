@@ -6,9 +6,9 @@
 // UAV straight above, not from a ground robot's camera at 0.5 m).
 #include "agents/planning/altitude_choice.h"
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -52,8 +52,8 @@ TEST(AltitudeChoice, AtAltitudeScalesFootprintAndNoise) {
 TEST(AltitudeChoice, FootprintGrowthByHand) {
   UavState u = freeAltitudeUav();
   u.climb_rate = 4.0;
-  EXPECT_DOUBLE_EQ(footprintGrowth(u, 5.0), 2.0);    // min(60, 20 + 4·5) / 20
-  EXPECT_DOUBLE_EQ(footprintGrowth(u, 20.0), 3.0);   // z_max = 60
+  EXPECT_DOUBLE_EQ(footprintGrowth(u, 5.0), 2.0);   // min(60, 20 + 4·5) / 20
+  EXPECT_DOUBLE_EQ(footprintGrowth(u, 20.0), 3.0);  // z_max = 60
   u.z_min = u.z_max = 20.0;
   EXPECT_FALSE(altitudeFree(u));
   EXPECT_DOUBLE_EQ(footprintGrowth(u, 5.0), 1.0);
@@ -68,9 +68,9 @@ double costByHand(const std::vector<double>& climbs) {
   Mat4 F = Mat4::Identity();
   F(0, 2) = F(1, 3) = 1.0;
   Mat4 Q = Mat4::Zero();
-  Q(0, 0) = Q(1, 1) = 0.25;                      // τ⁴/4
+  Q(0, 0) = Q(1, 1) = 0.25;                     // τ⁴/4
   Q(0, 2) = Q(2, 0) = Q(1, 3) = Q(3, 1) = 0.5;  // τ³/2
-  Q(2, 2) = Q(3, 3) = 1.0;                       // τ²
+  Q(2, 2) = Q(3, 3) = 1.0;                      // τ²
   Eigen::Matrix<double, 2, 4> Hm = Eigen::Matrix<double, 2, 4>::Zero();
   Hm(0, 0) = Hm(1, 1) = 1.0;
   Mat4 P = 4.0 * Mat4::Identity();
