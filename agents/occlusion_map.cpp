@@ -96,26 +96,21 @@ bool OcclusionMap::occludes(const Vec2& p) const {
 
 bool OcclusionMap::blocksSegment(const Vec2& a, const Vec2& b) const {
   if ((b - a).squaredNorm() < 1e-12) return occludes(a);
-  if (trees_.empty()) return false;
-  const Vec2 lo = a.cwiseMin(b), hi = a.cwiseMax(b);
-  if ((lo.array() > bounds_.hi.array()).any() || (hi.array() < bounds_.lo.array()).any()) {
-    return false;  // the segment's box misses every crown's
-  }
-  // Every tree whose box meets the segment is listed in a cell of the segment's box.
-  auto index = [this](double v, double origin, int count) {  // clamped before the cast: a far
-    return static_cast<int>(std::clamp((v - origin) / cell_, 0.0, count - 1.0));  // end fits
-  };
-  const int c0 = index(lo.x(), bounds_.lo.x(), cols_), c1 = index(hi.x(), bounds_.lo.x(), cols_);
-  const int r0 = index(lo.y(), bounds_.lo.y(), rows_), r1 = index(hi.y(), bounds_.lo.y(), rows_);
-  for (int r = r0; r <= r1; ++r) {
-    for (int c = c0; c <= c1; ++c) {
-      const int cell = r * cols_ + c;
-      for (int i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i) {
-        if (world::segmentEntry(trees_[cell_trees_[i]], a, b) >= 0.0) return true;
-      }
-    }
-  }
-  return false;
+  return anyTreeNear(a, b, [&](const world::TreeDef& tree) {
+    return world::segmentEntry(tree, a, b) >= 0.0;
+  });
+}
+
+bool OcclusionMap::blocksSight(const Vec2& a, double ha, const Vec2& b, double hb) const {
+  return anyTreeNear(a, b, [&](const world::TreeDef& tree) {
+    return world::blocksSight(tree, a, ha, b, hb);
+  });
+}
+
+bool OcclusionMap::hidesHead(const Vec2& p, double head) const {
+  return anyTreeNear(p, p, [&](const world::TreeDef& tree) {
+    return tree.base < head && head < tree.top && world::strictlyInside(tree, p);
+  });
 }
 
 }  // namespace canopy::agents

@@ -71,21 +71,10 @@ std::optional<planning::TeamPlan> Team::plan(int epoch) {
     planning_views_.push_back({agents_[i].planningTracks(), map});
   }
   planning::TeamPlan plan = planner_.plan(epoch, uav_states_, planning_views_);
-  // Height: each UAV whose altitude is free picks a climb rate against its joint plan, on its
-  // own view (one after another: the cost's scratch is shared; the plans are already made).
-  for (std::size_t i = 0; i < agents_.size(); ++i) {
-    const planning::UavState& u = uav_states_[i];
-    if (!u.camera || !(u.z_min < u.z_max)) continue;
-    const planning::PlanningProblem problem{
-        planning_views_[i].tracks, uav_states_, planning_views_[i].map,
-        planning::CostSettings::from(config_.planner, config_.tracking.sigma_a)};
-    const planning::AgentPlanReport& report = plan.reports[i];
-    const std::span<const planning::Plan> joint =
-        report.joint.empty() ? std::span<const planning::Plan>(plan.plans)
-                             : std::span<const planning::Plan>(report.joint);
-    climbs_[i] = planning::chooseClimb(problem, static_cast<int>(i), joint, plan.plans[i],
-                                       config_.planner.plan_period, altitude_cost_);
-  }
+  // Height: a UAV whose altitude is free flies its plan's first climb rate (the swarm chose it
+  // with the speeds and headings, plan_optimizer.h).
+  for (std::size_t i = 0; i < agents_.size(); ++i)
+    climbs_[i] = planning::altitudeFree(uav_states_[i]) ? plan.plans[i].climb(0) : 0.0;
   for (std::size_t i = 0; i < agents_.size(); ++i) {
     planned_paths_[i] =
         planning::plannedPath(uav_states_[i], plan.plans[i], config_.planner.plan_period);

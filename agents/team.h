@@ -97,7 +97,6 @@ class Team {
   std::vector<planning::AgentView> planning_views_;
   std::vector<std::vector<Vec2>> planned_paths_;  // per agent, from its latest plan
   std::vector<double> climbs_;                     // m/s, per agent, from its latest plan
-  planning::NominalCost altitude_cost_;            // scratch of the climb choice
   TaskPool* pool_ = nullptr;
 };
 

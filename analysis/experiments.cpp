@@ -63,16 +63,17 @@ std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
     const char* name;
     bool ownership;
     HeatmapRequest maps;
+    bool team_summary = false;
   };
   // je_reaction: coverage of I in the 0.6 s before it hides, the paper's a-priori reaction lead
   // (1.6 s against 2.2 s).
   for (const Study& s :
        {Study{"ra_distance_horizon", true, {}}, Study{"je_occlusion_spacing", false, {}},
-        Study{"je_reaction", false, {"", 0.6}}}) {
+        Study{"je_reaction", false, {"", 0.6}}, Study{"altitude_tradeoff", false, {}, true}}) {
     const experiments::SweepSpec sweep =
         experiments::loadSweep((dir / (std::string(s.name) + ".json")).string());
-    studies.push_back(
-        {s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership, s.maps});
+    studies.push_back({s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership,
+                       s.maps, s.team_summary});
   }
   return studies;
 }

@@ -19,6 +19,8 @@ struct Experiment {
   bool ownership = false;  // analysed by ownership (TH, RA) or by occlusion (JE, OS)
   HeatmapRequest maps;     // what its sensitivity maps show (default: M* or hidden coverage)
   bool timed = false;      // its planners' decision times are measured (decision_time.h)
+  // Drawn as the team's figures per configuration (configuration_summary.h) instead of maps.
+  bool team_summary = false;
 };
 
 /// A decision period (planner.replan_period, s) the occlusion experiments run with: every 1 s
@@ -43,7 +45,9 @@ std::vector<Experiment> paperExperiments(int trials, std::uint64_t seed);
 std::vector<Experiment> learnedStudies(int trials, std::uint64_t seed);
 
 /// The sensitivity studies of scenarios/sweeps/ (ra_distance_horizon, je_occlusion_spacing,
-/// je_reaction), with `trials` per configuration and the given seed; `ownership` as above.
+/// je_reaction, altitude_tradeoff), with `trials` per configuration and the given seed;
+/// `ownership` as above. altitude_tradeoff (issue 53) is a team summary: coverage, team OSPA
+/// and people held at fixed altitudes and at free altitude, in a sparse and a dense forest.
 std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed);
 
 /// What the paper reports for the frequency of the cooperative state M*_L (Sankey figures).

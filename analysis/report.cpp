@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "analysis/configuration_summary.h"
 #include "analysis/findings.h"
 #include "analysis/heatmap.h"
 #include "analysis/report_learned.h"
@@ -282,6 +283,15 @@ void writeWhereItEmerges(std::ostream& md, const std::vector<ExperimentResult>& 
             ? "Joint Effect: decision period × footprint length (coverage of I in the 0.6 s "
               "before it hides)"
             : name.c_str();
+    if (study.experiment.team_summary) {  // issue 53: the figure and table of each configuration
+      md << configurationMarkdown(summariseConfigurations(study.analysis),
+                                  name == "altitude_tradeoff"
+                                      ? "Should the team fly higher over this forest? Fixed "
+                                        "altitudes against free altitude, sparse and dense forest"
+                                      : name,
+                                  study.figures, kTeamSummaryStem);
+      continue;
+    }
     md << heatmapMarkdown(study.analysis, study.figures, heading, study.experiment.maps);
   }
 }

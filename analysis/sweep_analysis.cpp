@@ -1,7 +1,9 @@
 #include "analysis/sweep_analysis.h"
 
+#include <algorithm>
 #include <sstream>
 
+#include "analysis/configuration_summary.h"
 #include "analysis/figure_png.h"
 #include "analysis/heatmap.h"
 #include "analysis/plots.h"
@@ -56,6 +58,12 @@ std::string estimate(const Estimate& e) {
 }
 
 }  // namespace
+
+bool hasTeamFigures(const SweepAnalysis& analysis) {
+  return !analysis.configs.empty() &&
+         std::all_of(analysis.configs.begin(), analysis.configs.end(),
+                     [](const ConfigStatistics& s) { return !s.trial_team_ospa.empty(); });
+}
 
 void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
   makeOutputDirectories(out_dir, out_dir);
@@ -147,6 +155,17 @@ void writeTables(const SweepAnalysis& analysis, const fs::path& out_dir) {
        {&states_csv, &flows_csv, &changes_csv, &aware_csv, &coverage_csv, &tracking_csv}) {
     csv->write();
   }
+  if (!hasTeamFigures(analysis)) return;
+  // The team per configuration (issue 53), the numbers of team_figures.
+  Csv team_csv(out_dir / "team.csv",
+               "config,trials,coverage,coverage_low,coverage_high,team_ospa_m,team_ospa_low_m,"
+               "team_ospa_high_m,held,held_low,held_high");
+  for (const ConfigurationSummary& row : summariseConfigurations(analysis)) {
+    team_csv.text << quoted(row.config) << ',' << row.coverage.trials << ','
+                  << estimate(row.coverage) << ',' << estimate(row.team_ospa) << ','
+                  << estimate(row.held) << '\n';
+  }
+  team_csv.write();
 }
 
 }  // namespace canopy::analysis
@@ -172,6 +191,11 @@ void writeFigures(const SweepAnalysis& analysis, const fs::path& out_dir,
         out_dir / "coverage", style);
   }
   writeHeatmaps(analysis, out_dir, maps, style);
+  if (hasTeamFigures(analysis)) {  // the team per configuration (issue 53)
+    writeFigure(configurationFigure(summariseConfigurations(analysis),
+                                    analysis.name + ": the team per configuration"),
+                out_dir / kTeamSummaryStem, style);
+  }
 }
 
 }  // namespace canopy::analysis

@@ -40,7 +40,12 @@ SweepAnalysis analyseSweep(const std::filesystem::path& sweep_dir,
 ///   coverage.csv          config, target, step, t_s, mean_coverage (low, high), occluded
 ///   tracking.csv          config, step, t_s, mean_ospa_m (low, high), mean_trace_pos_m2 (low,
 ///                         high)
+///   team.csv              (when hasTeamFigures) config, trials, coverage (low, high),
+///                         team_ospa_m (low, high), held (low, high): configuration_summary.h
 void writeTables(const SweepAnalysis& analysis, const std::filesystem::path& out_dir);
+
+/// Whether every configuration's trials carry the team's figures (team OSPA, people held).
+bool hasTeamFigures(const SweepAnalysis& analysis);
 
 }  // namespace canopy::analysis
 
@@ -56,7 +61,9 @@ struct HeatmapRequest {
 /// Writes sankey_<config>.{svg,png} per configuration, coverage.{svg,png} (one line per
 /// configuration with its 95 % band, one panel per trajectory) and, for a sweep with two numeric
 /// axes, the sensitivity maps heatmap_*.{csv,svg,png} (heatmap.h; `maps` picks what their cells
-/// show, by default M* or the hidden coverage) into out_dir, each also as PDF, all in `style`.
+/// show, by default M* or the hidden coverage) into out_dir, each also as PDF, all in `style`;
+/// and, when the trials carry team figures, team_figures.{svg,png,pdf}: each configuration's team
+/// coverage, team OSPA and people held with their 95 % intervals (configuration_summary.h).
 void writeFigures(const SweepAnalysis& analysis, const std::filesystem::path& out_dir,
                   const HeatmapRequest& maps = {}, const FigureStyle& style = {});
 

@@ -134,6 +134,15 @@ ConfigStatistics summarise(const std::vector<experiments::TrialResult>& trials,
       }
     }
     stats.trial_coverage.push_back(b.coverage);
+    if (team_figures && steps > 0) {  // Σ_k x_k / K over the trial's steps
+      double ospa_sum = 0.0, held_sum = 0.0;
+      for (int k = 0; k < steps; ++k) {
+        ospa_sum += trial.team_ospa[k];
+        held_sum += trial.held[k];
+      }
+      stats.trial_team_ospa.push_back(ospa_sum / steps);
+      stats.trial_held.push_back(held_sum / steps);
+    }
   }
   stats.coverage_ci.assign(targets, std::vector<ConfidenceInterval>(steps));
   stats.ospa_ci.resize(steps);

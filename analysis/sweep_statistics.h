@@ -65,6 +65,9 @@ struct ConfigStatistics {
   std::vector<std::uint64_t> trial_seeds;        // [trial]: its seed, to run it again
   std::vector<std::vector<int>> first_step_in;   // [trial][named state]: first step in it, −1
   std::vector<std::vector<std::vector<int>>> trial_coverage;  // [trial][t][k]: footprints on t
+  // [trial]: its team OSPA (m) and fraction of people held, each averaged over the steps (empty
+  // when the trial files predate the team figures).
+  std::vector<double> trial_team_ospa, trial_held;
 
   /// The JSON text this configuration gives a sweep axis or --set path: its point on the axis
   /// named `path`, else its last override of `path` (axes come after fixed values); "" if none.

@@ -20,7 +20,7 @@ class Reproduce : public Command {
  public:
   explicit Reproduce(CLI::App& canopy)
       : Command(canopy, "reproduce", "canopy reproduce --out DIR [options]",
-                "The paper's experiment table, three sensitivity studies, the learned planner's "
+                "The paper's experiment table, four sensitivity studies, the learned planner's "
                 "held-out variants and each planner's decision time per agent → DIR/report.md.") {
     CLI::App& o = options();
     addOutputDir(o, "--out", out_, "where the sweeps and report.md go")->default_str("required");

@@ -79,6 +79,10 @@ void writeModel(const RunFolder& run, Writer& w, Columns& columns) {
     w.string(std::string(nameOf(world::kAgentKindNames, uav.body.kind)));
     w.raw(",\"colour\":");
     w.string(hexColour(static_cast<int>(i)));
+    if (uav.sensor.camera) {  // its start altitude, the footprint's (altitude.js scales it)
+      w.raw(",\"z\":");
+      w.position(uav.body.z);
+    }
     w.raw(",\"los\":");
     w.raw(sensing::occlusionModel(uav.sensor, spec.sensing) ==
                   sensing::OcclusionModel::line_of_sight
@@ -170,6 +174,17 @@ void writeTruth(const RunFolder& run, Writer& w, Columns& c) {
   c.int32("uav_x", x, S);
   c.int32("uav_y", y, S);
   c.int32("uav_yaw", yaw, S);
+  // Altitudes in cm, only when some UAV has one (issue 53; kMissing for the others).
+  bool altitudes = false;
+  for (std::size_t k = 0; k < S && !altitudes; ++k)
+    for (std::size_t i = 0; i < A; ++i) altitudes = altitudes || std::isfinite(run.steps[k].agents[i].z);
+  if (altitudes) {
+    std::vector<std::int32_t> z(S * A);
+    for (std::size_t k = 0; k < S; ++k)
+      for (std::size_t i = 0; i < A; ++i)
+        z[i * S + k] = fixedPoint(run.steps[k].agents[i].z, kCentimetres);
+    c.int32("uav_z", z, S);
+  }
   x.assign(S * T, 0);
   y.assign(S * T, 0);
   for (std::size_t k = 0; k < S; ++k) {

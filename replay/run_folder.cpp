@@ -40,6 +40,7 @@ RecordedStep recordedStep(const sim::StepRecord& record, const std::vector<std::
     RecordedAgent& a = s.agents.emplace_back();
     a.position = uav.position;
     a.yaw = uav.yaw;
+    if (uav.altitude) a.z = uav.z;  // only UAVs whose scenario gives an altitude (issue 53)
     for (const world::BodyRef& c : uav.contacts)
       a.contacts.push_back(sim::codec::Contacts::name(c));
     a.in_footprint = uav.scan.in_footprint;

@@ -2,6 +2,7 @@
 // A finished run read back from its folder (manifest.json, record.jsonl, summary.json) as plain
 // values: what the replay shows. The record's keys are docs/output-formats.md's.
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ struct RecordedMapEntry {
 struct RecordedAgent {
   Vec2 position = Vec2::Zero();            // m
   double yaw = 0.0;                        // rad
+  double z = std::numeric_limits<double>::quiet_NaN();  // m, altitude (UAVs with one, issue 53)
   std::vector<std::string> contacts;       // what its body touched: "wall:3", "uav:1", …
   std::vector<int> in_footprint, visible;  // target indices
   std::vector<RecordedTrack> tracks;

@@ -1,36 +1,25 @@
 #pragma once
-// Planning in height (issue 53): the climb rate of a UAV whose altitude is free (z_min < z_max),
-// chosen by the NBO cost (nominal_cost.h) with the footprint and noise of each candidate altitude.
-// Kept apart from the swarm: the particle swarm plans the horizontal actions as before, then each
-// free-altitude UAV tries a few climb rates held over the horizon against that joint plan
-// (docs/design-notes.md, "Height").
-#include <span>
-
-#include "agents/planning/nominal_cost.h"
-#include "agents/planning/plan.h"
+// Planning in height (issue 53): what the planner needs of a UAV whose camera follows its
+// altitude. The particle swarm searches the climb rates of every UAV whose altitude is free
+// (plan_optimizer.h) and the NBO cost evaluates each candidate's footprint and noise at the
+// altitude it reaches (nominal_cost.h; docs/design-notes.md, "Height").
 #include "agents/planning/uav_state.h"
 #include "sensing/camera.h"
 
 namespace canopy::agents::planning {
 
-/// The altitude a climb rate `climb` (m/s) held from z reaches at each of the horizon's H
-/// instants, clamped to [z_min, z_max], averaged: z̄ = (1/H) Σ_{m=1..H} clamp(z + climb·m·Δ).
-double meanAltitude(const UavState& uav, double climb, int horizon, double period);
-
-/// `uav` as the cost sees it at altitude `z` (m): its camera's ground footprint there
-/// (sensing::groundFootprint) and its sensor quality α scaled by the slant factor straight below,
-/// z / h_ref (sensing/camera.h's noise model at the footprint's centre: the cost's R stays eq. 2
-/// in form, so the factor is taken at one point). A UAV without a camera is returned unchanged.
+/// `uav` as its sensor is at altitude `z` (m): its camera's ground footprint there
+/// (sensing::groundFootprint) and α scaled by the slant factor straight below, z / h_ref (what
+/// the record and tools show; the NBO cost takes the slant factor at each measured point). A UAV
+/// without a camera is returned unchanged.
 UavState atAltitude(const UavState& uav, double z);
 
-/// The climb rates tried, in order (the first of equal costs wins): hold, then ± the climb rate
-/// and ± half of it, up first.
-inline constexpr double kClimbFractions[] = {0.0, 1.0, -1.0, 0.5, -0.5};
+/// Whether the planner chooses `uav`'s altitude: a camera, z_min < z_max and a climb rate > 0.
+bool altitudeFree(const UavState& uav);
 
-/// The climb rate (m/s) of UAV `agent` whose cost J (its own H actions `own` against the other
-/// UAVs' plans in `joint`, on `problem`) is least when the UAV flies at the mean altitude of
-/// that rate (meanAltitude); 0 when its altitude is not free. `cost` is scratch.
-double chooseClimb(const PlanningProblem& problem, int agent, std::span<const Plan> joint,
-                   const Plan& own, double period, NominalCost& cost);
+/// The largest factor by which `uav`'s footprint can grow within `seconds` (≥ 1): a pinhole
+/// camera's ground footprint is proportional to the altitude, so min(z_max, z + ż_max·t) / z
+/// for a UAV whose altitude is free, 1 for any other.
+double footprintGrowth(const UavState& uav, double seconds);
 
 }  // namespace canopy::agents::planning

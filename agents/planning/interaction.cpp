@@ -1,6 +1,8 @@
 // Which UAVs' plans can interact over a planning horizon (agents/planning/interaction.h).
 #include "agents/planning/interaction.h"
 
+#include "agents/planning/altitude_choice.h"
+
 #include <algorithm>
 
 namespace canopy::agents::planning {
@@ -8,7 +10,8 @@ namespace canopy::agents::planning {
 double reachOf(const CostSettings& s, const UavState& u) {
   const int T = s.horizon * s.substeps;
   const double tau = s.period / s.substeps;
-  return T * u.v_max * tau + sensing::circumradius(u.footprint);
+  // A camera that may climb: the circumradius of its largest footprint within the horizon.
+  return T * u.v_max * tau + sensing::circumradius(u.footprint) * footprintGrowth(u, T * tau);
 }
 
 bool keepsClear(const UavState& u) {

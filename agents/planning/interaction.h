@@ -13,7 +13,7 @@ inline constexpr double kReachSlack = 1e-6;  // m, rounding margin of the reacha
 
 /// reach(u) = T·v_max·τ + circumradius of u's footprint: a UAV's footprint holds only points within
 /// reach(u) of its start over the horizon (speeds are clamped to v_max), T = H·S samples τ = Δ/S
-/// apart.
+/// apart. A UAV that may climb: the circumradius grown by footprintGrowth(u, T·τ).
 double reachOf(const CostSettings& s, const UavState& u);
 
 /// Whether an agent keeps clear (a body the world collides, docs/design-notes.md): every ground

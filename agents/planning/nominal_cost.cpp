@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "agents/planning/altitude_choice.h"
 #include "agents/planning/interaction.h"
 #include "agents/planning/nominal_cost_motion.h"
 #include "agents/tracking/motion_model.h"
@@ -130,14 +131,37 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
                  u.turn_rate,
                  u.radius};
   };
+  // Height (issue 53): a camera's altitude, limits and reference noise; the occlusion model.
+  auto withHeight = [&](Mover mover, const UavState& u) {
+    mover.camera = u.camera.has_value();
+    mover.climbs = altitudeFree(u);
+    mover.volumes = u.occlusion == sensing::OcclusionModel::volumes;
+    mover.z = u.z;
+    mover.z_min = u.z_min;
+    mover.z_max = u.z_max;
+    mover.climb_rate = u.climb_rate;
+    mover.camera_height = u.kind == world::AgentKind::ground ? sensing::kGroundCameraHeight : u.z;
+    mover.reference = sampleQuality({u.reference_alpha, u.quality.r0});
+    return mover;
+  };
   map_ = problem.map;
   std::vector<char> is_free(n_uavs, 0);
   free_.clear();
   free_index_.assign(free_agents.begin(), free_agents.end());
+  climbers_.clear();
+  climb_slot_.assign(free_agents.size(), -1);
   for (const int i : free_agents) {
     is_free[i] = 1;
-    free_.push_back(moverOf(problem.uavs[i]));
+    free_.push_back(withHeight(moverOf(problem.uavs[i]), problem.uavs[i]));
+    if (!free_.back().climbs) continue;
+    climb_slot_[free_.size() - 1] = static_cast<int>(climbers_.size());
+    climbers_.push_back(static_cast<int>(free_.size()) - 1);
   }
+  heads_ = false;
+  for (const UavState& u : problem.uavs)
+    heads_ = heads_ || u.occlusion == sensing::OcclusionModel::volumes;
+  height_ = heads_;
+  for (const Mover& mover : free_) height_ = height_ || mover.camera;
 
   // Cost scope "reach": a fixed UAV out of every free UAV's reach plays no part
   // (readsPlanOf), and a track whose nominal positions all lie beyond reach(f) plays no part in
@@ -152,7 +176,9 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   std::vector<Mover> fixed_movers(n_uavs);
   std::vector<Vec2> fixed_pos(static_cast<std::size_t>(n_uavs) * T);
   std::vector<Vec2> fixed_heading(fixed_pos.size());
+  std::vector<double> fixed_height(fixed_pos.size());  // m, a camera agent's altitude
   std::vector<Vec2> actions(H);
+  std::vector<double> climbs(H);
   for (int i = 0; i < n_uavs; ++i) {
     if (is_free[i]) {
       penalty_uavs_.push_back(i);
@@ -161,11 +187,16 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     const bool in_scope = informs(problem, free_agents, i);
     if (!in_scope && !mayTouch(problem, free_agents, i)) continue;
     for (int m = 0; m < H; ++m) actions[m] = assumed[i].action(m);
-    fixed_movers[i] = moverOf(problem.uavs[i]);
+    fixed_movers[i] = withHeight(moverOf(problem.uavs[i]), problem.uavs[i]);
     fly(fixed_movers[i], actions, [&](int t, const Vec2& p, const Vec2& heading) {
       fixed_pos[i * T + t] = p;
       fixed_heading[i * T + t] = heading;
     });
+    if (fixed_movers[i].camera) {
+      for (int m = 0; m < H; ++m) climbs[m] = assumed[i].climb(m);
+      heightsOf(fixed_movers[i], assumed[i].climbs.empty() ? nullptr : climbs.data(),
+                &fixed_height[static_cast<std::size_t>(i) * T]);
+    }
     if (!in_scope) continue;  // flown for the clearance charge only (prepareClearance)
     penalty_uavs_.push_back(i);
     fixed.push_back(i);
@@ -176,6 +207,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   const std::size_t cells = static_cast<std::size_t>(n_targets) * T;
   z_.resize(cells);
   occluded_.assign(cells, 0);
+  under_crown_.assign(heads_ ? cells : 0, 0);
   fixed_seen_.assign(cells, 0);
   fixed_R_.assign(cells, Mat2::Identity());
   reach_.assign(cells, 0);
@@ -202,20 +234,41 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       x.head<2>() += tau * x.tail<2>();  // ξ after t + 1 samples: F(τ)^{t+1} ξ_j, no noise
       const Vec2 z = x.head<2>();
       z_[k] = z;
-      occluded_[k] = problem.map != nullptr && problem.map->occludes(z);
+      if (heads_) {  // hidden from all: the head inside a crown's volume
+        occluded_[k] = problem.map != nullptr && problem.map->hidesHead(z, sensing::kTargetHeight);
+        under_crown_[k] = problem.map != nullptr && problem.map->occludes(z);
+      } else {
+        occluded_[k] = problem.map != nullptr && problem.map->occludes(z);
+      }
       if (!occluded_[k]) {
         Mat2 information = Mat2::Zero();  // Σ R_i⁻¹ over the fixed UAVs that see z
         int seen = 0;
         for (const int i : fixed) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
           // The footprint's constant part (shape, sizes, a sector's cos(θ/2)) placed once per UAV.
+          const Mover& mover = fixed_movers[i];
           const Vec2& heading = fixed_heading[im];
-          if (!fixed_movers[i].at_origin.containsFrom(fixed_pos[im], heading.x(), heading.y(), z) ||
-              !sightClear(fixed_movers[i], fixed_pos[im], z)) {
-            continue;
+          if (heads_ && !mover.volumes && under_crown_[k]) continue;  // its model hides it
+          Mat2 R;
+          if (mover.camera) {  // φ(h) = φ(z)·h/z; R = (ℓ(h)/ℓ(h_ref))·R_ref (class comment)
+            const double h = fixed_height[im];
+            const PoseLanes pose{lanes::broadcast(fixed_pos[im].x()),
+                                 lanes::broadcast(fixed_pos[im].y()),
+                                 lanes::broadcast(heading.x()), lanes::broadcast(heading.y())};
+            if (!footprintHoldsScaled(mover.at_origin, pose, z, lanes::broadcast(mover.z / h))[0] ||
+                !sightClear(mover, fixed_pos[im], h, z)) {
+              continue;
+            }
+            R = sensing::slantNoiseFactor(z, fixed_pos[im], h) *
+                sensing::rangeBearingCovariance(z, fixed_pos[im], mover.reference);
+          } else {
+            if (!mover.at_origin.containsFrom(fixed_pos[im], heading.x(), heading.y(), z) ||
+                !sightClear(mover, fixed_pos[im], mover.camera_height, z)) {
+              continue;
+            }
+            R = sensing::rangeBearingCovariance(z, fixed_pos[im],
+                                                sampleQuality(problem.uavs[i].quality));
           }
-          const Mat2 R = sensing::rangeBearingCovariance(z, fixed_pos[im],
-                                                         sampleQuality(problem.uavs[i].quality));
           if (seen++ == 0) fixed_R_[k] = R;
           information += R.llt().solve(Mat2::Identity());
         }
@@ -224,8 +277,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         for (int f = 0; f < static_cast<int>(free_.size()); ++f) {
           // |p_f − p_{f,0}| ≤ (t + 1)·v_max·τ, and a footprint holds points within its
           // circumradius.
+          // A footprint that may grow (a climb) holds points within its grown circumradius.
           const double radius =
-              (t + 1) * free_[f].v_max * tau + sensing::circumradius(free_[f].footprint);
+              (t + 1) * free_[f].v_max * tau +
+              sensing::circumradius(free_[f].footprint) *
+                  footprintGrowth(problem.uavs[free_agents[f]], (t + 1) * tau);
           if ((z - free_[f].position).norm() <= radius + kReachSlack) reach_[k] |= 1ULL << f;
         }
       }
@@ -250,6 +306,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     if (!reach_scope || start_[j] < T) scope_tracks_.push_back(j);
   }
   free_pose_.resize(free_.size() * T);
+  free_height_.resize(free_.size() * T);
+  height_scratch_.resize(T);
   // A track no free UAV can see ends as the fixed UAVs leave it (evaluate() overwrites the others).
   trace_final_.resize(static_cast<std::size_t>(kLanes) * n_targets);
   in_view_final_.resize(trace_final_.size());
@@ -365,6 +423,24 @@ void NominalCost::prepareClearance(const PlanningProblem& problem, std::span<con
   }
 }
 
+void NominalCost::heightsOf(const Mover& uav, const double* climbs, double* heights) const {
+  const int T = horizon_ * substeps_;
+  if (!uav.climbs || climbs == nullptr) {
+    std::fill(heights, heights + T, uav.z);
+    return;
+  }
+  const double tau = period_ / substeps_;  // s, between samples
+  double z = uav.z;
+  int t = 0;
+  for (int m = 0; m < horizon_; ++m) {
+    const double step = std::clamp(climbs[m], -uav.climb_rate, uav.climb_rate) * tau;  // m
+    for (int sample = 0; sample < substeps_; ++sample) {
+      z = std::clamp(z + step, uav.z_min, uav.z_max);  // h_t = clamp(h_{t−1} + c_m·τ)
+      heights[t++] = z;
+    }
+  }
+}
+
 double NominalCost::clearancePenalty(int lane) const {
   constexpr double kForbidden = 1e6;  // m², K₀
   constexpr double kPerMetre = 1e6;   // m²/m, K₁
@@ -413,7 +489,14 @@ double nominalCost(const PlanningProblem& problem, std::span<const Plan> plans) 
   }
   NominalCost cost;
   cost.prepare(problem, everyone, plans);
-  return cost.evaluate(actions);
+  std::vector<double> climbs;  // the climbing UAVs' rates, in index order (prepare's)
+  for (std::size_t i = 0; i < everyone.size(); ++i) {
+    if (!altitudeFree(problem.uavs[i])) continue;
+    for (int m = 0; m < H; ++m) climbs.push_back(plans[i].climb(m));
+  }
+  double J = 0.0;
+  cost.evaluate(actions, climbs, std::span<double>(&J, 1));
+  return J;
 }
 
 }  // namespace canopy::agents::planning

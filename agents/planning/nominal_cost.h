@@ -18,6 +18,7 @@
 #include "agents/planning/uav_state.h"
 #include "core/cpu.h"
 #include "core/types.h"
+#include "sensing/camera.h"
 #include "sensing/footprint.h"
 
 namespace canopy::agents::planning {
@@ -92,6 +93,18 @@ struct PlanningProblem {
 /// comes that close to a known solid is never chosen over one that does not, and deeper is worse.
 /// A UAV with a body (radius r_f > 0) is charged the second term for each other UAV with a body
 /// (they fly above every solid and every robot); UAVs of radius 0 are not charged.
+///
+/// Height (issue 53): an agent with a camera (UavState::camera) flies at an altitude h_{i,t}:
+/// its own z, or, where its altitude is free (altitudeFree), z after the candidate's climb
+/// rates c_{i,m} (clamped to ±climb_rate as the world does), h_t = clamp(h_{t−1} + c_m·τ, z_min,
+/// z_max). Its footprint at h is the one at z scaled by h/z (a pinhole camera's ground footprint
+/// is proportional to the altitude): z_{j,t} is held when z_{j,t} − p lies in φ(z) after scaling
+/// by z/h. Its R is the sensor's, (ℓ(h)/ℓ(h_ref))·R(z_{j,t}, p) with ℓ(h) = √(|z − p|² + h²)
+/// (sensing/camera.h). An agent whose occlusion model is `volumes` sees z_{j,t} when the 3-D
+/// segment from its camera (h, or 0.5 m on a ground robot) to the head 1.7 m above z_{j,t} passes
+/// through no crown volume of the map (OcclusionMap::blocksSight), as its sensor does; a head
+/// inside a crown's volume is hidden from all, and under a crown whose base is above the head
+/// only from the agents of the other models (they hide all that lies under a crown).
 class NominalCost {
  public:
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
@@ -115,10 +128,23 @@ class NominalCost {
   /// (each as evaluate() takes it). The swarm's way in: four candidates run side by side, one per
   /// lane (core/lanes.h), and each gets the bits evaluate() gives it alone.
   void evaluate(std::span<const Vec2> actions, std::span<double> costs) {
-    evaluateWith(instructionSet(), actions, costs);
+    evaluateWith(instructionSet(), actions, {}, costs);
+  }
+  /// The same with climb rates: climbs holds climbCount() per candidate (m/s, c_{f,m} of each
+  /// free UAV whose altitude is free, in prepare's order, m = 1..H), or is empty (every altitude
+  /// held).
+  void evaluate(std::span<const Vec2> actions, std::span<const double> climbs,
+                std::span<double> costs) {
+    evaluateWith(instructionSet(), actions, climbs, costs);
   }
   /// evaluate() compiled for the given instruction set (avx2 only where instructionSet() is avx2).
-  void evaluateWith(InstructionSet set, std::span<const Vec2> actions, std::span<double> costs);
+  void evaluateWith(InstructionSet set, std::span<const Vec2> actions, std::span<double> costs) {
+    evaluateWith(set, actions, {}, costs);
+  }
+  void evaluateWith(InstructionSet set, std::span<const Vec2> actions,
+                    std::span<const double> climbs, std::span<double> costs);
+  /// Climb rates per candidate: H for each free UAV whose altitude is free.
+  int climbCount() const { return static_cast<int>(climbers_.size()) * horizon_; }
 
   int horizon() const { return horizon_; }
   int freeCount() const { return static_cast<int>(free_.size()); }
@@ -139,12 +165,30 @@ class NominalCost {
     double yaw;                       // rad, ψ now (the unicycle's heading)
     double turn_rate;                 // rad/s, ω_max of a ground robot
     double radius;                    // m, its body
+    // Height (issue 53).
+    bool camera = false;                // footprint and noise follow the altitude h
+    bool climbs = false;                // its altitude is free: candidates carry climb rates
+    bool volumes = false;               // occlusion model `volumes`: 3-D sight through crowns
+    double z = 0.0, z_min = 0.0, z_max = 0.0;  // m, altitude now and its limits
+    double climb_rate = 0.0;                   // m/s
+    double camera_height = 0.0;  // m, its camera's height when it has no altitude of its own
+    sensing::SensorQuality reference = {};  // α_ref·S, r0: R of one sample at h_ref (camera)
   };
-  // Whether `uav` at p sees the nominal position z that its footprint holds and no crown covers:
-  // under line of sight, when no tree of the map lies on the segment p → z.
-  bool sightClear(const Mover& uav, const Vec2& p, const Vec2& z) const {
-    return !uav.line_of_sight || map_ == nullptr || !map_->blocksSegment(p, z);
+  // Whether `uav` at p (its camera at height h) sees the nominal position z that its footprint
+  // holds and no crown covers: under line of sight, when no tree of the map lies on the segment
+  // p → z; under volumes, when no crown volume lies on the segment from (p, h) to the head.
+  bool sightClear(const Mover& uav, const Vec2& p, double h, const Vec2& z) const {
+    if (map_ == nullptr) return true;
+    if (uav.volumes) return !map_->blocksSight(p, h, z, sensing::kTargetHeight);
+    return !uav.line_of_sight || !map_->blocksSegment(p, z);
   }
+  // The height of `uav`'s camera at altitude h (a ground robot's is fixed).
+  static double cameraHeightAt(const Mover& uav, double h) {
+    return uav.camera ? h : uav.camera_height;
+  }
+  // The altitudes of a camera agent at the H·S samples: its own z, or z after `climbs` (H rates,
+  // or none: hold), h_t = clamp(h_{t−1} + c_m·τ, z_min, z_max).
+  void heightsOf(const Mover& uav, const double* climbs, double* heights) const;
   // Moves a UAV through H actions: sink(t, p, (cos ψ, sin ψ)) at each of the H·S samples t
   // (nominal_cost_motion.h).
   template <class Sink>
@@ -176,9 +220,16 @@ class NominalCost {
     return loss;
   }
   // evaluate()'s body, compiled once per instruction set.
-  void evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs);
-  void evaluateAvx2(std::span<const Vec2> actions, std::span<double> costs);
-  inline void evaluateBody(std::span<const Vec2> actions, std::span<double> costs);
+  void evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
+                        std::span<double> costs);
+  void evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
+                    std::span<double> costs);
+  // kHeight: some free agent has a camera or uses `volumes`, or the team mixes models (height_);
+  // without, the body is the paper's loop exactly (no per-measurement test of them).
+  template <bool kHeight>
+  [[gnu::always_inline]] inline void evaluateBody(std::span<const Vec2> actions,
+                                                  std::span<const double> climbs,
+                                                  std::span<double> costs);
   // J plus the terminal penalty of the candidate in `lane` (added to J term by term).
   double addTerminalPenalty(int lane, double J);
   // addTerminalPenalty() with many tracks or fixed UAVs (preparePenalty's penalty_merge_,
@@ -217,6 +268,10 @@ class NominalCost {
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
   std::vector<Mover> free_;            // the free UAVs, in prepare's order
   std::vector<int> free_index_;        // UAV index of each free UAV
+  std::vector<int> climbers_;          // the free UAVs (f) whose altitude is free, in order
+  std::vector<int> climb_slot_;        // per free UAV: its place in climbers_, or −1
+  bool heads_ = false;  // some agent uses `volumes`: occluded_ is the head-in-a-volume test
+  bool height_ = false;  // heads_, or some free agent has a camera (evaluateBody<true>)
   int n_uavs_ = 0;
   // Clearance: per free agent, the map's solid parts within its reach over the horizon (empty
   // for a UAV); the fixed bodies' intended positions, T per body; and which free agents keep
@@ -235,6 +290,7 @@ class NominalCost {
   // Per track j and sample t = (m − 1)·S + s − 1 (s = 1..S), at [j·H·S + t].
   std::vector<Vec2> z_;                   // m, nominal position H F^m ξ_j
   std::vector<std::uint8_t> occluded_;    // z_{j,m} strictly inside a crown (hidden from all)
+  std::vector<std::uint8_t> under_crown_;  // with heads_: z_{j,m} strictly inside an outline
   std::vector<std::uint8_t> fixed_seen_;  // some fixed UAV's footprint holds z_{j,m}, not hidden
   std::vector<Mat2> fixed_R_;             // m², R_fix where fixed_seen_ (else I)
   std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
@@ -272,6 +328,13 @@ class NominalCost {
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
   std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]
+  // m, h_{f,t} of a camera agent, at [f·H·S + t]; aligned to 32 bytes in every translation
+  // unit as PoseLanes is (the AVX2 cost's aligned loads).
+  struct alignas(32) HeightLanes {
+    V4 h;
+  };
+  std::vector<HeightLanes> free_height_;
+  std::vector<double> height_scratch_;  // m, one lane's h_{f,t}, t < H·S
   std::vector<Vec2> final_position_;  // m, p_{i,H} of every UAV, at [lane·n_uavs + i]
   std::vector<double> stage_terms_;   // m², γ^{m−1} tr(P_{j,m}), 4 lanes at [4(j·H + m − 1)]
   std::vector<double> trace_final_;   // m², tr(P_{j,H}[pos]), 4 lanes at [4j]

@@ -15,22 +15,29 @@ namespace canopy::agents::planning {
 
 #if defined(__x86_64__)
 [[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
+                                                       std::span<const double> climbs,
                                                        std::span<double> costs) {
-  evaluateBody(actions, costs);
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 #else  // elsewhere the baseline build only
-void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<double> costs) {
-  evaluateBody(actions, costs);
+void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
+                               std::span<double> costs) {
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 #endif
 
-void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<double> costs) {
-  evaluateBody(actions, costs);
+void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
+                                   std::span<double> costs) {
+  height_ ? evaluateBody<true>(actions, climbs, costs)
+          : evaluateBody<false>(actions, climbs, costs);
 }
 
 void NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions,
-                               std::span<double> costs) {
-  set == InstructionSet::avx2 ? evaluateAvx2(actions, costs) : evaluateBaseline(actions, costs);
+                               std::span<const double> climbs, std::span<double> costs) {
+  set == InstructionSet::avx2 ? evaluateAvx2(actions, climbs, costs)
+                              : evaluateBaseline(actions, climbs, costs);
 }
 
 double NominalCost::evaluate(std::span<const Vec2> actions) {
@@ -39,7 +46,9 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   return cost;
 }
 
+template <bool kHeight>
 [[gnu::always_inline]] inline void NominalCost::evaluateBody(std::span<const Vec2> actions,
+                                                             std::span<const double> climbs,
                                                              std::span<double> costs) {
   using lanes::load;
   using lanes::store;
@@ -51,6 +60,12 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
   if (actions.size() != per_candidate * n_candidates) {
     std::fprintf(stderr, "NominalCost::evaluate: %zu actions for %zu candidates of %zu\n",
                  actions.size(), n_candidates, per_candidate);
+    std::abort();
+  }
+  const std::size_t per_climbs = static_cast<std::size_t>(climbCount());
+  if (!climbs.empty() && climbs.size() != per_climbs * n_candidates) {
+    std::fprintf(stderr, "NominalCost::evaluate: %zu climb rates for %zu candidates of %zu\n",
+                 climbs.size(), n_candidates, per_climbs);
     std::abort();
   }
   for (std::size_t first = 0; first < n_candidates; first += kLanes) {
@@ -82,6 +97,18 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         final_position_[lane * n_uavs_ + free_index_[f]] =
             Vec2(poses[T - 1].x[lane], poses[T - 1].y[lane]);
       }
+      if (kHeight && free_[f].camera) {  // h_{f,t} per lane, heightsOf's operations
+        HeightLanes* heights = &free_height_[f * T];
+        const int slot = climb_slot_[f];
+        double* h = height_scratch_.data();
+        for (int lane = 0; lane < kLanes; ++lane) {
+          const std::size_t offset =
+              candidate[lane] * per_climbs + static_cast<std::size_t>(slot < 0 ? 0 : slot) * H;
+          const double* rates = slot < 0 || climbs.empty() ? nullptr : climbs.data() + offset;
+          heightsOf(free_[f], rates, h);
+          for (int t = 0; t < T; ++t) heights[t].h[lane] = h[t];
+        }
+      }
     }
 
     for (const int j : reachable_) {
@@ -105,16 +132,34 @@ double NominalCost::evaluate(std::span<const Vec2> actions) {
         for (std::uint64_t bits = reach_[k]; bits != 0; bits &= bits - 1) {
           const int f = std::countr_zero(bits);
           const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
-          M4 sees = footprintHolds(free_[f].at_origin, pose, z);
-          if (free_[f].line_of_sight) {  // tested once here, not per lane in sightClear
+          const Mover& uav = free_[f];
+          const bool camera = kHeight && uav.camera;
+          if (kHeight && heads_ && !uav.volumes && under_crown_[k]) continue;  // its model hides it
+          const V4 h = camera ? free_height_[static_cast<std::size_t>(f) * T + t].h : V4{};
+          // φ(h) = φ(z)·h/z (class comment)
+          M4 sees = camera ? footprintHoldsScaled(uav.at_origin, pose, z, uav.z / h)
+                           : footprintHolds(uav.at_origin, pose, z);
+          if (uav.line_of_sight || (kHeight && uav.volumes)) {  // once here, not per lane
             for (int lane = 0; lane < kLanes; ++lane) {
-              if (sees[lane] != 0 && !sightClear(free_[f], Vec2(pose.x[lane], pose.y[lane]), z)) {
+              if (sees[lane] != 0 &&
+                  !sightClear(uav, Vec2(pose.x[lane], pose.y[lane]),
+                              cameraHeightAt(uav, h[lane]), z)) {
                 sees[lane] = 0;
               }
             }
           }
           if (!lanes::anyLane(sees)) continue;
-          NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, free_[f].quality);  // S·R
+          NoiseLanes R;
+          if (camera) {  // (ℓ(h)/ℓ(h_ref))·R_ref, the sensor's model
+            R = rangeBearingCovariance(z, pose.x, pose.y, uav.reference);
+            const V4 factor = slantFactor(z, pose.x, pose.y, h);
+            R.r00 *= factor;
+            R.r01 *= factor;
+            R.r10 *= factor;
+            R.r11 *= factor;
+          } else {
+            R = rangeBearingCovariance(z, pose.x, pose.y, uav.quality);  // S·R
+          }
           R.r00 = sees ? R.r00 : lanes::broadcast(1.0);  // I in a lane that does not see
           R.r01 = sees ? R.r01 : V4{};
           R.r10 = sees ? R.r10 : V4{};

@@ -12,6 +12,11 @@ Vec2 Plan::action(int m) const {
   return velocities[std::min<std::size_t>(std::max(m, 0), velocities.size() - 1)];
 }
 
+double Plan::climb(int m) const {
+  if (climbs.empty()) return 0.0;
+  return climbs[std::min<std::size_t>(std::max(m, 0), climbs.size() - 1)];
+}
+
 Plan shiftedPlan(const Plan& plan, double actions, int horizon) {
   const double whole = std::floor(actions);
   const int k = static_cast<int>(whole);
@@ -25,6 +30,12 @@ Plan shiftedPlan(const Plan& plan, double actions, int horizon) {
       // mean velocity over [t + (m + k + f)·Δ, t + (m + k + 1 + f)·Δ]
       shifted.velocities.push_back((1.0 - f) * plan.action(m + k) + f * plan.action(m + k + 1));
     }
+  }
+  if (plan.climbs.empty()) return shifted;
+  shifted.climbs.reserve(horizon);
+  for (int m = 0; m < horizon; ++m) {  // the mean climb rate over the same interval
+    shifted.climbs.push_back(f == 0.0 ? plan.climb(m + k)
+                                      : (1.0 - f) * plan.climb(m + k) + f * plan.climb(m + k + 1));
   }
   return shifted;
 }

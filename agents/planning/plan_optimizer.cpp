@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "agents/planning/altitude_choice.h"
 #include "agents/planning/swarm_kernels.h"
 #include "core/angles.h"
 
@@ -16,7 +17,14 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   const std::size_t n_free = free_agents.size();
   cost_.prepare(problem, free_agents, assumed);
   actions_.resize(n_free * H);
-  lo_.assign(2 * n_free * H, 0.0);
+  // Height: the climb rates of the free UAVs whose altitude is free follow the speeds and
+  // headings, H each in [−climb_rate, climb_rate] (none: the decision vector is the paper's).
+  const std::size_t n_moves = 2 * n_free * H;
+  const std::size_t n_climbs = static_cast<std::size_t>(cost_.climbCount());
+  std::vector<std::size_t> climbing;  // the free UAVs (f) whose climbs are searched, in order
+  for (std::size_t f = 0; f < n_free; ++f)
+    if (altitudeFree(problem.uavs[free_agents[f]])) climbing.push_back(f);
+  lo_.assign(n_moves + n_climbs, 0.0);
   hi_.resize(lo_.size());
   for (std::size_t f = 0; f < n_free; ++f) {
     for (int m = 0; m < H; ++m) {
@@ -25,25 +33,52 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
       hi_[k + 1] = kTwoPi;
     }
   }
+  for (std::size_t c = 0; c < climbing.size(); ++c) {
+    const double rate = problem.uavs[free_agents[climbing[c]]].climb_rate;
+    for (int m = 0; m < H; ++m) {
+      lo_[n_moves + c * H + m] = -rate;  // m/s
+      hi_[n_moves + c * H + m] = rate;
+    }
+  }
   warm_.clear();
   if (pso.warm_start && n_free > 0 && !warm_start.empty() && warm_start.size() % n_free == 0) {
-    for (std::size_t k = 0; k < warm_start.size(); ++k) {
-      const std::size_t f = k % n_free;
-      for (int m = 0; m < H; ++m) {
-        const Vec2 a = warm_start[k].action(m);
-        const double speed = a.norm();
-        warm_.push_back(std::min(speed, problem.uavs[free_agents[f]].v_max));
-        warm_.push_back(speed > 0.0 ? wrapAnglePositive(std::atan2(a.y(), a.x())) : 0.0);
+    for (std::size_t start = 0; start < warm_start.size(); start += n_free) {
+      for (std::size_t f = 0; f < n_free; ++f) {
+        for (int m = 0; m < H; ++m) {
+          const Vec2 a = warm_start[start + f].action(m);
+          const double speed = a.norm();
+          warm_.push_back(std::min(speed, problem.uavs[free_agents[f]].v_max));
+          warm_.push_back(speed > 0.0 ? wrapAnglePositive(std::atan2(a.y(), a.x())) : 0.0);
+        }
+      }
+      for (const std::size_t f : climbing) {
+        const double rate = problem.uavs[free_agents[f]].climb_rate;
+        for (int m = 0; m < H; ++m)
+          warm_.push_back(std::clamp(warm_start[start + f].climb(m), -rate, rate));
       }
     }
   }
 
   // The whole swarm decoded at once (swarm_kernels.h), then evaluated four particles at a time.
-  const BatchCost batch = [this](std::span<const double> positions, std::span<double> costs) {
+  const BatchCost batch = [this, n_moves, n_climbs](std::span<const double> positions,
+                                                     std::span<double> costs) {
     const std::size_t per_particle = actions_.size();
     swarm_actions_.resize(costs.size() * per_particle);
-    decodeActions(positions, swarm_actions_);
-    cost_.evaluate(swarm_actions_, costs);
+    if (n_climbs == 0) {
+      decodeActions(positions, swarm_actions_);
+      cost_.evaluate(swarm_actions_, costs);
+      return;
+    }
+    // Each particle's speeds and headings, then its climb rates (read as they are).
+    swarm_climbs_.resize(costs.size() * n_climbs);
+    const std::size_t dim = n_moves + n_climbs;
+    for (std::size_t p = 0; p < costs.size(); ++p) {
+      decodeActions(positions.subspan(p * dim, n_moves),
+                    std::span<Vec2>(swarm_actions_).subspan(p * per_particle, per_particle));
+      std::copy_n(positions.begin() + static_cast<std::ptrdiff_t>(p * dim + n_moves), n_climbs,
+                  swarm_climbs_.begin() + static_cast<std::ptrdiff_t>(p * n_climbs));
+    }
+    cost_.evaluate(swarm_actions_, swarm_climbs_, costs);
   };
   SwarmOptions options = SwarmOptions::from(pso, H);
   options.topology = shape.topology;
@@ -56,7 +91,7 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
                         static_cast<std::size_t>(std::max(1, options.particles)) * lo_.size()));
   const SwarmResult best = swarm_.minimise(batch, lo_, hi_, options, rng, warm_);
 
-  decodeActions(best.best, actions_);
+  decodeActions(std::span<const double>(best.best).first(n_moves), actions_);
   PlanSearch search;
   search.cost = best.best_cost;
   search.iterations = best.iterations;
@@ -65,6 +100,10 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   for (std::size_t f = 0; f < n_free; ++f) {
     search.plans[f].velocities.assign(actions_.begin() + f * H, actions_.begin() + (f + 1) * H);
     search.plans[f].cost = best.best_cost;
+  }
+  for (std::size_t c = 0; c < climbing.size(); ++c) {
+    const auto from = best.best.begin() + static_cast<std::ptrdiff_t>(n_moves + c * H);
+    search.plans[climbing[c]].climbs.assign(from, from + H);
   }
   return search;
 }

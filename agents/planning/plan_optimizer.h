@@ -30,7 +30,10 @@ struct SwarmShape {
 
 /// Decision variables, per free UAV f and step m (agent-major): x[2(f·H + m)] = speed ∈ [0,
 /// v_max_f] (m/s), x[2(f·H + m) + 1] = heading ∈ [0, 2π] (rad); a_{f,m} = speed · (cos heading, sin
-/// heading). Keeps its buffers between calls; one instance per thread.
+/// heading). Height (issue 53): then, for each free UAV whose altitude is free (altitudeFree), in
+/// order, its H climb rates x[2·n_free·H + c·H + m] ∈ [−climb_rate, climb_rate] (m/s), returned as
+/// its plan's `climbs`; without such a UAV the vector is the paper's. Keeps its buffers between
+/// calls; one instance per thread.
 class PlanOptimizer {
  public:
   /// free_agents: the UAVs to optimise (SMA: the planning agent; Dec-POMDP: all). assumed: one
@@ -48,6 +51,7 @@ class PlanOptimizer {
   std::vector<double> lo_, hi_, warm_;
   std::vector<Vec2> actions_;        // m/s, the free UAVs' actions of one particle
   std::vector<Vec2> swarm_actions_;  // m/s, every particle's actions (particle-major)
+  std::vector<double> swarm_climbs_;  // m/s, every particle's climb rates (particle-major)
 };
 
 }  // namespace canopy::agents::planning

@@ -8,6 +8,7 @@
 
 #include "agents/planning/covariance_lanes.h"
 #include "core/lanes.h"
+#include "sensing/camera.h"
 #include "sensing/footprint.h"
 #include "sensing/noise.h"
 
@@ -20,11 +21,12 @@ struct alignas(32) PoseLanes {
   V4 x, y, c, s;
 };
 
-/// Per lane: at_origin.containsFrom((x, y), c, s, z).
-[[gnu::always_inline]] inline M4 footprintHolds(const sensing::Footprint& at_origin,
-                                                const PoseLanes& pose, const Vec2& z) {
+/// Per lane: whether the offset (dx, dy) = z − (x, y) lies in the footprint placed at the
+/// origin and turned by the lane's heading, as Footprint::containsFrom tests it.
+[[gnu::always_inline]] inline M4 footprintHoldsOffset(const sensing::Footprint& at_origin,
+                                                      const PoseLanes& pose, const V4& dx,
+                                                      const V4& dy) {
   using sensing::kFootprintSlack;
-  const V4 dx = z.x() - pose.x, dy = z.y() - pose.y;
   if (at_origin.shape == sensing::FootprintShape::quad) {  // a pitched camera (issue 53)
     const V4 qx = pose.c * dx + pose.s * dy;
     const V4 qy = -pose.s * dx + pose.c * dy;
@@ -49,6 +51,31 @@ struct alignas(32) PoseLanes {
   const V4 across = -pose.s * dx + pose.c * dy;
   return (lanes::abs(along) <= at_origin.half.x() + kFootprintSlack) &
          (lanes::abs(across) <= at_origin.half.y() + kFootprintSlack);
+}
+
+/// Per lane: at_origin.containsFrom((x, y), c, s, z).
+[[gnu::always_inline]] inline M4 footprintHolds(const sensing::Footprint& at_origin,
+                                                const PoseLanes& pose, const Vec2& z) {
+  return footprintHoldsOffset(at_origin, pose, z.x() - pose.x, z.y() - pose.y);
+}
+
+/// Per lane: whether the footprint scaled by 1/k about the lane's ground point holds z, i.e.
+/// k·(z − p) lies in at_origin (height: the footprint at altitude h is the one at z0 scaled by
+/// h/z0, so k = z0/h; the slack kFootprintSlack is then in the scaled frame).
+[[gnu::always_inline]] inline M4 footprintHoldsScaled(const sensing::Footprint& at_origin,
+                                                      const PoseLanes& pose, const Vec2& z,
+                                                      const V4& k) {
+  return footprintHoldsOffset(at_origin, pose, (z.x() - pose.x) * k, (z.y() - pose.y) * k);
+}
+
+/// Per lane: the slant factor ℓ(h)/ℓ(h_ref) of sensing::slantNoiseFactor,
+/// √(|z − p|² + h²) / √(|z − p|² + h_ref²).
+[[gnu::always_inline]] inline V4 slantFactor(const Vec2& z, const V4& x, const V4& y,
+                                             const V4& h) {
+  const V4 dx = z.x() - x, dy = z.y() - y;
+  const V4 r2 = dx * dx + dy * dy;
+  const double h_ref = sensing::kDefaultAltitude;
+  return lanes::sqrt(r2 + h * h) / lanes::sqrt(r2 + h_ref * h_ref);
 }
 
 /// Per lane: R(z, p) of sensing::rangeBearingCovariance with p = (x, y).

@@ -15,6 +15,11 @@ the UAV starts grown by the distance the fastest UAV flies in the episode, yaw i
 velocities within max(50, 5·v_max) m/s, variances in [0, 10⁴] m², tree offsets and radii within
 map_radius.
 Action: a velocity (vx, vy) in m/s, within ±v_max per axis; the simulation clamps its norm.
+Height (issue 53): when some UAV's altitude is free (its scenario gives z_min < z_max and a
+climb_rate > 0; ``altitude=None``, the default, detects it, ``altitude=False`` keeps the plane),
+every observation ends with the agent's altitude z (m, within [z_min, z_max]) and every action is
+(vx, vy, vz), vz the climb rate in m/s within ±climb_rate (0 for a UAV whose altitude is fixed);
+the world keeps z within [z_min, z_max].
 Reward: minus the NBO stage cost of the agent's fused belief, −Σ_j tr(P_j) over its target
 tracks, with the position block of P_j (reward_trace="position", the planner's default
 cost_trace) or all of it ("full"); or reward_fn(sim, agent_index) when given.
@@ -64,10 +69,12 @@ class TrackingEnv(_ParallelEnv):
 
     def __init__(self, scenario, max_tracks=8, max_trees=8, map_radius=30.0, render_mode=None,
                  render_size=(400, 300), reward_trace="position", reward_fn=None,
-                 keep_planner=False, max_cycles=None):
+                 keep_planner=False, max_cycles=None, altitude=None):
         """scenario: a Scenario, a built-in name or a file. The planner is switched off
         (planner.algorithm = "none") unless keep_planner: the agents' actions fly the UAVs.
-        max_cycles: the episode's length in steps (default and at most the scenario's K)."""
+        max_cycles: the episode's length in steps (default and at most the scenario's K).
+        altitude: None (on when some UAV's altitude is free), True or False: observations end
+        with z and actions carry vz (module docstring)."""
         fn = "TrackingEnv"
         if not isinstance(scenario, Scenario):
             scenario = load(_args.path(scenario, fn, "scenario"))
@@ -107,9 +114,22 @@ class TrackingEnv(_ParallelEnv):
         self._rng = None
         self._window = None
         v_max = [float(u["v_max"]) for u in self.scenario.uavs]
+        # Height: each UAV's altitude limits and the climb rate it may use (0: fixed).
+        limits = [_altitude_limits(u) for u in self.scenario.uavs]
+        if altitude is None:
+            altitude = any(climb > 0.0 for _, _, climb in limits)
+        self.altitude = _args.boolean(altitude, fn, "altitude")
         low, high = self._observer.low, self._observer.high
-        self.observation_spaces = {a: box(low, high, low.shape) for a in self.possible_agents}
-        self.action_spaces = {a: box(-v, v, (2,)) for a, v in zip(self.possible_agents, v_max)}
+        self.observation_spaces, self.action_spaces = {}, {}
+        for a, v, (z_min, z_max, climb) in zip(self.possible_agents, v_max, limits):
+            if self.altitude:
+                o_low, o_high = np.append(low, np.float32(z_min)), np.append(high, np.float32(z_max))
+                self.observation_spaces[a] = box(o_low, o_high, o_low.shape)
+                a_high = np.array([v, v, climb], np.float32)
+                self.action_spaces[a] = box(-a_high, a_high, (3,))
+            else:
+                self.observation_spaces[a] = box(low, high, low.shape)
+                self.action_spaces[a] = box(-v, v, (2,))
         p, s, pi = self._observer.position_bound, self._observer.speed_bound, np.float32(np.pi)
         state_high = np.array([p, p, pi] * len(self.possible_agents) + [p, p, s, s] * n_targets,
                               np.float32)
@@ -162,17 +182,19 @@ class TrackingEnv(_ParallelEnv):
             raise _args.error("TrackingEnv.step", "actions",
                               f"expected one per agent {self.agents}; "
                               f"missing {missing}, unknown {unknown}")
-        commands = np.zeros((len(self.possible_agents), 2))
+        width = 3 if self.altitude else 2
+        expected = "(vx, vy, vz)" if self.altitude else "(vx, vy)"
+        commands = np.zeros((len(self.possible_agents), width))
         for agent in self.agents:
             try:
                 action = np.asarray(actions[agent], dtype=np.float64)
             except (TypeError, ValueError):
                 raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
-                                  f"expected (vx, vy) in m/s, got {actions[agent]!r:.60}") from None
-            if action.shape != (2,) or not np.all(np.isfinite(action)):
+                                  f"expected {expected} in m/s, got {actions[agent]!r:.60}") from None
+            if action.shape != (width,) or not np.all(np.isfinite(action)):
                 raise _args.error("TrackingEnv.step", f"actions[{agent!r}]",
-                                  f"expected shape (2,) of finite numbers (vx, vy in m/s), got shape "
-                                  f"{action.shape} {action!r:.60}")
+                                  f"expected shape ({width},) of finite numbers ({expected[1:-1]} in "
+                                  f"m/s), got shape {action.shape} {action!r:.60}")
             commands[self._index[agent]] = action
         self.sim.step(commands)  # without the GIL: other threads run meanwhile
         acting = self.agents
@@ -241,6 +263,8 @@ class TrackingEnv(_ParallelEnv):
         obs = np.empty((len(self.possible_agents), self._observer.size), np.float32)
         rew = np.empty(len(self.possible_agents))
         self._observer.observe_all(self.sim, obs, rew)
+        if self.altitude:  # the agent's altitude last (m)
+            obs = np.hstack([obs, self.sim.uav_altitudes.astype(np.float32).reshape(-1, 1)])
         return obs, rew
 
     def _show(self, frame):
@@ -266,3 +290,13 @@ class TrackingEnv(_ParallelEnv):
         figure.canvas.draw()
         if self._window_interactive:
             plt.pause(1.0 / self.metadata["render_fps"])
+
+
+def _altitude_limits(uav):
+    """(z_min, z_max, climb rate usable) of a scenario's UAV entry (m, m, m/s): its altitude is
+    free when the entry gives z_min < z_max and a climb_rate > 0 (spec's defaults: z = 20 m,
+    z_min = z_max = z, climb_rate 2 m/s once any of them is given)."""
+    z = float(uav.get("z", 20.0))
+    z_min, z_max = float(uav.get("z_min", z)), float(uav.get("z_max", z))
+    climb = float(uav.get("climb_rate", 2.0)) if z_min < z_max else 0.0
+    return z_min, z_max, climb

@@ -12,7 +12,8 @@ team), ``observation_space`` / ``action_space`` batched, rewards, terminations a
 (n,): the team's reward, the sum of its agents' (``agent_axis=True``: (n, n_agents), each agent's
 own), and Gymnasium's default autoreset, ``AutoresetMode.NEXT_STEP``: the step after an episode
 ends resets that environment (its action is ignored, its reward 0) and returns the new episode's
-first observation. ``autoreset_mode=AutoresetMode.SAME_STEP`` (or "SameStep") resets it in the
+first observation. The vector environment flies in the plane: a UAV whose altitude is free holds
+it (``TrackingEnv(altitude=False)``; TrackingEnv carries z and vz, issue 53). ``autoreset_mode=AutoresetMode.SAME_STEP`` (or "SameStep") resets it in the
 same call instead: its row of the returned observations is then the new episode's first one, and
 its last one is in the infos under both generations' names: ``infos["final_observation"]`` (the
 batch, masked by ``infos["_final_observation"]``, Gymnasium ≤ 0.29) and ``infos["final_obs"]``
@@ -77,7 +78,8 @@ class VectorEnv(_VectorEnvBase):
         # One TrackingEnv, never stepped: the same checks, scenario, spaces and agents.
         self.single_env = TrackingEnv(scenario, max_tracks=max_tracks, max_trees=max_trees,
                                       map_radius=map_radius, reward_trace=reward_trace,
-                                      keep_planner=keep_planner, max_cycles=max_cycles)
+                                      keep_planner=keep_planner, max_cycles=max_cycles,
+                                      altitude=False)
         env = self.single_env
         self.num_envs = int(n)
         self.possible_agents = list(env.possible_agents)

@@ -328,3 +328,28 @@ def test_pickled_env_is_the_env_as_built():
     for agent in a:
         np.testing.assert_array_equal(a[agent], b[agent])
         assert copy.observation_space(agent) == env.observation_space(agent)
+
+
+def test_altitude_free_scenario_observes_z_and_takes_vz():
+    # altitude_tradeoff: two UAVs at 20 m with z in [10, 60] and a climb rate of 2 m/s (issue 53).
+    s = canopy.load("altitude_tradeoff", overrides={"clock.duration": 1.0})
+    env = canopy.TrackingEnv(s)
+    assert env.altitude
+    plane = canopy.TrackingEnv(s, altitude=False)
+    for a in env.possible_agents:
+        space = env.action_space(a)
+        assert space.shape == (3,)
+        assert list(space.high) == [5.0, 5.0, 2.0] and list(space.low) == [-5.0, -5.0, -2.0]
+        assert env.observation_space(a).shape[0] == plane.observation_space(a).shape[0] + 1
+        assert env.observation_space(a).low[-1] == 10.0 and env.observation_space(a).high[-1] == 60.0
+        assert plane.action_space(a).shape == (2,)
+    obs, _ = env.reset(seed=3)
+    assert [float(obs[a][-1]) for a in env.agents] == [20.0, 20.0]
+    # UAV1 climbs at 2 m/s, UAV2 asks for 9 m/s down (clamped to 2): one 0.2 s step, ±0.4 m.
+    obs, _, _, _, _ = env.step({"UAV1": [0.0, 0.0, 2.0], "UAV2": [0.0, 0.0, -9.0]})
+    assert float(obs["UAV1"][-1]) == pytest.approx(20.4)
+    assert float(obs["UAV2"][-1]) == pytest.approx(19.6)
+    with pytest.raises(canopy.ScenarioError, match=r"shape \(3,\)"):
+        env.step({"UAV1": [0.0, 0.0], "UAV2": [0.0, 0.0]})
+    # A scenario without altitude keeps the plane: (vx, vy) and no z.
+    assert not _env().altitude and _env().action_space("UAV1").shape == (2,)

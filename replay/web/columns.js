@@ -66,6 +66,7 @@
     const tx = scaled(c.tree_x, 100), ty = scaled(c.tree_y, 100), tr = scaled(c.tree_r, 100);
     raw.trees = { length: tx.length, x: tx, y: ty, r: tr };  // crowns' centres and radii (m)
     raw.uav = interleave(S, A, [c.uav_x, c.uav_y, c.uav_yaw], [100, 100, 1000]);
+    if (c.uav_z) raw.uav_z = interleave(S, A, [c.uav_z], [100]);  // altitudes (issue 53)
     raw.target = interleave(S, T, [c.target_x, c.target_y], [100, 100]);
     // Tracks: track_count[k * A + a] of them at (k, a), in order. They stay columns (decode.js
     // makes the objects of one (k, a) when asked); copied out, so that the inflated data can

@@ -211,6 +211,9 @@ const CanopyReplay = {};
       const o = (k * A + i) * 3;
       return { x: uav[o], y: uav[o + 1], yaw: uav[o + 2] };
     };
+    // Agent i's altitude at step k (m; NaN for one without), or null: no UAV has one (altitude.js).
+    const uavZ = raw.uav_z || null;
+    run.altitude = uavZ ? function (k, i) { return uavZ[k * A + i]; } : null;
     // What agent i's body touched over step k ("wall:3", "uav:1", …), or null.
     const contacts = new Map();
     (raw.contacts || []).forEach(function (c) { contacts.set(c[0] * A + c[1], c.slice(2)); });

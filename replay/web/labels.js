@@ -68,7 +68,7 @@
     run.agents.forEach(function (agent, i) {
       const p = run.uav(k, i), s = view.toScreen(p.x, p.y);
       symbols.add({ x0: s.x - 10, y0: s.y - 10, x1: s.x + 10, y1: s.y + 10 });
-      items.push({ s: s, text: agent.name, gap: 10, aboveFirst: false });
+      items.push({ s: s, text: agent.name + CanopyReplay.altitudeText(run, k, i), gap: 10, aboveFirst: false });
     });
     // People's symbols and names are placed whether shown or not, so that switching them off
     // does not move an agent's name.

@@ -183,7 +183,7 @@
 
   function drawSensors(ctx, view, run, k) {
     run.agents.forEach(function (agent, i) {
-      const p = run.uav(k, i), f = agent.footprint, r = reach(f), s = view.toScreen(p.x, p.y), rs = r * view.scale;
+      const p = run.uav(k, i), f = CanopyReplay.footprintAt(run, k, i), r = reach(f), s = view.toScreen(p.x, p.y), rs = r * view.scale;
       if (s.x + rs < -2 || s.y + rs < -2 || s.x - rs > view.width + 2 || s.y - rs > view.height + 2) return;  // off the map
       const shadows = agent.los && 2 * rs >= SHADOW_PX;
       if (shadows) ctx.save();

@@ -51,7 +51,7 @@
         });
       } },
       { id: "ospa", label: "OSPA (m)", values: function () { return Float64Array.from(run.ospa[i]); } }
-    ];
+    ].concat(CanopyReplay.altitudeFields(run, i));
   }
 
   function personFields(run, t, a) {

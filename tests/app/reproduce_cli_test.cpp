@@ -67,9 +67,13 @@ TEST(ReproduceCommand, TwoTrialsWriteTheReportWithItsTablesAndFigures) {
   }
   // 20 Sankey diagrams (5 planners — SMA-NBO, Dec-POMDP with the block, the paper's and the
   // local-best joint search, learned — × 2 horizons × 2), 4 coverage figures (SMA-NBO's and the
-  // learned planner's in JE and OS) and 6 sensitivity maps (Resource Allocation; Joint Effect's
-  // occlusion × spacing per occlusion map, and its decision period × footprint per map with a map).
-  EXPECT_EQ(figures, 30);
+  // learned planner's in JE and OS), 6 sensitivity maps (Resource Allocation; Joint Effect's
+  // occlusion × spacing per occlusion map, and its decision period × footprint per map with a map)
+  // and the altitude study's team figure (issue 53).
+  EXPECT_EQ(figures, 31);
+  EXPECT_NE(report.find("Should the team fly higher over this forest?"), std::string::npos);
+  EXPECT_NE(report.find("| free, forest = dense | "), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "altitude_tradeoff" / "analysis" / "team.csv"));
   EXPECT_NE(report.find("| decisions every 0.2 s step | a_priori |"), std::string::npos);
 }
 

@@ -228,6 +228,36 @@ async function main() {
       const outside = tab.requests.filter((u) => u !== "file://" + path.resolve(out) && !u.startsWith("data:"));
       assert(outside.length === 0 && tab.failed.length === 0, "requests beyond the page: " + outside.join(", "));
     });
+    await check("altitudes (issue 53): the record's z at every step, the footprint at it, a label and a plot", async () => {
+      const none = await page.evaluate("CanopyReplay.app.run.altitude === null");
+      assert(none, "a run without altitudes has an altitude column");
+      const high = path.join(work, "altitude");
+      canopyRun(["run", "altitude_tradeoff", "--set", "clock.duration=8", "--out", high, "--html"]);
+      const rec = expect.readRun(high);
+      const tab = await Page.open(browser, 1280, 900);
+      await tab.navigate("file://" + path.resolve(high, "replay.html"));
+      await tab.evaluate("CanopyReplay.ready");
+      const got = await tab.evaluate(`(() => { const r = CanopyReplay.app.run, out = [];
+        for (let k = 0; k < r.steps; k++) out.push(r.agents.map((a, i) => ({ z: r.altitude(k, i),
+          size: CanopyReplay.footprintAt(r, k, i).size, text: CanopyReplay.altitudeText(r, k, i) })));
+        return { steps: out, fields: CanopyReplay.plotFields(r, { kind: "agent", index: 0 }, 0).map((f) => f.id),
+          plotted: Array.from(CanopyReplay.plotFields(r, { kind: "agent", index: 0 }, 0).pop().values()) }; })()`);
+      let moved = 0;
+      rec.record.forEach((line, k) => line.uavs.forEach((u, i) => {
+        const g = got.steps[k][i];
+        assert(Math.abs(g.z - u.z) <= CM, `k=${k} agent ${i}: z ${g.z}, recorded ${u.z}`);
+        // 16 x 12 m at 20 m: the footprint at z is 16 z/20 x 12 z/20 (the record's to 1 cm).
+        assert(Math.abs(g.size[0] - 16 * u.z / 20) <= 0.01 && Math.abs(g.size[1] - 12 * u.z / 20) <= 0.01,
+          `k=${k} agent ${i}: footprint ${g.size} at z ${u.z}`);
+        assert(g.text === " " + Math.round(g.z) + " m", `k=${k} agent ${i}: label "${g.text}"`);
+        if (Math.abs(u.z - 20) > 0.5) moved++;
+      }));
+      assert(moved > 0, "no UAV changed altitude: the check tests nothing");
+      assert(got.fields[got.fields.length - 1] === "altitude", "the timeline's fields: " + got.fields);
+      assert(got.plotted.every((z, k) => Math.abs(z - rec.record[k].uavs[0].z) <= CM), "the plotted altitude");
+      assert(tab.errors.length === 0, tab.errors.join("\n"));
+      await tab.send("Page.close").catch(() => {});
+    });
     assert(page.errors.length === 0, page.errors.join("\n"));
   } finally {
     await browser.close();
