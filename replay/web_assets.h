@@ -16,10 +16,10 @@ extern const std::string_view kSideBySide;        // side_by_side.html: two page
 extern const std::string_view kSideBySideScript;  // side_by_side.js
 
 /// The scripts in the order the page runs them.
-inline std::array<std::string_view, 18> scripts() {
-  return {kDecode,   kColumns,  kView,       kLayers,  kSymbols,  kLabels,
-          kPlans,    kSlowLayers, kSecondRun, kCompare, kBackdrop, kTimeline,
-          kPlots,    kInspect,  kSvgContext, kShare,   kControls, kAltitude, kMain};
+inline std::array<std::string_view, 19> scripts() {
+  return {kDecode,    kColumns,   kView,     kLayers,   kSymbols,   kLabels, kPlans,
+          kSlowLayers, kSecondRun, kCompare, kBackdrop, kTimeline,  kPlots,  kInspect,
+          kSvgContext, kShare,     kControls, kAltitude, kMain};
 }
 
 }  // namespace canopy::replay::web
