@@ -72,8 +72,10 @@ std::vector<Experiment> sensitivityStudies(int trials, std::uint64_t seed) {
         Study{"je_reaction", false, {"", 0.6}}, Study{"altitude_tradeoff", false, {}, true}}) {
     const experiments::SweepSpec sweep =
         experiments::loadSweep((dir / (std::string(s.name) + ".json")).string());
-    studies.push_back({s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership,
-                       s.maps, s.team_summary});
+    Experiment study{s.name, experiments::withTrialsAndSeed(sweep, trials, seed), s.ownership,
+                     s.maps};
+    study.team_summary = s.team_summary;
+    studies.push_back(std::move(study));
   }
   return studies;
 }
