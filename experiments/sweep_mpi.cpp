@@ -7,7 +7,8 @@
 
 #include <stdexcept>
 #include <string>
-#include <system_error>
+
+#include "core/program_module.h"
 
 namespace canopy::experiments {
 namespace fs = std::filesystem;
@@ -30,12 +31,7 @@ const Module& module() {
           "openmpi-bin, then rebuild (./canopy does both)";
       return m;
     }
-    std::error_code error;
-    const fs::path program = fs::read_symlink("/proc/self/exe", error);
-    const fs::path beside = program.parent_path() / name;
-    const fs::path installed =
-        program.parent_path().parent_path() / CANOPY_MPI_MODULE_LIBDIR / name;
-    const fs::path path = fs::exists(beside, error) ? beside : installed;
+    const fs::path path = programModulePath(name, CANOPY_MPI_MODULE_LIBDIR);
     void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
     if (!handle) {
       const char* why = ::dlerror();

@@ -6,8 +6,8 @@
 
 #include <filesystem>
 #include <stdexcept>
-#include <system_error>
 
+#include "core/program_module.h"
 #include "gis/import_module.h"
 
 namespace canopy::gis {
@@ -22,12 +22,7 @@ struct Module {
 const Module& module() {
   static const Module loaded = [] {
     Module m;
-    std::error_code error;
-    const fs::path program = fs::read_symlink("/proc/self/exe", error);
-    const fs::path beside = program.parent_path() / CANOPY_GIS_MODULE;
-    const fs::path installed =
-        program.parent_path().parent_path() / CANOPY_GIS_MODULE_LIBDIR / CANOPY_GIS_MODULE;
-    const fs::path path = fs::exists(beside, error) ? beside : installed;
+    const fs::path path = programModulePath(CANOPY_GIS_MODULE, CANOPY_GIS_MODULE_LIBDIR);
     void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       const char* why = ::dlerror();
