@@ -37,6 +37,11 @@ double TeamPlanner::actionsSince(int earlier_epoch, int epoch) const {
   return (epoch - earlier_epoch) * (config_.replan_period / config_.plan_period);
 }
 
+Plan TeamPlanner::heldAt(const Plan& plan, int made, int epoch) const {
+  const int H = settings_.horizon;
+  return made < 0 ? hoverPlan(H) : shiftedPlan(plan, actionsSince(made, epoch), H);
+}
+
 TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
                            std::span<const AgentView> views) {
   const int n = static_cast<int>(uavs.size());
@@ -111,13 +116,10 @@ void TeamPlanner::reportDecisions(const TeamPlan& out, std::span<const UavState>
       // The intentions its search held; its own entry: its previous plan, shifted.
       intentions = out.reports[i].joint;
       const IntentionMessage& own = own_previous_[i];
-      intentions[i] =
-          own.epoch < 0 ? hoverPlan(H) : shiftedPlan(own.plan, actionsSince(own.epoch, out.epoch), H);
+      intentions[i] = heldAt(own.plan, own.epoch, out.epoch);
     } else {
       for (int j = 0; j < n; ++j) {
-        intentions[j] = flown_epoch_ < 0
-                            ? hoverPlan(H)
-                            : shiftedPlan(flown_[j], actionsSince(flown_epoch_, out.epoch), H);
+        intentions[j] = heldAt(flown_[j], flown_epoch_, out.epoch);
       }
     }
     Decision d;
@@ -143,8 +145,7 @@ void TeamPlanner::planLearned(TeamPlan& out, std::span<const UavState> uavs,
     links_.route(i, -1, routes);
     for (int j = 0; j < n; ++j) {
       const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
-      intentions[j] =
-          m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
+      intentions[j] = heldAt(m.plan, m.epoch, out.epoch);
       epochs[j] = m.epoch;
     }
     const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
@@ -227,8 +228,7 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
         continue;
       }
       const IntentionMessage& m = j == i ? own_[i] : links_.latest(i, j);
-      joint[j] =
-          m.epoch < 0 ? hoverPlan(H) : shiftedPlan(m.plan, actionsSince(m.epoch, out.epoch), H);
+      joint[j] = heldAt(m.plan, m.epoch, out.epoch);
       joint_epochs_[i][j] = m.epoch;
     }
     levels = std::max(levels, level_[i] + 1);
@@ -395,8 +395,7 @@ void TeamPlanner::planJoint(TeamPlan& out, int planner, std::span<const UavState
         // it at once), shifted by the time elapsed; it hovers until one does.
         links_.send(out.messages.back(), i);
         const IntentionMessage& order = links_.latest(i, i);
-        flown = order.epoch < 0 ? hoverPlan(H)
-                                : shiftedPlan(order.plan, actionsSince(order.epoch, out.epoch), H);
+        flown = heldAt(order.plan, order.epoch, out.epoch);
       }
     }
     out.plans[i] = flown;

@@ -155,6 +155,9 @@ class TeamPlanner {
                        std::span<const AgentView> views);
   /// Actions (of plan_period) elapsed from one epoch to a later one.
   double actionsSince(int earlier_epoch, int epoch) const;
+  /// A plan made at `made` (−1: none yet), as held at `epoch`: shifted by the actions elapsed,
+  /// or hovering when there is none.
+  Plan heldAt(const Plan& plan, int made, int epoch) const;
   PlannerConfig config_;
   CostSettings settings_;
   std::uint64_t seed_;
