@@ -325,6 +325,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   charged_uavs_.assign(n_targets, 0);
   stage_terms_.resize(static_cast<std::size_t>(kLanes) * n_targets * H);
   charged_.assign(penalty_uavs_.size(), 0.0);
+  penalty_charges_ = 0;
 }
 
 void NominalCost::preparePenalty(const std::vector<char>& is_free) {
@@ -388,6 +389,7 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
       return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
     });
   }
+  prepareSkip();
 }
 
 void NominalCost::prepareClearance(const PlanningProblem& problem, std::span<const int> free_agents,

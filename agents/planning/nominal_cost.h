@@ -123,6 +123,10 @@ class NominalCost {
   /// actions: a_{f,m} for each free UAV f (in prepare's order) and m = 1..H, agent-major
   /// (size = free count · H), m/s. Returns J (m², or mixed units with full_trace).
   double evaluate(std::span<const Vec2> actions);
+  /// How many tracks the terminal penalty at scale has charged one at a time since prepare(),
+  /// over every candidate: what its work grows with (the exact skip charges only those a
+  /// candidate can change; tests read it). The paper's plain loop (a few UAVs) does not count.
+  std::size_t penaltyCharges() const { return penalty_charges_; }
 
   /// J of many candidate plans at once: actions holds costs.size() of them, one after the other
   /// (each as evaluate() takes it). The swarm's way in: four candidates run side by side, one per
@@ -242,6 +246,15 @@ class NominalCost {
     double total, distance;  // m, D_i + |p_{i,H} − z_{j,H}| and |p_{i,H} − z_{j,H}|
   };
   int sortUncovered(int lane);
+  // The exact skip (terminal_penalty_skip.cpp): with many tracks that no candidate changes,
+  // prepare() charges them once to the fixed UAVs (the baseline) and a candidate charges again
+  // only the tracks whose charge it can change: the ones it may leave uncovered, and those that a
+  // UAV whose D_i differs from the baseline's (its free UAVs first) could take or give up. The
+  // same charges as the loop; J's penalty is summed in another order (its last bits may differ).
+  void prepareSkip();
+  double addTerminalPenaltySkipping(int lane, double J);
+  // D_k of the baseline before position c of penalty_fixed_order_ (fixed entry k).
+  double baselineChargedBefore(int entry, int c) const;
   Charge leastChargeByIndex(const Vec2* final_position, const Vec2& z,
                             const double* fixed_distance) const;
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
@@ -325,6 +338,33 @@ class NominalCost {
   }
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
   std::vector<double> terminal_distance_;
+  // The exact skip: on from kSkipFrom tracks in penalty_fixed_order_ (with penalty_merge_ and
+  // penalty_nearest_). base_[c]: the baseline's charge of the track at position c: entry, D_i +
+  // distance, distance; base_penalty_ = Σ_c w·total_c·tr_c. Per entry k (offsets at [k, k+1]):
+  // its baseline charges (position, D_k after it), and the positions whose charge it could take
+  // (a fixed entry: distance ≤ total_c; a free one: distance from its start ≤ total_c + the
+  // distance it can fly over the horizon), both by position.
+  static constexpr std::size_t kSkipFrom = 64;
+  static constexpr std::size_t kSkipMaxChanged = 64;  // more UAVs changed: the whole pass
+  struct BaseCharge {
+    int entry;
+    double total, distance;  // m
+  };
+  bool penalty_skip_ = false;
+  std::vector<BaseCharge> base_;
+  double base_penalty_ = 0.0;
+  std::vector<int> win_offset_, win_position_, contest_offset_, contest_position_;
+  std::vector<double> win_after_;  // m, D_k after each charge of win_position_
+  // One call's UAVs whose D_i differs from the baseline's: entry, D_i, next place in its
+  // contest list; changed_slot_ per entry (−1: unchanged).
+  struct Changed {
+    int entry;
+    double charged;  // m
+    int cursor;
+  };
+  std::vector<Changed> changed_;
+  std::vector<int> changed_slot_;
+  std::size_t penalty_charges_ = 0;  // tracks charged one at a time since prepare()
 
   // evaluate()'s per-lane values (four candidates side by side), kept to reuse their memory.
   std::vector<PoseLanes> free_pose_;  // p_{f,t} and (cos ψ, sin ψ) of φ_f, at [f·H·S + t]

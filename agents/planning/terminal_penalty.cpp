@@ -43,8 +43,12 @@ inline NominalCost::Charge NominalCost::leastChargeByIndex(const Vec2* final_pos
 
 double NominalCost::addTerminalPenalty(int lane, double J) {
   if (!terminal_ || charged_.empty()) return J;
-  // Many tracks or UAVs: the same bits by a merge and a nearest-first search.
-  if (penalty_merge_ || penalty_nearest_) return addTerminalPenaltyAtScale(lane, J);
+  // Many tracks or UAVs: the same bits by a merge and a nearest-first search, or, with many
+  // tracks no candidate changes, only those it can (terminal_penalty_skip.cpp).
+  if (penalty_merge_ || penalty_nearest_) {
+    return penalty_skip_ ? addTerminalPenaltySkipping(lane, J)
+                         : addTerminalPenaltyAtScale(lane, J);
+  }
   const int T = horizon_ * substeps_;
   auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
   // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the
@@ -107,6 +111,7 @@ double NominalCost::addTerminalPenaltyAtScale(int lane, double J) {
     }
   }
   if (!merged) count = sortUncovered(lane);
+  penalty_charges_ += static_cast<std::size_t>(count);
   // charged_ is all zero here (prepare() and the end of every call): D_i = 0 for every UAV.
   const Vec2* final_position = &final_position_[static_cast<std::size_t>(lane) * n_uavs_];
   const std::size_t n_charged = penalty_uavs_.size();

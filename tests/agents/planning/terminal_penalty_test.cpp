@@ -103,5 +103,76 @@ TEST(TerminalPenaltyAtScale, BreaksExactTiesAsThePlainLoopDoes) {
   }
 }
 
+// The exact skip (terminal_penalty_skip.cpp) from 64 tracks that no candidate changes: the free
+// UAVs' costs against the plain loop's joint cost (every UAV free there, so nothing is skipped),
+// with `free_agents` free at once (a Dec-POMDP block). Returns the tracks charged one at a time
+// per candidate.
+double expectSkippingAgrees(Scene scene, const std::vector<int>& free_agents, int candidates,
+                            RandomStream& rng, const std::string& where) {
+  CostSettings s;
+  s.horizon = static_cast<int>(scene.plans[0].velocities.size());
+  s.terminal_penalty = true;
+  const PlanningProblem problem{scene.targets, scene.uavs, nullptr, s};
+  NominalCost agents;
+  agents.prepare(problem, free_agents, scene.plans);
+  for (int c = 0; c < candidates; ++c) {
+    std::vector<Vec2> actions;
+    for (const int f : free_agents) {
+      for (int m = 0; m < s.horizon; ++m) {
+        actions.emplace_back(c == 0 ? 0.0 : rng.uniform(-6, 6), c == 0 ? 0.0 : rng.uniform(-6, 6));
+      }
+      scene.plans[f].velocities.assign(actions.end() - s.horizon, actions.end());
+    }
+    const double joint = nominalCost(problem, scene.plans);  // the plain loop
+    const double own = agents.evaluate(actions);
+    EXPECT_NEAR(own, joint, 1e-9 * std::abs(joint)) << where << ", candidate " << c;
+  }
+  return static_cast<double>(agents.penaltyCharges()) / candidates;
+}
+
+// n_uavs UAVs over a square that gives each about 100 m × 100 m, `per_uav` people near each.
+Scene sparseScene(RandomStream& rng, int n_uavs, int per_uav, int horizon) {
+  Scene scene = randomScene(rng, n_uavs, 0, horizon);
+  const double side = 100.0 * std::sqrt(static_cast<double>(n_uavs));
+  for (UavState& u : scene.uavs) u.position = Vec2(rng.uniform(0, side), rng.uniform(0, side));
+  for (int j = 0; j < n_uavs * per_uav; ++j) {
+    const Vec2 near = scene.uavs[j % n_uavs].position;
+    scene.targets.push_back(target(near + Vec2(rng.uniform(-30, 30), rng.uniform(-30, 30)),
+                                   Vec2(rng.uniform(-1.4, 1.4), rng.uniform(-1.4, 1.4)),
+                                   std::exp(rng.uniform(-2.0, 5.0))));
+  }
+  return scene;
+}
+
+TEST(TerminalPenaltySkip, AgreesWithThePlainLoopAndChargesFewTracks) {
+  RandomStream rng(50, "terminal-penalty-skip-test");
+  for (int scene = 0; scene < 8; ++scene) {
+    const int n_uavs = 24 + 4 * scene, per_uav = 4;
+    const Scene s = sparseScene(rng, n_uavs, per_uav, 3 + scene % 3);
+    const double charged = expectSkippingAgrees(s, {scene % n_uavs}, 24, rng,
+                                                "sparse scene " + std::to_string(scene));
+    // The loop charges every uncovered track (most of n_uavs · per_uav); the skip, those near
+    // the free UAV and the UAVs it displaces.
+    EXPECT_LT(charged, 0.25 * n_uavs * per_uav) << "sparse scene " << scene;
+  }
+}
+
+TEST(TerminalPenaltySkip, AgreesWithSeveralFreeUavsAndDenseCrowds) {
+  RandomStream rng(51, "terminal-penalty-skip-dense-test");
+  for (int scene = 0; scene < 6; ++scene) {
+    // Crowded: the free UAVs take charges from many neighbours, whose D_i then differ.
+    const Scene s = randomScene(rng, 20, 120, 3 + scene % 3);
+    expectSkippingAgrees(s, {scene, scene + 7}, 16, rng, "dense scene " + std::to_string(scene));
+  }
+}
+
+TEST(TerminalPenaltySkip, BreaksExactTiesAsThePlainLoopDoes) {
+  RandomStream rng(52, "terminal-penalty-skip-ties-test");
+  for (const int self : {0, 9, 35}) {
+    expectSkippingAgrees(tiedScene(6, 3), {self}, 20, rng,
+                         "tied scene, free UAV " + std::to_string(self));
+  }
+}
+
 }  // namespace
 }  // namespace canopy::agents::planning
