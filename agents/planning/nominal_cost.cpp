@@ -14,6 +14,7 @@
 
 #include "agents/planning/altitude_choice.h"
 #include "agents/planning/interaction.h"
+#include "agents/planning/nearby_uavs.h"
 #include "agents/planning/nominal_cost_motion.h"
 #include "agents/tracking/motion_model.h"
 #include "sensing/noise.h"
@@ -24,6 +25,9 @@ namespace {
 // From this many tracks (or fixed UAVs) on, the terminal penalty orders them by a merge (or
 // searches them nearest first): same bits, fewer instructions (preparePenalty).
 constexpr std::size_t kFastPenaltyFrom = 8;
+
+// From this many fixed UAVs prepare() asks only those near each nominal position (same bits).
+constexpr std::size_t kNearbyFrom = 32;
 
 constexpr int kMaxFreeAgents = 64;  // one bit per free UAV in a reach mask
 
@@ -215,6 +219,24 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   start_.assign(n_targets, T);
   cost_start_.assign(n_targets, 0.0);
 
+  // Many fixed UAVs: each sample's nominal positions ask only the fixed UAVs near them
+  // (nearby_uavs.h), in the same order, unless one has a camera (its footprint grows with its
+  // altitude).
+  bool use_nearby = fixed.size() >= kNearbyFrom;
+  double footprint_reach = 0.0;  // m, the largest circumradius of a fixed UAV's footprint
+  for (const int i : fixed) {
+    use_nearby = use_nearby && !fixed_movers[i].camera;
+    footprint_reach = std::max(footprint_reach, sensing::circumradius(fixed_movers[i].footprint));
+  }
+  std::vector<NearbyUavs> nearby(use_nearby ? T : 0);
+  std::vector<Vec2> position_at(use_nearby ? n_uavs : 0, Vec2::Zero());
+  for (int t = 0; t < T && use_nearby; ++t) {
+    for (const int i : fixed) position_at[i] = fixed_pos[static_cast<std::size_t>(i) * T + t];
+    use_nearby = nearby[t].build(fixed, position_at,
+                                 footprint_reach + sensing::kFootprintSlack + kReachSlack);
+  }
+  std::vector<int> near_fixed;
+
   for (int j = 0; j < n_targets; ++j) {
     Vec4 x = problem.targets[j].x;
     // |z_{j,t} − p_{f,0}| ≥ |ξ_j − p_{f,0}| − T·τ·|v_j|: beyond every free UAV's reach, the track
@@ -243,7 +265,12 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       if (!occluded_[k]) {
         Mat2 information = Mat2::Zero();  // Σ R_i⁻¹ over the fixed UAVs that see z
         int seen = 0;
-        for (const int i : fixed) {
+        std::span<const int> asked = fixed;
+        if (use_nearby) {
+          nearby[t].near(z, near_fixed);
+          asked = near_fixed;
+        }
+        for (const int i : asked) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
           // The footprint's constant part (shape, sizes, a sector's cos(θ/2)) placed once per UAV.
           const Mover& mover = fixed_movers[i];
