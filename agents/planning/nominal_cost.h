@@ -344,7 +344,7 @@ class NominalCost {
   // its baseline charges (position, D_k after it), and the positions whose charge it could take
   // (a fixed entry: distance ≤ total_c; a free one: distance from its start ≤ total_c + the
   // distance it can fly over the horizon), both by position.
-  static constexpr std::size_t kSkipFrom = 64;
+  static constexpr std::size_t kSkipFrom = 16;
   static constexpr std::size_t kSkipMaxChanged = 64;  // more UAVs changed: the whole pass
   struct BaseCharge {
     int entry;
