@@ -85,8 +85,7 @@ void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints
 }
 
 CoverageCounts CoverageCounter::count(std::span<const sensing::Footprint> footprints,
-                                      std::span<const Vec2> targets,
-                                      sensing::OcclusionModel model,
+                                      std::span<const Vec2> targets, sensing::OcclusionModel model,
                                       std::span<const double> camera_heights) {
   Scene mask;
   mask.viewport = viewport_;

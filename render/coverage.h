@@ -63,8 +63,7 @@ class CoverageCounter {
   bool inAoi(int x, int y) const { return x >= x0_ && x <= x1_ && y >= y0_ && y <= y1_; }
   /// Marks visible_ for the covered AOI pixels that some footprint sees.
   void markVisible(std::span<const sensing::Footprint> footprints, sensing::OcclusionModel model,
-                   std::span<const double> camera_heights,
-                   const std::vector<std::uint8_t>& layers);
+                   std::span<const double> camera_heights, const std::vector<std::uint8_t>& layers);
 
   Viewport viewport_;
   int x0_ = 0, x1_ = -1, y0_ = 0, y1_ = -1;  // the AOI's pixels: columns x0..x1, rows y0..y1

@@ -14,8 +14,9 @@ double AltitudeProfile::altitudeAt(double t) const {
   if (t <= points_.front().t) return points_.front().z;
   if (t >= points_.back().t) return points_.back().z;
   // The first point after t; the segment [a, b] holds t.
-  const auto after = std::upper_bound(points_.begin(), points_.end(), t,
-                                      [](double time, const TimedAltitude& q) { return time < q.t; });
+  const auto after =
+      std::upper_bound(points_.begin(), points_.end(), t,
+                       [](double time, const TimedAltitude& q) { return time < q.t; });
   const TimedAltitude& a = *(after - 1);
   const TimedAltitude& b = *after;
   const double s = (t - a.t) / (b.t - a.t);  // s ∈ [0, 1)

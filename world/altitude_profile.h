@@ -1,6 +1,6 @@
 #pragma once
-// A scripted UAV's altitude over time (issue 53): the `z` its waypoints (or track rows) give, linear
-// in time between them. The world flies it within the UAV's climb rate and [z_min, z_max]
+// A scripted UAV's altitude over time (issue 53): the `z` its waypoints (or track rows) give,
+// linear in time between them. The world flies it within the UAV's climb rate and [z_min, z_max]
 // (World::commandClimb), so a profile steeper than the climb rate is followed late.
 #include <vector>
 

@@ -128,9 +128,8 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     if (o.label == label && Model::valid(o)) obs_ids_.push_back(l);
   }
   for (const int k : track_ids_) {
-    tracks[k].visibility =
-        visibility(tracks[k], own_footprint, own_map, camera, scan.sensor_position,
-                   scan.sensor_height);
+    tracks[k].visibility = visibility(tracks[k], own_footprint, own_map, camera,
+                                      scan.sensor_position, scan.sensor_height);
   }
   claimed_.resize(obs_ids_.size());
   jpdaf_.step<N>(tracks, track_ids_, scan.observations, obs_ids_, config_, claimed_, diagnostics_);

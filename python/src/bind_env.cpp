@@ -163,8 +163,7 @@ class VectorCore {
   void step(const py::handle& actions, const std::vector<int>& hold = {}) {
     using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
     const Array a = Array::ensure(actions);
-    if (!a || a.ndim() != 3 || a.shape(0) != n_ || a.shape(1) != agents_ ||
-        a.shape(2) != width_) {
+    if (!a || a.ndim() != 3 || a.shape(0) != n_ || a.shape(1) != agents_ || a.shape(2) != width_) {
       std::ostringstream text;
       text << "VectorEnv.step: actions: expected an array of shape (" << n_ << ", " << agents_
            << ", " << width_

@@ -39,8 +39,8 @@ TEST(VolumesVisibility, AGroundCameraSeesUnderAHighCrownAndAUavAboveDoesNot) {
   // The canopy model (what volumes meant to the tracker before) hides everything under a crown.
   EXPECT_FALSE(targetVisible(walker, footprint, map, CameraOcclusion{}, Vec2::Zero()));
   // A UAV straight above at 20 m: the vertical line from 20 m to 1.7 m crosses [3, 9] m.
-  EXPECT_FALSE(targetVisible(walker, discFootprint(walker, 30.0), map, volumes(false), walker,
-                             20.0));
+  EXPECT_FALSE(
+      targetVisible(walker, discFootprint(walker, 30.0), map, volumes(false), walker, 20.0));
   // A walker at (14, 0), outside the outline (x ∈ [7, 13]), from a UAV at (0, 0) at 20 m: the line
   // is at 20 − 18.3 · 0.5 = 10.85 m at x = 7 and 20 − 18.3 · 13/14 = 3.007 m at x = 13, so it
   // passes through [3, 9] m: hidden, where the canopy model sees it.
@@ -62,10 +62,10 @@ TEST(VolumesVisibility, SigmaPointsUnderAHighCrown) {
   EXPECT_NEAR(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), footprint, map, volumes(true),
                                  Vec2::Zero(), sensing::kGroundCameraHeight),
               1.0, 1e-15);
-  EXPECT_EQ(visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(),
-                               discFootprint(Vec2(10.0, 0.0), 30.0), map, volumes(false),
-                               Vec2(10.0, 0.0), 20.0),
-            0.0);
+  EXPECT_EQ(
+      visibleProbability(Vec2(10.0, 0.0), Mat2::Identity(), discFootprint(Vec2(10.0, 0.0), 30.0),
+                         map, volumes(false), Vec2(10.0, 0.0), 20.0),
+      0.0);
 }
 
 TEST(VolumesVisibility, TheTrackerCountsAMissUnderAHighCrownOnlyWhereItCouldHaveSeen) {
