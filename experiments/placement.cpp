@@ -51,6 +51,11 @@ spec::ScenarioSpec placed(const spec::ScenarioSpec& spec, const Placement& place
     // A camera at an altitude (issue 53): its nadir footprint at the default altitude scales too.
     if (u.sensor.camera) u.sensor.camera->nadir_size *= s;
     if (u.path) u.path = path(*u.path);
+    if (u.altitude_profile) {  // its times follow the path's; altitudes are not plane distances
+      std::vector<world::TimedAltitude> points = u.altitude_profile->points();
+      for (world::TimedAltitude& q : points) q.t /= placement.speed_scale;
+      u.altitude_profile.emplace(std::move(points));
+    }
   }
   for (spec::TargetSpec& t : out.targets) t.path = path(t.path);
   for (world::TreeDef& tree : out.trees) {

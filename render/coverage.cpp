@@ -36,6 +36,7 @@ CoverageCounter::CoverageCounter(const Aabb& aoi, ImageSize size, std::vector<wo
 
 void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints,
                                   sensing::OcclusionModel model,
+                                  std::span<const double> camera_heights,
                                   const std::vector<std::uint8_t>& layers) {
   const int width = viewport_.size.width;
   visible_.assign(layers.size(), 0);
@@ -45,6 +46,9 @@ void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints
     // model (sensing::occlusionModel).
     const bool line_of_sight = model == sensing::OcclusionModel::line_of_sight ||
                                f.shape == sensing::FootprintShape::sector;
+    // Under `volumes` every camera, a robot's too, sees by the 3-D line of sight from its height.
+    const bool volumes = model == sensing::OcclusionModel::volumes;
+    const double height = i < camera_heights.size() ? camera_heights[i] : sensing::kDefaultAltitude;
     // A crown outside the footprint's box can neither hold a point of the footprint nor cross a
     // segment from the footprint's centre (the UAV's ground point) to such a point.
     const Aabb box = f.bounds();
@@ -66,8 +70,12 @@ void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints
         if (!f.contains(p)) continue;
         bool hidden = false;
         for (const int t : near_) {
-          hidden = line_of_sight ? world::segmentEntry(trees_[t], f.centre, p) >= 0.0
-                                 : world::strictlyInside(trees_[t], p);
+          if (volumes) {  // (centre, h) → (p, head): world::blocksSight, as sensing tests it
+            hidden = world::blocksSight(trees_[t], f.centre, height, p, sensing::kTargetHeight);
+          } else {
+            hidden = line_of_sight ? world::segmentEntry(trees_[t], f.centre, p) >= 0.0
+                                   : world::strictlyInside(trees_[t], p);
+          }
           if (hidden) break;
         }
         visible_[at] = hidden ? 0 : 1;
@@ -77,8 +85,8 @@ void CoverageCounter::markVisible(std::span<const sensing::Footprint> footprints
 }
 
 CoverageCounts CoverageCounter::count(std::span<const sensing::Footprint> footprints,
-                                      std::span<const Vec2> targets,
-                                      sensing::OcclusionModel model) {
+                                      std::span<const Vec2> targets, sensing::OcclusionModel model,
+                                      std::span<const double> camera_heights) {
   Scene mask;
   mask.viewport = viewport_;
   mask.background = Rgba{0, 0, 0, 0};
@@ -90,7 +98,7 @@ CoverageCounts CoverageCounter::count(std::span<const sensing::Footprint> footpr
     }
   }
   const std::vector<std::uint8_t>& layers = canvas_.accumulate(mask);
-  markVisible(footprints, model, layers);
+  markVisible(footprints, model, camera_heights, layers);
 
   CoverageCounts counts;
   const int width = viewport_.size.width;
@@ -122,13 +130,15 @@ CoverageCounts CoverageCounter::count(const world::WorldSnapshot& truth,
                                       std::span<const sensing::SensorDef> sensors,
                                       sensing::OcclusionModel model) {
   footprints_.clear();
+  camera_heights_.clear();
   const std::size_t n = std::min(sensors.size(), truth.uavs.size());
   for (std::size_t i = 0; i < n; ++i) {
     footprints_.push_back(sensing::footprintOf(truth, static_cast<int>(i), sensors[i]));
+    camera_heights_.push_back(sensing::cameraHeight(sensors[i], truth.uavs[i].z));
   }
   targets_.clear();
   for (const world::TargetState& target : truth.targets) targets_.push_back(target.position);
-  return count(footprints_, targets_, model);
+  return count(footprints_, targets_, model, camera_heights_);
 }
 
 std::string coverageCsvHeader(std::span<const std::string> target_names) {

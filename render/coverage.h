@@ -4,8 +4,10 @@
 // its centre does (GL's rasterisation rule), so the counts approach the areas as pixels shrink.
 // A covered pixel is also *visible* when some UAV whose footprint holds its centre sees that
 // centre under the UAV's occlusion model (sensing/visibility.h): not inside a crown (`canopy`),
-// nor behind one as seen from the UAV's ground point (`line_of_sight`). The visible count is
-// therefore the footprints minus the crowns and the line-of-sight shadows.
+// nor behind one as seen from the UAV's ground point (`line_of_sight`), nor (`volumes`, issue 53)
+// behind a crown volume on the 3-D segment from the camera to a walker's head standing there
+// (world::blocksSight, as sensing tests it: a walker under a high crown is seen). The visible
+// count is therefore the footprints minus the crowns and the shadows.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -46,9 +48,12 @@ class CoverageCounter {
   double pixelArea() const { return viewport_.pixel_size * viewport_.pixel_size; }
 
   /// Each footprint's centre is its UAV's ground point; `model` is the team's occlusion model.
+  /// camera_heights: each footprint's camera above the ground (m, sensing::cameraHeight), the
+  /// start of `volumes`' sight lines; empty: every camera at sensing::kDefaultAltitude.
   CoverageCounts count(std::span<const sensing::Footprint> footprints,
                        std::span<const Vec2> targets,
-                       sensing::OcclusionModel model = sensing::OcclusionModel::canopy);
+                       sensing::OcclusionModel model = sensing::OcclusionModel::canopy,
+                       std::span<const double> camera_heights = {});
   /// The footprints of every UAV of the snapshot (sensors[i] for UAV i) and its targets.
   CoverageCounts count(const world::WorldSnapshot& truth,
                        std::span<const sensing::SensorDef> sensors,
@@ -58,13 +63,14 @@ class CoverageCounter {
   bool inAoi(int x, int y) const { return x >= x0_ && x <= x1_ && y >= y0_ && y <= y1_; }
   /// Marks visible_ for the covered AOI pixels that some footprint sees.
   void markVisible(std::span<const sensing::Footprint> footprints, sensing::OcclusionModel model,
-                   const std::vector<std::uint8_t>& layers);
+                   std::span<const double> camera_heights, const std::vector<std::uint8_t>& layers);
 
   Viewport viewport_;
   int x0_ = 0, x1_ = -1, y0_ = 0, y1_ = -1;  // the AOI's pixels: columns x0..x1, rows y0..y1
   Canvas canvas_;
   std::vector<world::TreeDef> trees_;
   std::vector<sensing::Footprint> footprints_;
+  std::vector<double> camera_heights_;  // m, per footprint of the snapshot overload
   std::vector<Vec2> targets_;
   std::vector<std::uint8_t> visible_;  // per pixel, row-major: 1 when visible
   std::vector<int> near_;              // scratch: trees whose box meets one footprint's box

@@ -26,6 +26,8 @@ struct Observation {
 struct Scan {
   int uav = 0;
   Vec2 sensor_position = Vec2::Zero();    // m, the UAV's ground point p_i
+  double sensor_height = 20.0;            // m, its camera above the ground (sensing/sensor.h
+                                          // cameraHeight): the 3-D line of sight's start
   std::vector<int> in_footprint;          // targets whose true position lies in φ_i (sorted)
   std::vector<int> visible;               // V_{i,k}: in φ_i and not occluded (sorted)
   std::vector<Observation> observations;  // detected targets, then clutter, then trees

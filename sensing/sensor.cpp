@@ -32,6 +32,7 @@ void sense(const world::World& world, const world::WorldSnapshot& truth, int uav
   const Vec2 p_i = truth.uavs[uav].position;
   const double h = truth.uavs[uav].z;
   out.sensor_position = p_i;
+  out.sensor_height = cameraHeight(sensor, h);
   const Footprint footprint = footprintOf(truth, uav, sensor);
   const OcclusionModel model = occlusionModel(sensor, config);
 

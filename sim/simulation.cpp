@@ -117,12 +117,16 @@ void Simulation::senseAndTrack(double dt) {
 }
 
 void Simulation::commandScriptedUavs() {
-  // Scripted sweeps: aim at the path's position one step ahead (clamped to v_max by the world).
+  // Scripted sweeps: aim at the path's position one step ahead (clamped to v_max by the world),
+  // and at its altitude one step ahead, ż = (z(t + dt) − z) / dt (clamped to the climb rate and
+  // [z_min, z_max] by the world).
   const double t_next = world_.time() + spec_.dt;
   for (std::size_t i = 0; i < spec_.uavs.size(); ++i) {
     const auto& path = spec_.uavs[i].path;
     commands_[i] = path ? Vec2((path->positionAt(t_next) - record_.uavs[i].position) / spec_.dt)
                         : Vec2::Zero();
+    if (const auto& profile = spec_.uavs[i].altitude_profile)
+      climb_commands_[i] = (profile->altitudeAt(t_next) - record_.uavs[i].z) / spec_.dt;
   }
 }
 

@@ -41,9 +41,16 @@ const std::vector<FieldDoc>& fieldDocs() {
        "[{\"t\": s, \"p\": [x, y]}, …], times increasing, linear in between"},
       {"uavs[].path.waypoints[].t", "s", "time of the waypoint"},
       {"uavs[].path.waypoints[].p", "m", "position of the waypoint"},
+      {"uavs[].path.waypoints[].z", "m",
+       "altitude at the waypoint (a UAV, issue 53): the altitudes the waypoints give, linear in "
+       "time between them and held before the first and after the last, flown within climb_rate "
+       "(late where steeper) and within [z_min, z_max], which must hold them; z defaults to the "
+       "altitude at t = 0, z_min and z_max to the lowest and highest of z and the waypoints'"},
       {"uavs[].path.start", "m", "constant-velocity path: position at t = 0"},
       {"uavs[].path.velocity", "m/s", "constant-velocity path: velocity [vx, vy]"},
-      {"uavs[].path.track", "s, m", "[[t, x, y], …] rows, or the name of a CSV file of t,x,y rows"},
+      {"uavs[].path.track", "s, m",
+       "[[t, x, y], …] rows, or the name of a CSV file of t,x,y rows; a UAV's inline row may be "
+       "[t, x, y, z], z an altitude as a waypoint's z"},
       {"uavs[].yaw", "rad", "heading ψ, or \"velocity\" to face the direction of flight"},
       {"uavs[].v_max", "m/s", "top speed; every command is clamped to it"},
       {"uavs[].radius", "m",
@@ -63,13 +70,16 @@ const std::vector<FieldDoc>& fieldDocs() {
       {"uavs[].quality", "", "α_i, scales the whole measurement covariance R"},
       {"uavs[].r0", "m", "floor of the range d in R(z, p_i)"},
       {"uavs[].z", "m",
-       "altitude (default 20 m, the altitude at which fov.size is the footprint); any of z, "
-       "z_min, z_max, climb_rate or camera makes the UAV fly at a chosen altitude: its footprint "
-       "follows from altitude and camera, its noise grows with the slant distance, the record "
-       "writes its z"},
-      {"uavs[].z_min", "m", "lowest altitude (default z: fixed)"},
-      {"uavs[].z_max", "m", "highest altitude (default z: fixed); z_min < z_max lets the planner "
-                            "choose the climb"},
+       "altitude (default 20 m, the altitude at which fov.size is the footprint; with a scripted "
+       "path's z, that path's altitude at t = 0); any of z, z_min, z_max, climb_rate, camera or "
+       "a path's z makes the UAV fly at a chosen altitude: its footprint follows from altitude "
+       "and camera, its noise grows with the slant distance, the record writes its z"},
+      {"uavs[].z_min", "m",
+       "lowest altitude (default z: fixed; with a scripted path's z, the lowest of z and the "
+       "path's)"},
+      {"uavs[].z_max", "m",
+       "highest altitude (default z: fixed; with a scripted path's z, the highest of z and the "
+       "path's); z_min < z_max lets the planner choose the climb"},
       {"uavs[].climb_rate", "m/s", "largest climb or descent rate |ż|"},
       {"uavs[].camera", "", "a pinhole camera: fields of view and pitch (default: the angles that "
                             "make fov.size the nadir footprint at 20 m)"},

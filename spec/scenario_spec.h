@@ -10,6 +10,7 @@
 #include "agents/config.h"
 #include "core/types.h"
 #include "sensing/sensor.h"
+#include "world/altitude_profile.h"
 #include "world/defs.h"
 
 namespace canopy::spec {
@@ -19,6 +20,8 @@ struct UavSpec {
   world::UavDef body;               // start, yaw, yaw mode, v_max
   sensing::SensorDef sensor;        // footprint and quality (α, r0)
   std::optional<world::Path> path;  // scripted sweep, followed when no planner runs
+  /// The altitudes its scripted path's points give (issue 53), flown when the path is.
+  std::optional<world::AltitudeProfile> altitude_profile;
 };
 
 struct TargetSpec {

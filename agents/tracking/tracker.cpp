@@ -25,7 +25,8 @@ constexpr double kSharedProbability = 0.1;
 // as its disc of equal area, the track's radius).
 template <int N>
 bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
-                     const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor) {
+                     const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor,
+                     double sensor_height) {
   const Vec2 position = track.prior.x.template head<2>();
   if constexpr (N == 3) {
     if (!footprint.contains(position)) return false;
@@ -36,7 +37,7 @@ bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
     if (distance <= radius) return true;  // the sensor under the crown: it fills the view
     return !map.blocksSegment(sensor, position - (radius / distance) * offset);
   } else {
-    return targetVisible(position, footprint, map, camera, sensor);
+    return targetVisible(position, footprint, map, camera, sensor, sensor_height);
   }
 }
 
@@ -45,13 +46,14 @@ bool expectedVisible(const Track<N>& track, const sensing::Footprint& footprint,
 // whole or not at all).
 template <int N>
 double visibility(const Track<N>& track, const sensing::Footprint& footprint,
-                  const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor) {
+                  const OcclusionMap& map, const CameraOcclusion& camera, const Vec2& sensor,
+                  double sensor_height) {
   if constexpr (N == 3) {
-    return expectedVisible(track, footprint, map, camera, sensor) ? 1.0 : 0.0;
+    return expectedVisible(track, footprint, map, camera, sensor, sensor_height) ? 1.0 : 0.0;
   } else {
     return visibleProbability(track.prior.x.template head<2>(),
                               track.prior.P.template topLeftCorner<2, 2>(), footprint, map, camera,
-                              sensor);
+                              sensor, sensor_height);
   }
 }
 
@@ -126,8 +128,8 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
     if (o.label == label && Model::valid(o)) obs_ids_.push_back(l);
   }
   for (const int k : track_ids_) {
-    tracks[k].visibility =
-        visibility(tracks[k], own_footprint, own_map, camera, scan.sensor_position);
+    tracks[k].visibility = visibility(tracks[k], own_footprint, own_map, camera,
+                                      scan.sensor_position, scan.sensor_height);
   }
   claimed_.resize(obs_ids_.size());
   jpdaf_.step<N>(tracks, track_ids_, scan.observations, obs_ids_, config_, claimed_, diagnostics_);
@@ -153,13 +155,15 @@ void Tracker::updateLabel(std::vector<Track<N>>& tracks, sensing::LabelId label,
       if (!track.detected && track.visibility > 0.0 && config_.negative_information) {
         const double p_miss_visible = config_.p_detect * config_.gate_probability;  // P_D P_G
         track.posterior = afterMissedDetection(track.prior, p_miss_visible, [&](const Vec2& p) {
-          return targetVisible(p, own_footprint, own_map, camera, scan.sensor_position);
+          return targetVisible(p, own_footprint, own_map, camera, scan.sensor_position,
+                               scan.sensor_height);
         });
       }
     }
     if (track.detected) {
       track.expected_misses = 0;
-    } else if (expectedVisible(track, own_footprint, own_map, camera, scan.sensor_position)) {
+    } else if (expectedVisible(track, own_footprint, own_map, camera, scan.sensor_position,
+                               scan.sensor_height)) {
       ++track.expected_misses;
     }
   }

@@ -47,8 +47,9 @@ class Tracker {
   /// scans in which Σ_j β_tj ≥ ½, i.e. it more likely than not received a measurement — within its
   /// first confirm_window scans, and dropped as soon as it can no longer be. Observations with
   /// non-finite values or a covariance that is not positive definite are ignored. `camera` says how
-  /// the own camera is hidden: targets under a crown of own_map (from above), or behind one on the
-  /// segment from scan.sensor_position (line of sight); at ground level a tree too is expected
+  /// the own camera is hidden: targets under a crown of own_map (from above), behind one on the
+  /// segment from scan.sensor_position (line of sight), or (volumes) by a crown volume on the 3-D
+  /// segment from scan.sensor_height above it to the head; at ground level a tree too is expected
   /// visible only when no map crown stands on the segment to the point of its crown nearest the
   /// sensor.
   void update(const sensing::Scan& scan, const sensing::Footprint& own_footprint,

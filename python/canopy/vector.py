@@ -12,8 +12,11 @@ team), ``observation_space`` / ``action_space`` batched, rewards, terminations a
 (n,): the team's reward, the sum of its agents' (``agent_axis=True``: (n, n_agents), each agent's
 own), and Gymnasium's default autoreset, ``AutoresetMode.NEXT_STEP``: the step after an episode
 ends resets that environment (its action is ignored, its reward 0) and returns the new episode's
-first observation. The vector environment flies in the plane: a UAV whose altitude is free holds
-it (``TrackingEnv(altitude=False)``; TrackingEnv carries z and vz, issue 53). ``autoreset_mode=AutoresetMode.SAME_STEP`` (or "SameStep") resets it in the
+first observation. Height (issue 53) as TrackingEnv's: when some UAV's altitude is free
+(``altitude=None``, the default, detects it; ``altitude=False`` keeps the plane, its UAVs holding
+their altitudes) each agent's observation ends with its z (m) and actions are (n, n_agents, 3),
+(vx, vy, vz) with vz the climb rate (m/s, kept within ±climb_rate and z within [z_min, z_max]).
+``autoreset_mode=AutoresetMode.SAME_STEP`` (or "SameStep") resets it in the
 same call instead: its row of the returned observations is then the new episode's first one, and
 its last one is in the infos under both generations' names: ``infos["final_observation"]`` (the
 batch, masked by ``infos["_final_observation"]``, Gymnasium ≤ 0.29) and ``infos["final_obs"]``
@@ -49,10 +52,11 @@ class VectorEnv(_VectorEnvBase):
 
     def __init__(self, n, scenario, max_tracks=8, max_trees=8, map_radius=30.0,
                  reward_trace="position", keep_planner=False, max_cycles=None, threads=None,
-                 render_mode=None, render_size=(400, 300), autoreset_mode=None, agent_axis=False):
+                 render_mode=None, render_size=(400, 300), autoreset_mode=None, agent_axis=False,
+                 altitude=None):
         """n environments of ``scenario`` (a Scenario, a built-in name or a file); the other
-        arguments are TrackingEnv's. threads: worker threads, the caller's included (default:
-        one per core, at most n). render_mode: None or "rgb_array". autoreset_mode:
+        arguments (altitude among them) are TrackingEnv's. threads: worker threads, the caller's
+        included (default: one per core, at most n). render_mode: None or "rgb_array". autoreset_mode:
         AutoresetMode.NEXT_STEP (default) or SAME_STEP, or their values. agent_axis: rewards,
         terminations and truncations per agent, (n, n_agents), instead of the team's (n,)."""
         # The CLI's and TrackingEnv's rules (python/canopy/_args.py): a canopy.ScenarioError (a
@@ -79,8 +83,9 @@ class VectorEnv(_VectorEnvBase):
         self.single_env = TrackingEnv(scenario, max_tracks=max_tracks, max_trees=max_trees,
                                       map_radius=map_radius, reward_trace=reward_trace,
                                       keep_planner=keep_planner, max_cycles=max_cycles,
-                                      altitude=False)
+                                      altitude=altitude)
         env = self.single_env
+        self.altitude = env.altitude
         self.num_envs = int(n)
         self.possible_agents = list(env.possible_agents)
         self.agents = list(env.possible_agents)
@@ -88,7 +93,8 @@ class VectorEnv(_VectorEnvBase):
         self.metadata = dict(env.metadata, render_modes=["rgb_array"],
                              autoreset_mode=self.autoreset_mode)
         self._core = _canopy._VectorCore(env.scenario, self.num_envs, env._observer,
-                                         env.max_cycles, 0 if threads is None else int(threads))
+                                         env.max_cycles, 0 if threads is None else int(threads),
+                                         self.altitude)
         self.threads = self._core.threads
 
         agents = self.possible_agents
@@ -168,7 +174,8 @@ class VectorEnv(_VectorEnvBase):
         return self._core.observations.copy(), {"seed": self._seeds.copy(), "_seed": mask.copy()}
 
     def step(self, actions):
-        """actions: (n, n_agents, 2) velocities (m/s). Returns observations (n, n_agents, size)
+        """actions: (n, n_agents, 2) velocities (m/s), or (n, n_agents, 3) (vx, vy, vz) when
+        altitude is on. Returns observations (n, n_agents, size)
         float32, rewards float64, terminations and truncations bool, (n,) or with agent_axis
         (n, n_agents), and infos: "step" (n,) the step each environment reached; "seed" and
         "_seed" when environments were reset. NEXT_STEP: an environment whose episode ended at

@@ -1,7 +1,8 @@
 // The compiled half of canopy.TrackingEnv and canopy.VectorEnv (python/canopy/env.py, vector.py):
 // _Observer writes every agent's observation and reward of a Simulation's last step, and
 // _VectorCore steps n simulations on a pool of threads with the GIL released, writing batched
-// observations, rewards and end flags into numpy arrays it owns.
+// observations, rewards and end flags into numpy arrays it owns; with `altitude` (issue 53) each
+// observation ends with the UAV's z and each action carries a climb rate vz, as TrackingEnv's.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -106,17 +107,21 @@ class Observer {
 class VectorCore {
  public:
   VectorCore(const py::object& scenario, int n, const Observer& observer, int max_cycles,
-             int threads)
+             int threads, bool altitude)
       : spec_(std::make_shared<const spec::ScenarioSpec>(specOf(scenario))),
         layout_(observer.layout()),
         n_(n),
         agents_(static_cast<int>(spec_->uavs.size())),
         max_cycles_(max_cycles),
+        altitude_(altitude),
+        width_(altitude ? 3 : 2),
+        obs_size_(layout_.size() + (altitude ? 1 : 0)),
         pool_(threads),
         sims_(static_cast<std::size_t>(n)),
-        commands_(static_cast<std::size_t>(n) * static_cast<std::size_t>(agents_) * 2) {
+        commands_(static_cast<std::size_t>(n) * static_cast<std::size_t>(agents_) *
+                  static_cast<std::size_t>(width_)) {
     if (n < 1) throw py::value_error("VectorEnv: n: expected at least 1 environment");
-    observations_ = FloatArray({n_, agents_, layout_.size()});
+    observations_ = FloatArray({n_, agents_, obs_size_});
     rewards_ = DoubleArray({n_, agents_});
     ended_ = py::array_t<bool>(n_);
     steps_ = py::array_t<std::int64_t>(n_);
@@ -152,22 +157,27 @@ class VectorCore {
     });
   }
 
-  /// One step of every env with actions (n, n_agent, 2) m/s, but those in `hold` (their rows of
-  /// the outputs stay as they are: Gymnasium's next-step autoreset resets them instead).
+  /// One step of every env with actions (n, n_agent, 2) m/s — (n, n_agent, 3) with a climb rate
+  /// vz (m/s) under `altitude` — but those in `hold` (their rows of the outputs stay as they are:
+  /// Gymnasium's next-step autoreset resets them instead).
   void step(const py::handle& actions, const std::vector<int>& hold = {}) {
     using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
     const Array a = Array::ensure(actions);
-    if (!a || a.ndim() != 3 || a.shape(0) != n_ || a.shape(1) != agents_ || a.shape(2) != 2) {
+    if (!a || a.ndim() != 3 || a.shape(0) != n_ || a.shape(1) != agents_ || a.shape(2) != width_) {
       std::ostringstream text;
       text << "VectorEnv.step: actions: expected an array of shape (" << n_ << ", " << agents_
-           << ", 2) (one velocity per environment and agent, m/s)";
+           << ", " << width_
+           << (altitude_ ? ") (one velocity and climb rate (vx, vy, vz) per environment and agent, "
+                           "m/s)"
+                         : ") (one velocity per environment and agent, m/s)");
       throw py::value_error(text.str());
     }
     const double* v = a.data();
+    const auto width = static_cast<std::size_t>(width_);
     for (std::size_t k = 0; k < commands_.size(); ++k) {
       if (!std::isfinite(v[k])) {
-        const std::size_t e = k / (2 * static_cast<std::size_t>(agents_));
-        const std::size_t i = k / 2 % static_cast<std::size_t>(agents_);
+        const std::size_t e = k / (width * static_cast<std::size_t>(agents_));
+        const std::size_t i = k / width % static_cast<std::size_t>(agents_);
         throw py::value_error("VectorEnv.step: actions[" + std::to_string(e) + ", " +
                               std::to_string(i) + "]: expected a finite velocity (m/s)");
       }
@@ -191,8 +201,11 @@ class VectorCore {
     pool_.run(static_cast<std::size_t>(n_), [&](std::size_t e) {
       if (held[e]) return;
       sim::Simulation& sim = *sims_[e];
-      const double* c = commands_.data() + e * 2 * static_cast<std::size_t>(agents_);
-      for (int i = 0; i < agents_; ++i) sim.commandNext(i, Vec2(c[2 * i], c[2 * i + 1]));
+      const double* c = commands_.data() + e * width * static_cast<std::size_t>(agents_);
+      for (std::size_t i = 0; i < static_cast<std::size_t>(agents_); ++i, c += width) {
+        sim.commandNext(static_cast<int>(i), Vec2(c[0], c[1]));
+        if (altitude_) sim.commandClimbNext(static_cast<int>(i), c[2]);  // kept in ±climb_rate
+      }
       sim.tick();
       writeStep(e, obs, rew, ended, steps);
     });
@@ -235,10 +248,12 @@ class VectorCore {
   void writeStep(std::size_t e, float* obs, double* rew, bool* ended, std::int64_t* steps) const {
     const sim::Simulation& sim = *sims_[e];
     const sim::StepRecord& record = sim.lastStep();
-    const auto size = static_cast<std::size_t>(layout_.size());
+    const auto size = static_cast<std::size_t>(obs_size_);
     const auto agents = static_cast<std::size_t>(agents_);
     for (std::size_t i = 0; i < agents; ++i) {
-      observe(record, static_cast<int>(i), layout_, obs + (e * agents + i) * size);
+      float* row = obs + (e * agents + i) * size;
+      observe(record, static_cast<int>(i), layout_, row);
+      if (altitude_) row[layout_.size()] = static_cast<float>(record.uavs[i].z);  // z last (m)
       rew[e * agents + i] = stageReward(record, static_cast<int>(i), layout_.full_trace);
     }
     steps[e] = record.step;
@@ -248,6 +263,9 @@ class VectorCore {
   std::shared_ptr<const spec::ScenarioSpec> spec_;
   EnvLayout layout_;
   int n_, agents_, max_cycles_;
+  bool altitude_;  // observations end with z, actions carry vz (issue 53)
+  int width_;      // numbers per action: 2, or 3 with altitude
+  int obs_size_;   // numbers per observation: the layout's, and z with altitude
   TaskPool pool_;
   std::vector<std::unique_ptr<sim::Simulation>> sims_;
   std::vector<double> commands_;
@@ -279,14 +297,15 @@ void bindEnv(py::module_& m) {
 
   py::class_<VectorCore>(m, "_VectorCore")
       .def(py::init([](const py::object& scenario, int n, const Observer& observer, int max_cycles,
-                       int threads) {
+                       int threads, bool altitude) {
              if (threads <= 0)
                threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
              threads = std::min(threads, std::max(n, 1));
-             return std::make_unique<VectorCore>(scenario, n, observer, max_cycles, threads);
+             return std::make_unique<VectorCore>(scenario, n, observer, max_cycles, threads,
+                                                 altitude);
            }),
            py::arg("scenario"), py::arg("n"), py::arg("observer"), py::arg("max_cycles"),
-           py::arg("threads"))
+           py::arg("threads"), py::arg("altitude") = false)
       .def("reset", &VectorCore::reset, py::arg("envs"), py::arg("seeds"))
       .def("step", &VectorCore::step, py::arg("actions"), py::arg("hold") = std::vector<int>{})
       .def(

@@ -150,3 +150,62 @@ def test_simulations_step_in_parallel_threads_give_the_same_runs():
     for seed in range(4):
         assert together[seed][2] == alone[seed][2]
         np.testing.assert_array_equal(together[seed][0], alone[seed][0])
+
+
+def _altitude_scenario():
+    # altitude_tradeoff: two UAVs at 20 m, z in [10, 60] m, climb rate 2 m/s, dt = 0.2 s (issue 53).
+    return canopy.load("altitude_tradeoff", overrides={"clock.duration": 1.0})  # K = 5
+
+
+def test_altitude_free_vector_env_observes_z_and_takes_vz():
+    vec = canopy.VectorEnv(2, _altitude_scenario(), max_tracks=2, max_trees=1, threads=2)
+    single = canopy.TrackingEnv(_altitude_scenario(), max_tracks=2, max_trees=1)
+    assert vec.altitude and single.altitude
+    size = 3 + 7 * 2 + 4 + 1  # the plane's observation, then z
+    assert vec.single_observation_space.shape == (2, size)
+    assert vec.action_space.shape == (2, 2, 3)
+    np.testing.assert_array_equal(vec.single_action_space.high, [[5, 5, 2], [5, 5, 2]])
+    np.testing.assert_array_equal(vec.single_observation_space.low[:, -1], [10, 10])
+    np.testing.assert_array_equal(vec.single_observation_space.high[:, -1], [60, 60])
+    obs, _ = vec.reset(seed=4)
+    np.testing.assert_array_equal(obs[:, :, -1], [[20, 20], [20, 20]])
+    # By hand, one 0.2 s step: +2 m/s → 20.4 m; −9 m/s clamped to −2 → 19.6 m; +1 m/s → 20.2 m;
+    # 0 → 20 m.
+    actions = np.zeros((2, 2, 3))
+    actions[0, 0, 2], actions[0, 1, 2], actions[1, 0, 2] = 2.0, -9.0, 1.0
+    obs, *_ = vec.step(actions)
+    np.testing.assert_allclose(obs[:, :, -1], [[20.4, 19.6], [20.2, 20.0]], rtol=0, atol=1e-5)
+    # Twice more at −9 m/s for UAV2 of env 0: 19.6 − 0.4 − 0.4 = 18.8 m.
+    actions[0, 1, 2] = -9.0
+    for _ in range(2):
+        obs, *_ = vec.step(actions)
+    assert obs[0, 1, -1] == pytest.approx(18.8, abs=1e-5)
+    assert vec.observation_space.contains(obs)
+    with pytest.raises(ValueError, match=r"shape \(2, 2, 3\) \(one velocity and climb rate"):
+        vec.step(np.zeros((2, 2, 2)))
+    # altitude=False keeps the plane: (vx, vy) and no z, the UAVs holding 20 m.
+    plane = canopy.VectorEnv(2, _altitude_scenario(), max_tracks=2, max_trees=1, altitude=False)
+    assert not plane.altitude and plane.action_space.shape == (2, 2, 2)
+    assert plane.single_observation_space.shape == (2, size - 1)
+
+
+def test_altitude_vector_env_equals_tracking_envs_bit_for_bit():
+    n, seed = 3, 20
+    vec = canopy.VectorEnv(n, _altitude_scenario(), max_tracks=4, max_trees=4, agent_axis=True,
+                           autoreset_mode="SameStep")
+    singles = [canopy.TrackingEnv(_altitude_scenario(), max_tracks=4, max_trees=4) for _ in range(n)]
+    agents = vec.possible_agents
+    obs, _ = vec.reset(seed=seed)
+    expected = [env.reset(seed=seed + i)[0] for i, env in enumerate(singles)]
+    rng = np.random.default_rng(1)
+    for k in range(4):
+        for i in range(n):
+            for j, a in enumerate(agents):
+                assert obs[i, j].tobytes() == expected[i][a].tobytes(), (k, i, a)
+        actions = rng.uniform(-3, 3, (n, len(agents), 3))
+        obs, rew, *_ = vec.step(actions)
+        expected = []
+        for i, env in enumerate(singles):
+            o, r, *_ = env.step({a: actions[i, j] for j, a in enumerate(agents)})
+            assert list(rew[i]) == [r[a] for a in agents]
+            expected.append(o)

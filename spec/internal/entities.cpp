@@ -1,6 +1,7 @@
 // Reading UAVs, targets and their scripted paths.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -99,7 +100,8 @@ std::vector<world::TimedPoint> readFootpathWalk(ObjectReader& reader, const Aabb
 
 }  // namespace
 
-world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside) {
+world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside,
+                     std::vector<ScriptedAltitude>* altitudes) {
   ObjectReader reader = field.object();
   const std::string kind = reader.oneOf({"waypoints", "velocity", "track", "footpaths"});
   world::Path path;
@@ -112,6 +114,10 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
       times.push_back(waypoint.required("t"));
       positions.push_back(waypoint.required("p"));
       points.push_back({times.back().number(Bound::non_negative), positions.back().vec2()});
+      if (altitudes) {
+        if (auto z = waypoint.optional("z"))
+          altitudes->push_back({{points.back().t, z->number(Bound::positive)}, *z});
+      }
       waypoint.finish();
     }
     requireIncreasing(points, times);
@@ -138,10 +144,12 @@ world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool 
     } else {
       std::vector<Field> times;
       for (const Field& row : track.elements(1)) {
-        const std::vector<Field> txy = row.elements(3, 3);
+        const std::vector<Field> txy = row.elements(3, altitudes ? 4 : 3);  // [t, x, y(, z)]
         times.push_back(txy[0]);
         points.push_back(
             {txy[0].number(Bound::non_negative), Vec2(txy[1].number(), txy[2].number())});
+        if (txy.size() == 4)
+          altitudes->push_back({{points.back().t, txy[3].number(Bound::positive)}, txy[3]});
       }
       requireIncreasing(points, times);
     }
@@ -202,9 +210,12 @@ void readFov(const Field& fov_field, sensing::FootprintDef& footprint) {
 // Height (issue 53): a UAV whose scenario gives any of z, z_min, z_max, climb_rate or camera flies
 // at a chosen altitude with a pinhole camera (sensing/camera.h); without them it keeps the fixed
 // footprint and eq. 2, and none of these fields is written to the effective configuration.
-void readAltitude(ObjectReader& reader, UavSpec& uav) {
+// A scripted path's altitudes (its waypoints' z) make the UAV one at an altitude too: z defaults to
+// the profile's at t = 0 and [z_min, z_max] to the span of z and the profile; a profile outside
+// the limits given, or a changing one without a climb rate, is refused.
+void readAltitude(ObjectReader& reader, UavSpec& uav, const std::vector<ScriptedAltitude>& path_z) {
   const bool any = reader.has("z") || reader.has("z_min") || reader.has("z_max") ||
-                   reader.has("climb_rate") || reader.has("camera");
+                   reader.has("climb_rate") || reader.has("camera") || !path_z.empty();
   if (!any) return;
   constexpr double kMaxAltitude = 1e4;  // m: a footprint stays within the loader's 2e7 m
   world::UavDef& body = uav.body;
@@ -213,12 +224,39 @@ void readAltitude(ObjectReader& reader, UavSpec& uav) {
     if (z > kMaxAltitude) reader.required(key).fail("expected at most 1e4 m");
     return z;
   };
-  body.z = altitude("z", sensing::kDefaultAltitude);
-  body.z_min = altitude("z_min", body.z);
-  body.z_max = altitude("z_max", body.z);
+  std::vector<world::TimedAltitude> points;
+  for (const ScriptedAltitude& a : path_z) {
+    if (a.point.z > kMaxAltitude) a.field.fail("expected at most 1e4 m");
+    points.push_back(a.point);
+  }
+  std::optional<world::AltitudeProfile> profile;
+  if (!points.empty()) profile.emplace(std::move(points));
+  body.z = altitude("z", profile ? profile->altitudeAt(0.0) : sensing::kDefaultAltitude);
+  double lowest = body.z, highest = body.z;
+  for (const ScriptedAltitude& a : path_z) {
+    lowest = std::min(lowest, a.point.z);
+    highest = std::max(highest, a.point.z);
+  }
+  body.z_min = altitude("z_min", lowest);
+  body.z_max = altitude("z_max", highest);
   if (body.z_min > body.z) reader.required("z_min").fail("expected z_min ≤ z");
   if (body.z_max < body.z) reader.required("z_max").fail("expected z_max ≥ z");
   body.climb_rate = reader.number("climb_rate", 2.0, Bound::non_negative);
+  for (const ScriptedAltitude& a : path_z) {
+    if (a.point.z < body.z_min || a.point.z > body.z_max) {
+      std::ostringstream text;
+      text << "expected an altitude within the UAV's [z_min, z_max] = [" << body.z_min << ", "
+           << body.z_max << "] m, got " << a.point.z;
+      a.field.fail(text.str());
+    }
+    if (body.climb_rate == 0.0 && a.point.z != body.z) {
+      std::ostringstream text;
+      text << "expected the UAV's altitude z = " << body.z
+           << " m: its climb_rate is 0, so it cannot fly a path that changes altitude";
+      a.field.fail(text.str());
+    }
+  }
+  uav.altitude_profile = std::move(profile);
   if (uav.sensor.footprint.shape != sensing::FootprintShape::rectangle) {
     reader.required("fov").fail(
         "expected a rectangular footprint {\"size\": [w, h]} for a UAV at an altitude (its "
@@ -265,9 +303,10 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     }
     uav.body.kind = reader.enumeration("kind", world::kAgentKindNames, uav.body.kind);
     const bool ground = uav.body.kind == world::AgentKind::ground;
+    std::vector<ScriptedAltitude> path_z;  // a UAV's waypoints may give altitudes (issue 53)
     reader.attempt([&] {
       if (auto path = reader.optional("path"))
-        uav.path = readPath(*path, spec.aoi, spec.duration, true);
+        uav.path = readPath(*path, spec.aoi, spec.duration, true, ground ? nullptr : &path_z);
     });
     reader.attempt([&] {
       if (auto start = reader.optional("start")) {
@@ -318,7 +357,7 @@ void readUavs(ObjectReader& root, ScenarioSpec& spec) {
     }
     uav.sensor.quality.alpha = reader.number("quality", uav.sensor.quality.alpha, Bound::positive);
     uav.sensor.quality.r0 = reader.number("r0", uav.sensor.quality.r0, Bound::positive);
-    if (!ground) reader.attempt([&] { readAltitude(reader, uav); });
+    if (!ground) reader.attempt([&] { readAltitude(reader, uav, path_z); });
     reader.finish();
     spec.uavs.push_back(std::move(uav));
   }

@@ -19,7 +19,16 @@ ArrayLimit occluderListLimit(double tree_limit);
 /// Applies one "dotted.path=value" override to the raw document.
 void applyOverride(Json& document, const std::string& assignment);
 
-world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside);
+/// A scripted UAV path's altitude at one of its points (issue 53), and the field that gave it.
+struct ScriptedAltitude {
+  world::TimedAltitude point;
+  Field field;
+};
+
+/// altitudes: when given (a UAV's path), a waypoint may give "z" and a track row [t, x, y, z];
+/// each appended here. Without it (a target's or a ground robot's path) neither is accepted.
+world::Path readPath(const Field& field, const Aabb& aoi, double duration, bool check_inside,
+                     std::vector<ScriptedAltitude>* altitudes = nullptr);
 void readUavs(ObjectReader& root, ScenarioSpec& spec);
 /// Returns each target's label name (ids are assigned once all labels are known).
 std::vector<std::string> readTargets(ObjectReader& root, ScenarioSpec& spec);

@@ -191,5 +191,32 @@ TEST(Coverage, LineOfSightShadowsAreNotVisible) {
   EXPECT_EQ(down.target_visible, (std::vector<std::uint8_t>{1, 1, 1}));
 }
 
+// Crown volumes (issue 53): a crown of radius r = 3 m from 3 m to T = 9 m at (50, 40), under a
+// camera at H = 20 m straight above it. A head (1.7 m) at distance d > r from the centre is hidden
+// while the sight line leaves the crown's outline (at s = r/d) below its top:
+// H − (H − 1.7) r/d < T ⇔ d < R = r (H − 1.7)/(H − T) = 3 · 18.3/11 = 4.991 m, and every head
+// under the crown is hidden. Visible: 280 − πR² ≈ 201.7 m². A camera at 2.5 m, below the base,
+// sees under the crown: everything is visible.
+TEST(Coverage, VolumesHideByTheSightLineFromTheCameraHeight) {
+  world::TreeDef crown = world::TreeDef::disc(Vec2(50, 40), 3.0);
+  crown.base = 3.0;
+  crown.top = 9.0;
+  CoverageCounter counter(kAoi, kMask, {crown});
+  const Footprint f = rectangle(Vec2(50, 40), 20, 14, 0.0);
+  const std::vector<Vec2> targets = {Vec2(50, 40), Vec2(54, 40), Vec2(56, 40)};
+  const double high = 20.0, low = 2.5;
+  const CoverageCounts c = counter.count(std::span(&f, 1), targets,
+                                         sensing::OcclusionModel::volumes, std::span(&high, 1));
+  const double R = 3.0 * (20.0 - 1.7) / (20.0 - 9.0);
+  const double a = counter.viewport().pixel_size, a2 = counter.pixelArea();
+  EXPECT_NEAR(static_cast<double>(c.visible_px) * a2, 280.0 - kPi * R * R,
+              (68.0 + 2.0 * kPi * R) * a + 8 * a2);
+  EXPECT_EQ(c.target_visible, (std::vector<std::uint8_t>{0, 0, 1}));  // d = 0, 4 < R, 6 > R
+  const CoverageCounts under = counter.count(std::span(&f, 1), targets,
+                                             sensing::OcclusionModel::volumes, std::span(&low, 1));
+  EXPECT_EQ(under.visible_px, under.covered_px);
+  EXPECT_EQ(under.target_visible, (std::vector<std::uint8_t>{1, 1, 1}));
+}
+
 }  // namespace
 }  // namespace canopy::render

@@ -86,5 +86,68 @@ TEST(HeightFields, BadValuesAreRefusedNamingTheField) {
             std::string::npos);
 }
 
+// Scripted paths with a z (issue 53).
+std::string scripted(const std::string& fields, const std::string& waypoints) {
+  return R"({"aoi": [0, 0, 100, 50], "uavs": [{)" + fields + R"("path": {"waypoints": [)" +
+         waypoints + "]}}]}";
+}
+
+TEST(HeightFields, WaypointAltitudesMakeAProfileAndReloadToTheSameBits) {
+  const ScenarioSpec spec = loadScenarioText(
+      scripted(R"("climb_rate": 3, )",
+               R"({"t": 1, "p": [10, 10], "z": 25}, {"t": 4, "p": [20, 10]},
+                  {"t": 6, "p": [30, 10], "z": 15})"),
+      "profile.json");
+  const UavSpec& uav = spec.uavs[0];
+  ASSERT_TRUE(uav.altitude_profile.has_value());
+  ASSERT_TRUE(uav.sensor.camera.has_value());  // a UAV at an altitude
+  EXPECT_EQ(uav.body.z, 25.0);                 // the profile's at t = 0: its first point's, held
+  EXPECT_EQ(uav.body.z_min, 15.0);
+  EXPECT_EQ(uav.body.z_max, 25.0);
+  EXPECT_EQ(uav.body.climb_rate, 3.0);
+  // Linear in time between the points that give z: at 3.5 s, halfway from 25 m (1 s) to 15 m (6 s).
+  EXPECT_DOUBLE_EQ(uav.altitude_profile->altitudeAt(3.5), 20.0);
+  EXPECT_EQ(uav.altitude_profile->altitudeAt(9.0), 15.0);
+  const ScenarioSpec again = loadScenarioText(spec.effective_config, "again.json");
+  EXPECT_EQ(again.effective_config, spec.effective_config);
+  EXPECT_EQ(again.uavs[0].altitude_profile->points().size(), 2u);
+  EXPECT_EQ(again.uavs[0].body.z_min, 15.0);
+  // A UAV's inline track rows may carry z too.
+  const ScenarioSpec track = loadScenarioText(
+      R"({"aoi": [0, 0, 100, 50], "uavs": [{"path": {"track": [[0, 10, 10, 30], [2, 12, 10, 34]]}}]})",
+      "track.json");
+  EXPECT_DOUBLE_EQ(track.uavs[0].altitude_profile->altitudeAt(1.0), 32.0);
+  // Without any z the path makes no profile and the UAV keeps the paper's fixed footprint.
+  const ScenarioSpec plain =
+      loadScenarioText(scripted("", R"({"t": 0, "p": [10, 10]})"), "plain.json");
+  EXPECT_FALSE(plain.uavs[0].altitude_profile.has_value());
+  EXPECT_FALSE(plain.uavs[0].sensor.camera.has_value());
+}
+
+TEST(HeightFields, BadWaypointAltitudesAreRefusedNamingTheField) {
+  const std::string outside = errorOf(
+      scripted(R"("z": 20, "z_max": 30, )", R"({"t": 0, "p": [10, 10], "z": 31})"));
+  EXPECT_NE(outside.find("uavs[0].path.waypoints[0].z"), std::string::npos) << outside;
+  EXPECT_NE(outside.find("[z_min, z_max] = [20, 30]"), std::string::npos) << outside;
+  EXPECT_NE(errorOf(scripted("", R"({"t": 0, "p": [10, 10], "z": -3})"))
+                .find("uavs[0].path.waypoints[0].z"),
+            std::string::npos);
+  EXPECT_NE(errorOf(scripted("", R"({"t": 0, "p": [10, 10], "z": 2e4})"))
+                .find("uavs[0].path.waypoints[0].z"),
+            std::string::npos);
+  EXPECT_NE(errorOf(scripted("", R"({"t": 0, "p": [10, 10], "z": "high"})"))
+                .find("uavs[0].path.waypoints[0].z"),
+            std::string::npos);
+  // A climb rate of 0 cannot fly a changing altitude.
+  const std::string stuck = errorOf(scripted(
+      R"("climb_rate": 0, )", R"({"t": 0, "p": [10, 10], "z": 20}, {"t": 5, "p": [20, 10], "z": 30})"));
+  EXPECT_NE(stuck.find("uavs[0].path.waypoints[1].z"), std::string::npos) << stuck;
+  EXPECT_NE(stuck.find("climb_rate is 0"), std::string::npos) << stuck;
+  // A ground robot's path has no altitude: an unknown field.
+  EXPECT_NE(errorOf(scripted(R"("kind": "ground", )", R"({"t": 0, "p": [10, 10], "z": 1})"))
+                .find("uavs[0].path.waypoints[0].z"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace canopy::spec
