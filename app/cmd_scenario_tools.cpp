@@ -24,7 +24,8 @@ class Validate : public Command {
  public:
   explicit Validate(CLI::App& canopy)
       : Command(canopy, "validate", "canopy validate SCENARIO [options]",
-                "Checks a scenario file and reports every error found (exit code 2).") {
+                "Checks a scenario file and reports every error found (exit code 2); prints the "
+                "work a run will do, estimated in instructions and CPU time, by stage.") {
     CLI::App& o = options();
     o.add_option("SCENARIO", scenario_, "a path or a built-in name");
     o.add_option("--set", load_.overrides, "override a field by its dotted path (repeatable)")
