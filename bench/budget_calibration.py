@@ -23,8 +23,9 @@ from scale_point import scale_point  # noqa: E402
 
 # Each stage's measured instructions: the inclusive cost of its entry function (callgrind names).
 STAGES = [
-    ("planning_search", [r"canopy::agents::Team::plan\(int\)"]),  # less the penalty, below
+    ("planning_search", [r"canopy::agents::Team::plan\(int\)"]),  # less the two below
     ("planning_penalty", [r"canopy::agents::planning::NominalCost::addTerminalPenalty\(int, double\)"]),
+    ("planning_prepare", [r"canopy::agents::planning::NominalCost::prepare\("]),
     ("fusion", [r"canopy::agents::Team::fuse\(\)"]),
     ("tracking", [r"canopy::agents::Team::trackLocally\("]),
     ("sensing", [r"canopy::sensing::sense\(", r"canopy::sensing::footprintOf\("]),
@@ -95,7 +96,7 @@ def measure(canopy, args, out, name):
                 if m and re.match(pattern, m.group(2)):
                     measured[stage] += float(m.group(1).replace(",", ""))
                     break
-    measured["planning_search"] -= measured["planning_penalty"]
+    measured["planning_search"] -= measured["planning_penalty"] + measured["planning_prepare"]
     measured["record"] = total - sum(measured.values())  # observers, metrics, the rest
     return total, measured
 

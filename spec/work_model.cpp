@@ -20,14 +20,15 @@ namespace {
 // (bench/RESULTS.md, "Work budget in instructions"): the geometric mean of measured / units over
 // the grid's rows in which the stage holds at least 5 % of the run.
 constexpr double kPerSearchUnit = 68.0;     // one track-sample of the recursion, or one H·(free) move
-constexpr double kPerPenaltyUnit = 41.0;    // one track in scope, per evaluation
-constexpr double kPerFusionUnit = 213.0;     // one track or crown, per neighbour and round
+constexpr double kPerPenaltyUnit = 38.0;    // one track in scope, per evaluation
+constexpr double kPerPrepareUnit = 508.0;   // one (track, UAV) pair, per swarm
+constexpr double kPerFusionUnit = 188.0;     // one track or crown, per neighbour and round
 constexpr double kPerTrackingUnit = 1070.0;  // one track, crown or detection pair, per scan
 constexpr double kPerSensingUnit = 2800.0;  // one detection, per scan
 constexpr double kPerWorldUnit = 2300.0;     // one body per sub-step, one truth read-out
 constexpr double kPerRecordUnit = 5000.0;   // one track, crown or detection written, per step
-constexpr double kPerMetricsUnit = 290.0;   // one person an agent's OSPA is computed against, per step
-constexpr double kPerSetupUnit = 5400.0;    // one crown, UAV or target built
+constexpr double kPerMetricsUnit = 281.0;   // one person an agent's OSPA is computed against, per step
+constexpr double kPerSetupUnit = 5670.0;    // one crown, UAV or target built
 // Starting the program (dynamic linking, the command line, the built-in scenarios' index): the
 // instructions of a run too small to measure anything else (bench/RESULTS.md).
 constexpr double kProgramStart = 1.5e7;
@@ -178,7 +179,8 @@ WorkGeometry workGeometry(const ScenarioSpec& spec) {
   const double calls = p.algorithm == agents::PlannerAlgorithm::centralized ? 1.0 : uavs;
   const double iterations = std::min(static_cast<double>(p.pso.max_iterations),
                                      kIterationsPerStallWindow * p.pso.stall_iterations);
-  g.evaluations = g.epochs * calls * swarms_per_call * particles * iterations;
+  g.swarms = g.epochs * calls * swarms_per_call;
+  g.evaluations = g.swarms * particles * iterations;
   g.free_uavs = p.algorithm != agents::PlannerAlgorithm::sma && !blocks ? uavs : 1.0;
   return g;
 }
@@ -207,6 +209,10 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
                           : 1.0;
     if (p.terminal_penalty)
       w.planning_penalty = kPerPenaltyUnit * g.evaluations * scope_tracks * searched;
+    // Before each swarm, the cost is prepared (nominal_cost.h): every track in scope against
+    // every UAV in scope (the fixed UAVs' paths, footprints and distances at m = H).
+    const double scope_uavs = p.cost_scope == agents::CostScope::reach ? g.uavs_in_reach : uavs;
+    w.planning_prepare = kPerPrepareUnit * g.swarms * scope_tracks * scope_uavs;
   }
   // Fusion, every step: each agent associates its tracks and crowns with each neighbour's, then
   // runs `rounds` rounds of covariance intersection over them (agents/fusion/team_fusion.h).
@@ -250,14 +256,14 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
 }
 
 namespace {
-constexpr const char* kStageNames[] = {"planning_search", "planning_penalty", "fusion", "tracking",
-                                       "sensing",         "world",            "record", "metrics",
-                                       "setup"};
+constexpr const char* kStageNames[] = {
+    "planning_search", "planning_penalty", "planning_prepare", "fusion", "tracking",
+    "sensing",         "world",            "record",           "metrics", "setup"};
 }  // namespace
 
 std::string StageWork::largest() const {
-  const double values[] = {planning_search, planning_penalty, fusion,  tracking, sensing,
-                           world,           record,           metrics, setup};
+  const double values[] = {planning_search, planning_penalty, planning_prepare, fusion, tracking,
+                           sensing,         world,            record,           metrics, setup};
   std::size_t best = 0;
   for (std::size_t i = 1; i < std::size(values); ++i)
     if (values[i] > values[best]) best = i;
@@ -265,8 +271,8 @@ std::string StageWork::largest() const {
 }
 
 std::string StageWork::text() const {
-  const double values[] = {planning_search, planning_penalty, fusion,  tracking, sensing,
-                           world,           record,           metrics, setup};
+  const double values[] = {planning_search, planning_penalty, planning_prepare, fusion, tracking,
+                           sensing,         world,            record,           metrics, setup};
   std::string out;
   for (std::size_t i = 0; i < std::size(values); ++i) {
     char number[32];

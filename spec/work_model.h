@@ -26,6 +26,7 @@ struct WorkGeometry {
   double seen = 0.0;             // detections of one scan: targets and crowns in a footprint, clutter
   double seen_people = 0.0;      // of which targets and clutter
   double people_within_cutoff = 0.0;  // targets within the OSPA cut-off (50 m) of a target
+  double swarms = 0.0;           // swarms run in the whole trial (every agent, epoch, block)
   double evaluations = 0.0;      // cost evaluations of the whole trial (every agent, epoch, swarm)
   double free_uavs = 1.0;        // UAVs whose actions one evaluation varies
 };
@@ -35,6 +36,7 @@ WorkGeometry workGeometry(const ScenarioSpec& spec);
 struct StageWork {
   double planning_search = 0.0;   // PSO moves and the cost recursion over the tracks in reach
   double planning_penalty = 0.0;  // the terminal penalty over the tracks in scope
+  double planning_prepare = 0.0;  // preparing the cost before each swarm: tracks × UAVs in scope
   double fusion = 0.0;            // association and CI consensus with the neighbours
   double tracking = 0.0;          // JPDA, track upkeep and the agent's map, per scan
   double sensing = 0.0;           // footprint queries, line of sight, noise
@@ -44,8 +46,8 @@ struct StageWork {
   double setup = 0.0;             // the scenario's layouts, the world's bodies
 
   double total() const {
-    return planning_search + planning_penalty + fusion + tracking + sensing + world + record +
-           metrics + setup;
+    return planning_search + planning_penalty + planning_prepare + fusion + tracking + sensing +
+           world + record + metrics + setup;
   }
   /// The stage with the most, by its name in stageNames order ("planning_search", …).
   std::string largest() const;
@@ -55,8 +57,8 @@ struct StageWork {
 StageWork estimateStageWork(const ScenarioSpec& spec);
 
 /// Instructions per CPU-second of canopy on the machine the coefficients were measured on (a 2-vCPU
-/// AMD EPYC guest: 0.95–1.1·10¹⁰ measured as callgrind's count over user + sys time for five
-/// files; bench/RESULTS.md): the estimate in CPU time.
+/// AMD EPYC guest: 0.93–1.1·10¹⁰, callgrind's count over user + sys time for eight files;
+/// bench/RESULTS.md): the estimate in CPU time.
 inline constexpr double kInstructionsPerCpuSecond = 1e10;
 
 }  // namespace canopy::spec

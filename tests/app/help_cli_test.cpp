@@ -297,7 +297,7 @@ TEST(HelpCli, ValidatePrintsTheWorkEstimateByStage) {
     sum += value;
     ++count;
   }
-  EXPECT_EQ(count, 9) << o.out;
+  EXPECT_EQ(count, 10) << o.out;
   EXPECT_NEAR(sum, total, 0.01 * total) << o.out;  // each printed to three digits
   // The paper scenario runs in well under a CPU-second.
   EXPECT_LT(seconds, 1.0);

@@ -250,8 +250,8 @@ std::vector<Row> rows() {
        "occluders[0]", "trees (rows × cols)"},
       // Fusion: 256 UAVs with 20 m footprints over a grid of 10⁴ crowns 10 m apart for 300 s:
       // their maps hold the crowns under 256 footprints swept for 150 s at 1 m/s (8700), merged
-      // with 255 neighbours every step (spec/work_model.cpp: 213 × 1501 × 256 × (50 + 8700 ×
-      // (1 + 255 × 1.2)) = 2.2e14 instructions).
+      // with 255 neighbours every step (spec/work_model.cpp: 188 × 1501 × 256 × (50 + 8700 ×
+      // (1 + 255 × 1.2)) = 1.9e14 instructions).
       {"fusion", fusionScenario(), "fusion.comm_range", "CPU-"},
       // Planning: a swarm of 10⁴ particles per step for 1000 iterations.
       {"planning", scenario(2, 1, R"(, "planner": {"algorithm": "sma", "horizon": 50,

@@ -15,8 +15,9 @@ namespace {
 
 // The per-unit coefficients of spec/work_model.cpp as bench/RESULTS.md ("Work budget in
 // instructions") states them; the formulas are worked by hand below.
-constexpr double kSearch = 68, kPenalty = 41, kFusion = 213, kTracking = 1070, kSensing = 2800,
-                 kWorld = 2300, kRecord = 5000, kMetrics = 290, kSetup = 5400, kStart = 1.5e7;
+constexpr double kSearch = 68, kPenalty = 38, kPrepare = 508, kFusion = 188, kTracking = 1070,
+                 kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 281, kSetup = 5670,
+                 kStart = 1.5e7;
 
 // Two UAVs far apart (100, 100) and (900, 900) with 20 × 20 m footprints (circumradius
 // 10√2 = 14.142 m, area 400 m²) at v_max 5 m/s; three people: two beside the first UAV (5 and
@@ -47,12 +48,15 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   // A disc of the footprint's area (radius 11.28 m) holds both people at the first UAV: mean 1.
   EXPECT_DOUBLE_EQ(g.seen, 1.0);
   EXPECT_DOUBLE_EQ(g.people_within_cutoff, 5.0 / 3.0);  // 2, 2 and 1 within 50 m
-  EXPECT_DOUBLE_EQ(g.evaluations, 3.0 * 2 * 20 * 10);  // epochs × agents × particles × iterations
+  EXPECT_DOUBLE_EQ(g.swarms, 3.0 * 2);                  // epochs × agents
+  EXPECT_DOUBLE_EQ(g.evaluations, 3.0 * 2 * 20 * 10);  // swarms × particles × iterations
 
   const StageWork w = estimateStageWork(spec);
   const double steps = 11, uavs = 2, evaluations = 1200, held = 3, seen = 1;
   EXPECT_NEAR(w.planning_search, kSearch * evaluations * 2 * (1 + 1.0), 1e-6);  // 326 400
-  EXPECT_NEAR(w.planning_penalty, kPenalty * evaluations * 3, 1e-6);            // 147 600
+  EXPECT_NEAR(w.planning_penalty, kPenalty * evaluations * 3, 1e-6);            // 136 800
+  // Six swarms (3 epochs × 2 agents), each prepared over 3 tracks × 2 UAVs.
+  EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 3 * 2, 1e-6);  // 18 288
   // 50 + held × (1 + neighbours × (1 + rounds/25)) = 50 + 3 × 2.2
   EXPECT_NEAR(w.fusion, kFusion * steps * uavs * (50 + held * (1 + 1 * (1 + 5 / 25.0))), 1e-6);
   // held + seen + people seen² × min(people seen, 64)
