@@ -33,10 +33,10 @@ void require(const ScenarioSpec& spec, const std::string& field, double amount, 
 
 WorkLimits workLimits(double scale) {
   WorkLimits limits;
-  for (double* limit : {&limits.trees, &limits.world_units, &limits.world_substeps,
-                        &limits.record_bytes, &limits.tracking_units, &limits.tracking_step_units,
-                        &limits.cpu_seconds, &limits.sweep_configurations,
-                        &limits.sweep_trials, &limits.sweep_bytes}) {
+  for (double* limit :
+       {&limits.trees, &limits.world_units, &limits.world_substeps, &limits.record_bytes,
+        &limits.tracking_units, &limits.tracking_step_units, &limits.cpu_seconds,
+        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
   return limits;
@@ -53,8 +53,8 @@ double footprintReach(const ScenarioSpec& spec) {
   double reach = 0.0;  // the largest footprint's circumradius
   for (const UavSpec& uav : spec.uavs) {
     // A UAV at an altitude (issue 53) reaches farthest at its highest.
-    reach = std::max(reach,
-                     sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
+    reach =
+        std::max(reach, sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
   }
   return reach;
 }
@@ -246,9 +246,11 @@ StageAdvice adviceFor(const std::string& stage) {
             "planning's terminal penalty (particles × iterations × tracks in scope)",
             "planner.cost_scope \"reach\", fewer planner.pso.particles_per_step or a shorter "
             "clock.duration"};
+  if (stage == "planning_prepare")
+    return {"planner.cost_scope", "planning's preparation (swarms × tracks × UAVs in scope)",
+            "planner.cost_scope \"reach\" or a shorter clock.duration"};
   if (stage == "fusion")
-    return {"fusion.comm_range",
-            "fusion (rounds × UAVs × neighbours × tracks and crowns known)",
+    return {"fusion.comm_range", "fusion (rounds × UAVs × neighbours × tracks and crowns known)",
             "a finite fusion.comm_range or interest_range, fewer fusion.rounds or a shorter "
             "clock.duration"};
   if (stage == "tracking")
@@ -321,16 +323,15 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
   const double instruction_limit = limits.cpu_seconds * kInstructionsPerCpuSecond;
   if (work.instructions > instruction_limit) {
     const StageAdvice advice = adviceFor(work.stages.largest());
-    throw ScenarioError(spec.file.string(), advice.field,
-                        "expected at most about " + cpuTime(limits.cpu_seconds) + " of work (" +
-                            roughly(instruction_limit) + " instructions at " +
-                            roughly(kInstructionsPerCpuSecond) +
-                            " a CPU-second, the machine the estimate was measured on), this file "
-                            "asks for about " +
-                            cpuTime(work.cpuSeconds()) + " (" + roughly(work.instructions) +
-                            "; by stage: " + work.stages.text() + "); the largest part is " +
-                            advice.what + ": " + advice.change +
-                            " (--budget K raises every work limit K-fold)");
+    throw ScenarioError(
+        spec.file.string(), advice.field,
+        "expected at most about " + cpuTime(limits.cpu_seconds) + " of work (" +
+            roughly(instruction_limit) + " instructions at " + roughly(kInstructionsPerCpuSecond) +
+            " a CPU-second, the machine the estimate was measured on), this file "
+            "asks for about " +
+            cpuTime(work.cpuSeconds()) + " (" + roughly(work.instructions) +
+            "; by stage: " + work.stages.text() + "); the largest part is " + advice.what + ": " +
+            advice.change + " (--budget K raises every work limit K-fold)");
   }
 }
 

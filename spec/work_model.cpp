@@ -19,16 +19,17 @@ namespace {
 // Instructions per unit of each stage's term, measured by bench/budget_calibration.py
 // (bench/RESULTS.md, "Work budget in instructions"): the geometric mean of measured / units over
 // the grid's rows in which the stage holds at least 5 % of the run.
-constexpr double kPerSearchUnit = 68.0;     // one track-sample of the recursion, or one H·(free) move
-constexpr double kPerPenaltyUnit = 38.0;    // one track in scope, per evaluation
-constexpr double kPerPrepareUnit = 508.0;   // one (track, UAV) pair, per swarm
+constexpr double kPerSearchUnit = 68.0;  // one track-sample of the recursion, or one H·(free) move
+constexpr double kPerPenaltyUnit = 38.0;     // one track in scope, per evaluation
+constexpr double kPerPrepareUnit = 508.0;    // one (track, UAV) pair, per swarm
 constexpr double kPerFusionUnit = 188.0;     // one track or crown, per neighbour and round
 constexpr double kPerTrackingUnit = 1070.0;  // one track, crown or detection pair, per scan
-constexpr double kPerSensingUnit = 2800.0;  // one detection, per scan
+constexpr double kPerSensingUnit = 2800.0;   // one detection, per scan
 constexpr double kPerWorldUnit = 2300.0;     // one body per sub-step, one truth read-out
-constexpr double kPerRecordUnit = 5000.0;   // one track, crown or detection written, per step
-constexpr double kPerMetricsUnit = 281.0;   // one person an agent's OSPA is computed against, per step
-constexpr double kPerSetupUnit = 5670.0;    // one crown, UAV or target built
+constexpr double kPerRecordUnit = 5000.0;    // one track, crown or detection written, per step
+constexpr double kPerMetricsUnit =
+    281.0;  // one person an agent's OSPA is computed against, per step
+constexpr double kPerSetupUnit = 5670.0;  // one crown, UAV or target built
 // Starting the program (dynamic linking, the command line, the built-in scenarios' index): the
 // instructions of a run too small to measure anything else (bench/RESULTS.md).
 constexpr double kProgramStart = 1.5e7;
@@ -132,8 +133,8 @@ WorkGeometry workGeometry(const ScenarioSpec& spec) {
 
   // Tracks: every agent ends up with every target the team holds (preseeded, or shared at full
   // communication); a finite interest_range keeps those within it.
-  g.tracks_held = std::min(targets, meanWithin(uav_starts, target_starts,
-                                               spec.fusion.interest_range));
+  g.tracks_held =
+      std::min(targets, meanWithin(uav_starts, target_starts, spec.fusion.interest_range));
   g.tracks_in_reach = std::min(
       g.tracks_held,
       meanWithin(uav_starts, target_starts, g.reach + horizon_time * fastestTargetSpeed(spec)));
@@ -149,13 +150,13 @@ WorkGeometry workGeometry(const ScenarioSpec& spec) {
   const double swept_one = footprint_area + std::sqrt(footprint_area) * pace * 0.5 * spec.duration;
   double swept = std::min(area, (g.neighbours + 1.0) * swept_one);
   if (std::isfinite(spec.fusion.interest_range))
-    swept = std::min(swept, std::numbers::pi * spec.fusion.interest_range *
-                                spec.fusion.interest_range);
+    swept =
+        std::min(swept, std::numbers::pi * spec.fusion.interest_range * spec.fusion.interest_range);
   g.trees_known = density * swept;
   // One scan: the targets within a disc of the footprint's area around a UAV, clutter, crowns.
-  g.seen_people = meanWithin(uav_starts, target_starts,
-                             std::sqrt(footprint_area / std::numbers::pi)) +
-                  spec.sensing.clutter_rate;
+  g.seen_people =
+      meanWithin(uav_starts, target_starts, std::sqrt(footprint_area / std::numbers::pi)) +
+      spec.sensing.clutter_rate;
   g.seen = g.seen_people + density * footprint_area;
   g.people_within_cutoff = meanWithin(target_starts, target_starts, kOspaCutoff);
 
@@ -227,8 +228,9 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
   // people's detections (and clutter) and the tracks near them form clusters whose joint events
   // (JPDA) number up to max_hypotheses, each as deep as the cluster: pairs m² times a depth of
   // min(m, 64), as in the worst-case bound of spec/budget.cpp (crowns stand apart: few pairs).
-  w.tracking = kPerTrackingUnit * g.steps * uavs *
-               (held + g.seen + g.seen_people * g.seen_people * std::clamp(g.seen_people, 1.0, 64.0));
+  w.tracking =
+      kPerTrackingUnit * g.steps * uavs *
+      (held + g.seen + g.seen_people * g.seen_people * std::clamp(g.seen_people, 1.0, 64.0));
   // Sensing, every scan: the footprint's query among the bodies, then each detection's line of
   // sight and noise.
   w.sensing = kPerSensingUnit * g.steps * uavs * (1.0 + g.seen);
@@ -257,13 +259,14 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
 
 namespace {
 constexpr const char* kStageNames[] = {
-    "planning_search", "planning_penalty", "planning_prepare", "fusion", "tracking",
-    "sensing",         "world",            "record",           "metrics", "setup"};
+    "planning_search", "planning_penalty", "planning_prepare", "fusion", "tracking", "sensing",
+    "world",           "record",           "metrics",          "setup"};
 }  // namespace
 
 std::string StageWork::largest() const {
-  const double values[] = {planning_search, planning_penalty, planning_prepare, fusion, tracking,
-                           sensing,         world,            record,           metrics, setup};
+  const double values[] = {
+      planning_search, planning_penalty, planning_prepare, fusion, tracking, sensing,
+      world,           record,           metrics,          setup};
   std::size_t best = 0;
   for (std::size_t i = 1; i < std::size(values); ++i)
     if (values[i] > values[best]) best = i;
@@ -271,8 +274,9 @@ std::string StageWork::largest() const {
 }
 
 std::string StageWork::text() const {
-  const double values[] = {planning_search, planning_penalty, planning_prepare, fusion, tracking,
-                           sensing,         world,            record,           metrics, setup};
+  const double values[] = {
+      planning_search, planning_penalty, planning_prepare, fusion, tracking, sensing,
+      world,           record,           metrics,          setup};
   std::string out;
   for (std::size_t i = 0; i < std::size(values); ++i) {
     char number[32];

@@ -23,12 +23,12 @@ struct WorkGeometry {
   double uavs_in_reach = 0.0;    // UAVs within 2R of a UAV, itself included
   double neighbours = 0.0;       // UAVs within fusion.comm_range of a UAV, itself excluded
   double trees_known = 0.0;      // crowns one agent's map holds, on average over the run
-  double seen = 0.0;             // detections of one scan: targets and crowns in a footprint, clutter
-  double seen_people = 0.0;      // of which targets and clutter
+  double seen = 0.0;         // detections of one scan: targets and crowns in a footprint, clutter
+  double seen_people = 0.0;  // of which targets and clutter
   double people_within_cutoff = 0.0;  // targets within the OSPA cut-off (50 m) of a target
-  double swarms = 0.0;           // swarms run in the whole trial (every agent, epoch, block)
-  double evaluations = 0.0;      // cost evaluations of the whole trial (every agent, epoch, swarm)
-  double free_uavs = 1.0;        // UAVs whose actions one evaluation varies
+  double swarms = 0.0;                // swarms run in the whole trial (every agent, epoch, block)
+  double evaluations = 0.0;  // cost evaluations of the whole trial (every agent, epoch, swarm)
+  double free_uavs = 1.0;    // UAVs whose actions one evaluation varies
 };
 WorkGeometry workGeometry(const ScenarioSpec& spec);
 

@@ -49,7 +49,7 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   EXPECT_DOUBLE_EQ(g.seen, 1.0);
   EXPECT_DOUBLE_EQ(g.people_within_cutoff, 5.0 / 3.0);  // 2, 2 and 1 within 50 m
   EXPECT_DOUBLE_EQ(g.swarms, 3.0 * 2);                  // epochs × agents
-  EXPECT_DOUBLE_EQ(g.evaluations, 3.0 * 2 * 20 * 10);  // swarms × particles × iterations
+  EXPECT_DOUBLE_EQ(g.evaluations, 3.0 * 2 * 20 * 10);   // swarms × particles × iterations
 
   const StageWork w = estimateStageWork(spec);
   const double steps = 11, uavs = 2, evaluations = 1200, held = 3, seen = 1;
@@ -81,9 +81,7 @@ std::string scalePoint(int uavs, int people, double trees, double duration, unsi
   const double side = trees > 0 ? std::sqrt(trees / 0.005) : 200.0;
   const int grid = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(uavs))));
   const double cell = side / grid;
-  auto start = [&](int i) {
-    return std::pair((i % grid + 0.5) * cell, (i / grid + 0.5) * cell);
-  };
+  auto start = [&](int i) { return std::pair((i % grid + 0.5) * cell, (i / grid + 0.5) * cell); };
   std::string text = R"({"aoi": [0, 0, )" + std::to_string(side) + ", " + std::to_string(side) +
                      R"(], "clock": {"duration": )" + std::to_string(duration) + R"(}, "uavs": [)";
   for (int i = 0; i < uavs; ++i) {
@@ -144,8 +142,7 @@ TEST(WorkModel, TheLargestScalePointIsAdmittedAndOneHundredTimesItIsRefused) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.file(), "swarm100.json");
     EXPECT_EQ(e.field(), "planner.cost_scope") << e.message();  // the penalty is the largest
-    EXPECT_NE(e.message().find("expected at most about 30 CPU-minutes of work"),
-              std::string::npos)
+    EXPECT_NE(e.message().find("expected at most about 30 CPU-minutes of work"), std::string::npos)
         << e.message();
     EXPECT_NE(e.message().find("this file asks for about "), std::string::npos) << e.message();
     EXPECT_NE(e.message().find("planner.cost_scope \"reach\""), std::string::npos) << e.message();
