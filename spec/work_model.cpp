@@ -18,18 +18,27 @@ namespace {
 
 // Instructions per unit of each stage's term, measured by bench/budget_calibration.py
 // (bench/RESULTS.md, "Work budget in instructions"): the geometric mean of measured / units over
-// the grid's rows in which the stage holds at least 5 % of the run.
-constexpr double kPerSearchUnit = 68.0;  // one track-sample of the recursion, or one H·(free) move
-constexpr double kPerPenaltyUnit = 38.0;     // one track in scope, per evaluation
-constexpr double kPerPrepareUnit = 508.0;    // one (track, UAV) pair, per swarm
-constexpr double kPerFusionUnit = 188.0;     // one track or crown, per neighbour and round
-constexpr double kPerTrackingUnit = 1070.0;  // one track, crown or detection pair, per scan
-constexpr double kPerSensingUnit = 2800.0;   // one detection, per scan
-constexpr double kPerWorldUnit = 2300.0;     // one body per sub-step, one truth read-out
-constexpr double kPerRecordUnit = 5000.0;    // one track, crown or detection written, per step
-constexpr double kPerMetricsUnit =
-    281.0;  // one person an agent's OSPA is computed against, per step
-constexpr double kPerSetupUnit = 5670.0;  // one crown, UAV or target built
+// the grid's rows in which the stage holds at least 1 % of the run.
+// Planning's search: one track-sample of the recursion, or one move of H variables.
+constexpr double kPerSearchUnit = 68.0;
+// The terminal penalty: one track in scope, per evaluation.
+constexpr double kPerPenaltyUnit = 38.0;
+// Preparing the cost: one (track, UAV) pair in scope, per swarm.
+constexpr double kPerPrepareUnit = 508.0;
+// Fusion: one track or crown held, per step (and per neighbour, a round adding 1/25 of that).
+constexpr double kPerFusionUnit = 188.0;
+// Tracking: one track or crown held or detection, per scan (and the JPDA term of its people).
+constexpr double kPerTrackingUnit = 1070.0;
+// Sensing: one detection, per scan.
+constexpr double kPerSensingUnit = 2800.0;
+// World: one body per sub-step, or one truth read-out.
+constexpr double kPerWorldUnit = 2300.0;
+// Record: one track, crown or detection written, per step.
+constexpr double kPerRecordUnit = 5000.0;
+// Metrics: one person an agent's OSPA is computed against, per step.
+constexpr double kPerMetricsUnit = 281.0;
+// Setup: one crown, UAV or target built.
+constexpr double kPerSetupUnit = 5670.0;
 // Starting the program (dynamic linking, the command line, the built-in scenarios' index): the
 // instructions of a run too small to measure anything else (bench/RESULTS.md).
 constexpr double kProgramStart = 1.5e7;
@@ -37,8 +46,9 @@ constexpr double kProgramStart = 1.5e7;
 constexpr double kOspaCutoff = 50.0;
 
 // Planning: the iterations a swarm runs. The stall rule stops it after stall_iterations without a
-// relative gain of ftol, which took 1.2–2.5 × stall_iterations on average in every measured run
-// (bench/RESULTS.md, "Swarms with the defaults, second step"); max_iterations bounds them.
+// relative gain of ftol, which took 1.1–2.7 × stall_iterations on average in every measured run
+// (bench/RESULTS.md, "Swarms with the defaults, second step" and "Work budget in instructions");
+// max_iterations bounds them.
 constexpr double kIterationsPerStallWindow = 2.0;
 
 std::vector<Vec2> uavStarts(const ScenarioSpec& spec) {
