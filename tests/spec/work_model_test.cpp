@@ -72,6 +72,50 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   EXPECT_DOUBLE_EQ(estimateWork(spec).instructions, w.total());
 }
 
+// The same file with cost_scope "reach", comm_range 100 m and interest_range 50 m: the penalty
+// and the preparation count only what lies within reach (the first UAV's two people, the UAV
+// itself), no UAV has a neighbour, and the lone person at (500, 500) is held by no agent.
+TEST(WorkModel, ReachScopeAndRangesCountTheNeighbourhoodFromTheStarts) {
+  const ScenarioSpec spec = loadScenarioText(R"({
+    "aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
+    "uavs": [{"start": [100, 100]}, {"start": [900, 900]}],
+    "targets": [{"path": {"start": [105, 100], "velocity": [1, 0]}},
+                {"path": {"start": [100, 110], "velocity": [0, 0]}},
+                {"path": {"start": [500, 500], "velocity": [0, 0]}}],
+    "fusion": {"comm_range": 100, "interest_range": 50},
+    "planner": {"algorithm": "sma", "horizon": 2, "cost_scope": "reach",
+                "pso": {"particles_per_step": 10, "stall_iterations": 5}}
+  })",
+                                             "reach.json");
+  const WorkGeometry g = workGeometry(spec);
+  EXPECT_DOUBLE_EQ(g.neighbours, 0.0);
+  EXPECT_DOUBLE_EQ(g.tracks_held, 1.0);  // 2 people within 50 m of the first UAV, none of the other
+  EXPECT_DOUBLE_EQ(g.tracks_in_reach, 1.0);
+  const StageWork w = estimateStageWork(spec);
+  EXPECT_NEAR(w.planning_penalty, kPenalty * 1200 * 1.0, 1e-6);
+  EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 1.0 * 1.0, 1e-6);
+  EXPECT_NEAR(w.fusion, kFusion * 11 * 2 * (50 + 1.0), 1e-6);  // no neighbour: its own tracks
+}
+
+// A swarm runs about 2 × stall_iterations (the stall rule), at most max_iterations: the
+// evaluations follow stall_iterations until max_iterations caps them.
+TEST(WorkModel, EvaluationsFollowTheStallRuleUntilMaxIterationsCapsThem) {
+  auto evaluations = [](const std::string& pso) {
+    return workGeometry(loadScenarioText(
+                            R"({"aoi": [0, 0, 100, 100], "uavs": [{"start": [10, 10]}],
+                                "targets": [{"path": {"start": [30, 30], "velocity": [1, 0]}}],
+                                "planner": {"algorithm": "sma", "pso": )" +
+                                pso + "}}",
+                            "pso.json"))
+        .evaluations;
+  };
+  // 21 epochs (20 s, Δ = 1 s) × 1 agent × 100 particles (20 per step × H = 5) × 100 iterations.
+  EXPECT_DOUBLE_EQ(evaluations(R"({"stall_iterations": 50})"), 21.0 * 100 * 100);
+  EXPECT_DOUBLE_EQ(evaluations(R"({"stall_iterations": 100})"), 21.0 * 100 * 200);
+  EXPECT_DOUBLE_EQ(evaluations(R"({"stall_iterations": 100, "max_iterations": 150})"),
+                   21.0 * 100 * 150);
+}
+
 // A scale point as bench/scale_point.py writes it, in memory: U UAVs on a square grid over a
 // Poisson forest of 0.005 crowns/m² (side √(trees / 0.005)), M people in groups around them (15 m),
 // SMA-NBO H = 5 on the a-priori map, canopy's defaults elsewhere.
