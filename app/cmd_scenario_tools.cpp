@@ -24,7 +24,8 @@ class Validate : public Command {
  public:
   explicit Validate(CLI::App& canopy)
       : Command(canopy, "validate", "canopy validate SCENARIO [options]",
-                "Checks a scenario file and reports every error found (exit code 2).") {
+                "Checks a scenario file and reports every error found (exit code 2); prints the "
+                "work a run will do, estimated in instructions and CPU time, by stage.") {
     CLI::App& o = options();
     o.add_option("SCENARIO", scenario_, "a path or a built-in name");
     o.add_option("--set", load_.overrides, "override a field by its dotted path (repeatable)")
@@ -65,6 +66,12 @@ int Validate::run() {
   std::printf("%s: ok — %zu UAVs, %zu targets, %zu trees, %d steps (k = 0 … %d, dt = %g s)\n",
               printable(spec.file.string(), 200).c_str(), spec.uavs.size(), spec.targets.size(),
               spec.trees.size(), spec.steps() + 1, spec.steps(), spec.dt);
+  // The work budget's estimate (spec/budget.h): the run's instructions, in CPU time and by stage.
+  const spec::WorkEstimate work = spec::estimateWork(spec);
+  std::printf("  work: about %.2e instructions, about %.3g CPU-s on the machine the estimate was "
+              "measured on (limit %.3g CPU-s)\n",
+              work.instructions, work.cpuSeconds(), spec::workLimits(load_.budget_scale).cpu_seconds);
+  std::printf("  work by stage (instructions): %s\n", work.stages.text().c_str());
   // Layouts made by `canopy import`: what each holds and where it came from.
   for (const std::string& line : spec.layout_sources)
     std::printf("  layout %s\n", printable(line, 600).c_str());

@@ -33,10 +33,10 @@ void require(const ScenarioSpec& spec, const std::string& field, double amount, 
 
 WorkLimits workLimits(double scale) {
   WorkLimits limits;
-  for (double* limit : {&limits.trees, &limits.world_units, &limits.world_substeps,
-                        &limits.record_bytes, &limits.tracking_units, &limits.tracking_step_units,
-                        &limits.fusion_units, &limits.planning_units, &limits.sweep_configurations,
-                        &limits.sweep_trials, &limits.sweep_bytes}) {
+  for (double* limit :
+       {&limits.trees, &limits.world_units, &limits.world_substeps, &limits.record_bytes,
+        &limits.tracking_units, &limits.tracking_step_units, &limits.cpu_seconds,
+        &limits.sweep_configurations, &limits.sweep_trials, &limits.sweep_bytes}) {
     *limit *= scale;
   }
   return limits;
@@ -53,8 +53,8 @@ double footprintReach(const ScenarioSpec& spec) {
   double reach = 0.0;  // the largest footprint's circumradius
   for (const UavSpec& uav : spec.uavs) {
     // A UAV at an altitude (issue 53) reaches farthest at its highest.
-    reach = std::max(reach,
-                     sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
+    reach =
+        std::max(reach, sensing::circumradius(sensing::footprintAt(uav.sensor, uav.body.z_max)));
   }
   return reach;
 }
@@ -126,11 +126,6 @@ double visibleTargetsBound(const ScenarioSpec& spec) {
 }
 
 namespace {
-
-// Planning: a swarm's iterations per stall window (pso.stall_iterations), and the entries the
-// terminal penalty searches per track with one free UAV (spec/budget.cpp, estimateWork).
-constexpr double kIterationsPerStallWindow = 3.0;
-constexpr double kPenaltyEntriesSearched = 8.0;
 
 // The fastest any target's scripted path moves (m/s): a constant velocity, or a segment's.
 double fastestTarget(const ScenarioSpec& spec) {
@@ -219,71 +214,9 @@ WorkEstimate estimateWork(const ScenarioSpec& spec) {
   work.tracking_step_units =
       uavs * ((measurements > 1.0 ? spec.tracking.max_hypotheses * std::max(1.0, depth) : 0.0) +
               clutter * work.clutter_track_scans * clutter * kPropagationSweeps);
-  // The expected number of agents within `range` of one of `uavs` agents spread over the AOI
-  // (itself included), at most the team.
-  const double area = std::max(1.0, spec.aoi.width() * spec.aoi.height());
-  auto within = [&](double range) {
-    return std::isfinite(range)
-               ? std::min(uavs, 1.0 + uavs * std::numbers::pi * range * range / area)
-               : uavs;
-  };
-  // Consensus: each agent merges its neighbours' tracks (within fusion.comm_range) every round.
-  work.fusion_units =
-      steps * spec.fusion.rounds * uavs * within(spec.fusion.comm_range) * std::max(1.0, targets);
-  const agents::PlannerConfig& p = spec.planner;
-  if (p.algorithm == agents::PlannerAlgorithm::learned) {
-    // One network evaluation per agent and epoch over its tracks and teammates.
-    work.planning_units = (spec.duration / p.replan_period + 1.0) * uavs * (targets + uavs);
-  } else if (p.algorithm != agents::PlannerAlgorithm::none) {
-    const double epochs = spec.duration / p.replan_period + 1.0;
-    const double particles = static_cast<double>(p.pso.particles_per_step) * p.horizon;
-    // R = H·Δ·v_max + footprint circumradius, the largest reach of a UAV over the horizon, and
-    // the share of the AOI within 2R of a point (the teammates whose plans can interact).
-    double reach = 0.0;
-    for (const UavSpec& uav : spec.uavs)
-      reach = std::max(reach, p.horizon * p.plan_period * uav.body.v_max +
-                                  sensing::circumradius(
-                                      sensing::footprintAt(uav.sensor, uav.body.z_max)));
-    const double disc = std::numbers::pi * 4.0 * reach * reach / area;
-    const double nearby_uavs = std::min(uavs, 1.0 + 4.0 * uavs * disc);
-    const bool blocks = p.algorithm != agents::PlannerAlgorithm::sma &&
-                        p.joint_search == agents::JointSearch::block_coordinate;
-    // Block coordinate descent: one swarm per block per round; a Dec-POMDP agent's blocks are
-    // the UAVs whose plans can interact with its own (planner.joint_blocks "interacting"),
-    // estimated as those within 2R (agents/planning/interaction.h).
-    const bool interacting_blocks = p.algorithm == agents::PlannerAlgorithm::dec_pomdp &&
-                                    p.joint_blocks == agents::JointBlocks::interacting;
-    const double swarms_per_call =
-        blocks ? p.joint_rounds * (interacting_blocks ? nearby_uavs : uavs) : 1.0;
-    // The iterations a swarm runs: the stall rule stops it after stall_iterations without a
-    // relative gain of ftol, which took 1.2–2.5 × stall_iterations on average in every measured
-    // run (bench/RESULTS.md, "Swarms with the defaults, second step"); 3 × stall_iterations
-    // estimates them, max_iterations bounds them.
-    const double iterations = std::min(static_cast<double>(p.pso.max_iterations),
-                                       kIterationsPerStallWindow * p.pso.stall_iterations);
-    const double evaluations = epochs * uavs * swarms_per_call * particles * iterations;
-    // A cost evaluation runs the recursion of every track in scope over H·S samples against each
-    // free UAV, and the terminal penalty charges each uncovered track among the UAVs in scope:
-    // all of them when every UAV is free (global_best, local_best); with one free UAV, the
-    // plain loop looks at each of fewer than eight and, from eight fixed ones on, the
-    // nearest-first search at a few (agents/planning/terminal_penalty.cpp), estimated as
-    // kPenaltyEntriesSearched. Scope "team": every track and UAV. Scope "reach"
-    // (docs/design-notes.md): the tracks and teammates within a few reach radii
-    // R = H·Δ·v_max + footprint circumradius; their number is estimated as 4× the larger of the
-    // team's mean tracks per UAV and the targets in a disc of 2R at the AOI's mean density
-    // (people cluster), and the teammates within 2R likewise.
-    double scope_targets = std::max(1.0, targets), scope_uavs = uavs;
-    if (p.cost_scope == agents::CostScope::reach) {
-      scope_targets = std::min(
-          scope_targets, 4.0 * std::max({1.0, targets / std::max(1.0, uavs), targets * disc}));
-      scope_uavs = nearby_uavs;
-    }
-    const double free_uavs = p.algorithm != agents::PlannerAlgorithm::sma && !blocks ? uavs : 1.0;
-    const double penalty_entries =
-        free_uavs > 1.0 ? scope_uavs : std::min(scope_uavs, kPenaltyEntriesSearched);
-    work.planning_units =
-        evaluations * scope_targets * (p.horizon * p.cost_substeps * free_uavs + penalty_entries);
-  }
+  // Every stage's instructions (spec/work_model.h).
+  work.stages = estimateStageWork(spec);
+  work.instructions = work.stages.total();
   return work;
 }
 
@@ -297,6 +230,46 @@ std::string fastestField(const ScenarioSpec& spec) {
     if (spec.uavs[i].body.v_max > spec.uavs[fastest].body.v_max) fastest = i;
   if (spec.uavs.empty() || fastestTarget(spec) > spec.uavs[fastest].body.v_max) return "targets";
   return "uavs[" + std::to_string(fastest) + "].v_max";
+}
+
+// What to change when a stage's work is the largest: the field named and the words.
+struct StageAdvice {
+  std::string field, what, change;
+};
+StageAdvice adviceFor(const std::string& stage) {
+  if (stage == "planning_search")
+    return {"planner.pso", "planning's search (particles × iterations × tracks in reach)",
+            "fewer planner.pso.particles_per_step or stall_iterations, a shorter planner.horizon "
+            "or clock.duration"};
+  if (stage == "planning_penalty")
+    return {"planner.cost_scope",
+            "planning's terminal penalty (particles × iterations × tracks in scope)",
+            "planner.cost_scope \"reach\", fewer planner.pso.particles_per_step or a shorter "
+            "clock.duration"};
+  if (stage == "planning_prepare")
+    return {"planner.cost_scope", "planning's preparation (swarms × tracks × UAVs in scope)",
+            "planner.cost_scope \"reach\" or a shorter clock.duration"};
+  if (stage == "fusion")
+    return {"fusion.comm_range", "fusion (rounds × UAVs × neighbours × tracks and crowns known)",
+            "a finite fusion.comm_range or interest_range, fewer fusion.rounds or a shorter "
+            "clock.duration"};
+  if (stage == "tracking")
+    return {"fusion.interest_range", "tracking (UAVs × tracks and crowns each agent holds)",
+            "a finite fusion.interest_range or a shorter clock.duration"};
+  if (stage == "setup") return {"occluders", "building the layouts", "fewer trees"};
+  return {"clock.duration", stage + " (steps × UAVs and targets)", "a shorter clock.duration"};
+}
+
+// "42 CPU-seconds", "12 CPU-minutes", "2.1 CPU-hours".
+std::string cpuTime(double seconds) {
+  char text[48];
+  if (seconds < 120.0)
+    std::snprintf(text, sizeof text, "%.3g CPU-seconds", seconds);
+  else if (seconds < 7200.0)
+    std::snprintf(text, sizeof text, "%.3g CPU-minutes", seconds / 60.0);
+  else
+    std::snprintf(text, sizeof text, "%.3g CPU-hours", seconds / 3600.0);
+  return text;
 }
 
 }  // namespace
@@ -346,12 +319,20 @@ void checkWork(const ScenarioSpec& spec, double budget_scale) {
           work.tracking_step_units, limits.tracking_step_units,
           "tracking units in one step (UAVs × (max_hypotheses × min(m, 64) + clutter_rate² × "
           "scans a clutter-born track lives × 1000 propagation sweeps))");
-  require(spec, "fusion.rounds", work.fusion_units, limits.fusion_units,
-          "fusion units per trial (steps × rounds × UAVs × neighbours in comm_range × targets)");
-  require(spec, "planner.pso", work.planning_units, limits.planning_units,
-          "planning units per trial (epochs × UAVs × particles × iterations (max_iterations, or "
-          "3 × stall_iterations if fewer) × targets in scope × (horizon × cost_substeps × free "
-          "UAVs + UAVs the terminal penalty searches))");
+  // The whole run in CPU time, named by its largest stage.
+  const double instruction_limit = limits.cpu_seconds * kInstructionsPerCpuSecond;
+  if (work.instructions > instruction_limit) {
+    const StageAdvice advice = adviceFor(work.stages.largest());
+    throw ScenarioError(
+        spec.file.string(), advice.field,
+        "expected at most about " + cpuTime(limits.cpu_seconds) + " of work (" +
+            roughly(instruction_limit) + " instructions at " + roughly(kInstructionsPerCpuSecond) +
+            " a CPU-second, the machine the estimate was measured on), this file "
+            "asks for about " +
+            cpuTime(work.cpuSeconds()) + " (" + roughly(work.instructions) +
+            "; by stage: " + work.stages.text() + "); the largest part is " + advice.what + ": " +
+            advice.change + " (--budget K raises every work limit K-fold)");
+  }
 }
 
 }  // namespace canopy::spec

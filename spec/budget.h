@@ -3,10 +3,13 @@
 // bounded before any of it is allocated or run; a file that asks for more is a ScenarioError
 // ("expected at most …, this file asks for about …") naming the field that drives it. The
 // limits sit about a thousand times above the paper's scenarios; `--budget K` multiplies every
-// one of them by K for those who mean it.
+// one of them by K for those who mean it. The run's whole work is estimated in instructions,
+// stage by stage (spec/work_model.h), and limited in CPU time: a file that runs in minutes is
+// admitted, one that would take hours is refused with the figure.
 #include <string>
 
 #include "spec/scenario_spec.h"
+#include "spec/work_model.h"
 
 namespace canopy::spec {
 
@@ -18,8 +21,9 @@ struct WorkLimits {
   double record_bytes = 4e9;          // estimated size of record.jsonl
   double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
   double tracking_step_units = 5e8;   // one step, every UAV, worst case (bench/RESULTS.md, issue 47)
-  double fusion_units = 2e11;         // steps × rounds × UAVs × neighbours in range × targets
-  double planning_units = 2e11;       // evaluations × H × substeps × tracks × UAVs in scope
+  // The whole run's estimated instructions (spec/work_model.h) in CPU-seconds of the machine the
+  // estimate was measured on (kInstructionsPerCpuSecond): half an hour.
+  double cpu_seconds = 1800.0;
   double sweep_configurations = 1e5;  // points of a sweep's Cartesian product
   double sweep_trials = 1e7;          // configurations × trials
   double sweep_bytes = 1e9;           // configurations × (their overrides' text + 4 kB)
@@ -52,8 +56,9 @@ struct WorkEstimate {
   double tracking_units = 0.0;
   double clutter_track_scans = 0.0;  // clutterTrackScans
   double tracking_step_units = 0.0;  // one step, every UAV: joint events enumerated + clutter BP
-  double fusion_units = 0.0;
-  double planning_units = 0.0;
+  StageWork stages;          // estimated instructions per stage (spec/work_model.h)
+  double instructions = 0.0;  // stages.total()
+  double cpuSeconds() const { return instructions / kInstructionsPerCpuSecond; }
 };
 WorkEstimate estimateWork(const ScenarioSpec& spec);
 

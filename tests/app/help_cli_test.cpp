@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
+#include <sstream>
 
 #include "tests/app/cli.h"
 
@@ -263,6 +264,43 @@ TEST(HelpCli, ValidateReportsEveryErrorInOnePass) {
                                                                               << o.err;
   }
   EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 4) << o.err;
+  fs::remove_all(dir);
+}
+
+// `canopy validate --help` promises the work estimate: the total in instructions and CPU time,
+// and one figure per stage that add up to it.
+TEST(HelpCli, ValidatePrintsTheWorkEstimateByStage) {
+  const fs::path dir = fresh("validate_work");
+  const Outcome help = runIn(dir, "validate --help");
+  EXPECT_NE(help.out.find("estimated in instructions and CPU time"), std::string::npos)
+      << help.out;
+  const Outcome o = runIn(dir, "validate trajectory_handover");
+  ASSERT_EQ(o.code, 0) << o.err;
+  double total = 0.0, seconds = 0.0, limit = 0.0;
+  const std::size_t at = o.out.find("  work: about ");
+  ASSERT_NE(at, std::string::npos) << o.out;
+  ASSERT_EQ(std::sscanf(o.out.c_str() + at,
+                        "  work: about %lf instructions, about %lf CPU-s on the machine the "
+                        "estimate was measured on (limit %lf CPU-s)",
+                        &total, &seconds, &limit),
+            3)
+      << o.out;
+  EXPECT_NEAR(seconds, total / 1e10, 0.01 * seconds);
+  EXPECT_DOUBLE_EQ(limit, 1800.0);
+  const std::size_t stages = o.out.find("  work by stage (instructions): ");
+  ASSERT_NE(stages, std::string::npos) << o.out;
+  std::istringstream words(o.out.substr(stages + 32, o.out.find('\n', stages) - stages - 32));
+  std::string name;
+  double value = 0.0, sum = 0.0;
+  int count = 0;
+  while (words >> name >> value) {
+    sum += value;
+    ++count;
+  }
+  EXPECT_EQ(count, 10) << o.out;
+  EXPECT_NEAR(sum, total, 0.01 * total) << o.out;  // each printed to three digits
+  // The paper scenario runs in well under a CPU-second.
+  EXPECT_LT(seconds, 1.0);
   fs::remove_all(dir);
 }
 
