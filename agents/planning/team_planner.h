@@ -141,6 +141,9 @@ class TeamPlanner {
   /// no agent's cost read a plan made earlier in the same epoch (all side by side), N when each
   /// read its predecessor's (one after another); 0 before the first SMA epoch.
   int levels() const { return levels_; }
+  /// Swarm iterations whose particles were evaluated side by side on the pool (an agent planned
+  /// alone in its level, or the centralised leader; PlanOptimizer::setPool), since the start.
+  long long sharedBatches() const;
 
  private:
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
