@@ -79,12 +79,15 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   // The whole swarm decoded at once (swarm_kernels.h), then evaluated four particles at a time.
   const auto batch = [this, n_moves, n_climbs](std::span<const double> positions,
                                                 std::span<double> costs) {
-    decode(positions, costs.size(), n_moves, n_climbs);
+    const std::size_t per_particle = actions_.size();
+    swarm_actions_.resize(costs.size() * per_particle);
     if (n_climbs == 0) {
+      decodeActions(positions, swarm_actions_);
       cost_.evaluate(swarm_actions_, costs);
-    } else {
-      cost_.evaluate(swarm_actions_, swarm_climbs_, costs);
+      return;
     }
+    decode(positions, costs.size(), n_moves, n_climbs);
+    cost_.evaluate(swarm_actions_, swarm_climbs_, costs);
   };
   // The same with the swarm's blocks evaluated side by side. Block b: particles [b·w, min((b +
   // 1)·w, n)), w = 4·⌈n / (4·blocks)⌉, so that the lanes group the candidates as one evaluate()
