@@ -68,12 +68,13 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   // Shared out when one batch is large enough (class comment); each block's copy of the prepared
   // cost is made by the block's own task at the first batch (in parallel: the copies are read-only
   // reads of cost_).
-  const std::size_t blocks = pool_ == nullptr ? 1 : static_cast<std::size_t>(pool_->threads());
+  TaskPool* const pool = shared_ == nullptr ? nullptr : shared_->pool;
+  const std::size_t blocks = pool == nullptr ? 1 : static_cast<std::size_t>(pool->threads());
   const bool shared =
       blocks > 1 && static_cast<std::size_t>(std::max(1, options.particles)) *
                             problem.targets.size() >= kSharedWork;
   if (shared) {
-    copies_.resize(blocks);
+    shared_->costs.resize(blocks);
     copied_.assign(blocks, 0);
   }
   // The whole swarm decoded at once (swarm_kernels.h), then evaluated four particles at a time.
@@ -92,16 +93,17 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   // The same with the swarm's blocks evaluated side by side. Block b: particles [b·w, min((b +
   // 1)·w, n)), w = 4·⌈n / (4·blocks)⌉, so that the lanes group the candidates as one evaluate()
   // over the whole swarm does.
-  const auto shared_batch = [this, n_moves, n_climbs, blocks](std::span<const double> positions,
-                                                              std::span<double> costs) {
+  const auto shared_batch = [this, n_moves, n_climbs, blocks, pool](
+                                std::span<const double> positions, std::span<double> costs) {
     const std::size_t n = costs.size(), per_particle = actions_.size();
     decode(positions, n, n_moves, n_climbs);
     const std::size_t width = 4 * ((n + 4 * blocks - 1) / (4 * blocks));
-    pool_->run(blocks, [&](std::size_t b) {
+    std::vector<NominalCost>& copies = shared_->costs;
+    pool->run(blocks, [&](std::size_t b) {
       const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
       if (first == last) return;
       if (!copied_[b]) {  // cost_ is only read while the blocks run
-        copies_[b] = cost_;
+        copies[b] = cost_;
         copied_[b] = 1;
       }
       const std::span<const Vec2> actions(swarm_actions_.data() + first * per_particle,
@@ -110,7 +112,7 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
           n_climbs == 0 ? std::span<const double>()
                         : std::span<const double>(swarm_climbs_.data() + first * n_climbs,
                                                   (last - first) * n_climbs);
-      copies_[b].evaluate(actions, climbs, costs.subspan(first, last - first));
+      copies[b].evaluate(actions, climbs, costs.subspan(first, last - first));
     });
     ++shared_batches_;
   };

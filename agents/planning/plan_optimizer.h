@@ -36,21 +36,29 @@ struct SwarmShape {
 /// its plan's `climbs`; without such a UAV the vector is the paper's. Keeps its buffers between
 /// calls; one instance per thread.
 ///
-/// With a pool (setPool), a swarm whose batches are large enough (particles · tracks ≥
-/// kSharedWork) has each iteration's particles evaluated side by side: the particles split into
-/// one block per thread (multiples of four, the cost's lanes), each block evaluated by its own copy
-/// of the prepared cost, the costs written in place. The swarm's draws and bookkeeping stay on the
-/// calling thread and every candidate's cost has the bits it has alone, so the search is the same
-/// bits at any thread count (docs/design-notes.md, "Threads inside one run").
+/// With a shared evaluation (share), a swarm whose batches are large enough (particles · tracks
+/// ≥ kSharedWork) has each iteration's particles evaluated side by side on its pool: the particles
+/// split into one block per thread (multiples of four, the cost's lanes), each block evaluated by
+/// its own copy of the prepared cost, the costs written in place. The swarm's draws and
+/// bookkeeping stay on the calling thread and every candidate's cost has the bits it has alone,
+/// so the search is the same bits at any thread count (docs/design-notes.md, "Threads inside one
+/// run").
 class PlanOptimizer {
  public:
   /// particles · tracks of one batch from which it is shared out: below, the hand-off costs more
   /// than it gains (bench/RESULTS.md, "One agent's swarm on two threads").
   static constexpr std::size_t kSharedWork = 2000;
 
-  /// Evaluates large batches on `pool` (nullptr or one thread: on the calling thread). The pool
-  /// must be idle while optimise() runs (the caller is not one of its tasks) and outlive its use.
-  void setPool(TaskPool* pool) { pool_ = pool; }
+  /// A pool and one cost per block to evaluate on: the copies are made once per search and
+  /// reused by every optimiser given the same SharedEvaluation, so the optimisers that share it
+  /// must run one at a time, and the pool must be idle while they do (not one of its tasks).
+  struct SharedEvaluation {
+    TaskPool* pool = nullptr;
+    std::vector<NominalCost> costs;
+  };
+  /// Evaluates large batches with `shared` (nullptr, no pool or one thread: on the calling
+  /// thread); it must outlive its use.
+  void share(SharedEvaluation* shared) { shared_ = shared; }
   /// Batches evaluated on the pool since construction.
   long long sharedBatches() const { return shared_batches_; }
 
@@ -74,9 +82,8 @@ class PlanOptimizer {
   std::vector<Vec2> actions_;        // m/s, the free UAVs' actions of one particle
   std::vector<Vec2> swarm_actions_;  // m/s, every particle's actions (particle-major)
   std::vector<double> swarm_climbs_;  // m/s, every particle's climb rates (particle-major)
-  TaskPool* pool_ = nullptr;
-  std::vector<NominalCost> copies_;  // per block: cost_ as prepared (copied once per call)
-  std::vector<char> copied_;         // per block: its copy holds this call's preparation
+  SharedEvaluation* shared_ = nullptr;
+  std::vector<char> copied_;  // per block: its cost holds this search's preparation
   long long shared_batches_ = 0;
 };
 

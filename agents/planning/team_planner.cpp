@@ -87,12 +87,12 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
       // of its own): the agents are independent, so they run side by side; a tool observing the
       // joint problems sees them one after the other, in order.
       // (the pool runs the agents: their swarms evaluate on their own threads)
-      for (PlanOptimizer& optimizer : optimizers_) optimizer.setPool(nullptr);
+      for (PlanOptimizer& optimizer : optimizers_) optimizer.share(nullptr);
       forEachTask(joint_observer_ ? nullptr : pool_, order_.size(),
                   [&](std::size_t k) { planJoint(out, order_[k], uavs, views[order_[k]]); });
       break;
     case PlannerAlgorithm::centralized:
-      optimizers_[order_.front()].setPool(pool_);  // the one search: its particles side by side
+      optimizers_[order_.front()].share(&shared_);  // the one search: its particles side by side
       planJoint(out, order_.front(), uavs, views[order_.front()]);
       break;
     case PlannerAlgorithm::learned:
@@ -256,8 +256,8 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
       }
     }
     // A level of one agent (every level in team scope) leaves the pool idle: that agent's swarm
-    // evaluates its particles on it instead (PlanOptimizer::setPool).
-    for (const int i : batch_) optimizers_[i].setPool(batch_.size() == 1 ? pool_ : nullptr);
+    // evaluates its particles on it instead (PlanOptimizer::share).
+    for (const int i : batch_) optimizers_[i].share(batch_.size() == 1 ? &shared_ : nullptr);
     forEachTask(pool_, batch_.size(), [&](std::size_t k) {
       const int i = batch_[k];
       const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};

@@ -120,7 +120,7 @@ TEST(Threads, SmaTeamScopePlansOneAfterAnotherWithTheSameRecord) {
 
 // Six UAVs in team scope over 30 people: every level holds one agent, and each swarm's batch is
 // 20·H = 100 particles × 30 tracks = 3000 ≥ PlanOptimizer::kSharedWork, so at two threads and
-// more each agent's particles are evaluated side by side (PlanOptimizer::setPool).
+// more each agent's particles are evaluated side by side (PlanOptimizer::share).
 std::string crowdScenario() {
   std::string uavs, targets;
   for (int i = 0; i < 6; ++i) {
