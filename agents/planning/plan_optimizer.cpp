@@ -66,8 +66,8 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   if (shape.particles_per_step > 0) options.particles = shape.particles_per_step * H;
   if (shape.max_iterations > 0) options.max_iterations = shape.max_iterations;
   // Shared out when one batch is large enough (class comment); each block's copy of the prepared
-  // cost is made by the block's own task at the first batch (in parallel: the copies are read-only
-  // reads of cost_).
+  // cost is made by the block's own task at the search's first batch (the blocks only read cost_,
+  // so they copy it side by side).
   TaskPool* const pool = shared_ == nullptr ? nullptr : shared_->pool;
   const std::size_t blocks = pool == nullptr ? 1 : static_cast<std::size_t>(pool->threads());
   const bool shared =

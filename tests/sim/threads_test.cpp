@@ -167,6 +167,21 @@ TEST(Threads, SmaTeamScopeSwarmEvaluatesOneAgentsParticlesSideBySideWithTheSameR
   expectSameAtAnyThreadCount(spec, "sma_team_crowd");
 }
 
+TEST(Threads, CentralisedLeadersSearchEvaluatesItsParticlesSideBySideWithTheSameRecord) {
+  std::string text = crowdScenario();
+  const std::string sma = R"("algorithm": "sma")";
+  text.replace(text.find(sma), sma.size(), R"("algorithm": "centralized")");
+  const spec::ScenarioSpec spec = spec::loadScenarioText(text, "crowd_centralised.json");
+  auto sharedAt = [&](int threads) {
+    Simulation sim(spec, threads);
+    while (!sim.done()) sim.tick();
+    return sim.team().planner().sharedBatches();
+  };
+  EXPECT_EQ(sharedAt(1), 0);
+  EXPECT_GE(sharedAt(2), 2 * 2);  // two epochs at least, the initial swarm and an iteration each
+  expectSameAtAnyThreadCount(spec, "centralised_crowd");
+}
+
 TEST(Threads, SmaReachScopePlansFarApartAgentsSideBySideWithTheSameRecord) {
   const spec::ScenarioSpec spec = spec::loadScenarioText(pairsScenario(""), "pairs.json");
   const std::vector<int> levels = levelsOf(spec, 2);
