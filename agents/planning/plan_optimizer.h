@@ -9,6 +9,7 @@
 #include "agents/planning/particle_swarm.h"
 #include "agents/planning/plan.h"
 #include "core/random.h"
+#include "core/task_pool.h"
 
 namespace canopy::agents::planning {
 
@@ -34,8 +35,33 @@ struct SwarmShape {
 /// order, its H climb rates x[2·n_free·H + c·H + m] ∈ [−climb_rate, climb_rate] (m/s), returned as
 /// its plan's `climbs`; without such a UAV the vector is the paper's. Keeps its buffers between
 /// calls; one instance per thread.
+///
+/// With a shared evaluation (share), a swarm whose batches are large enough (particles · tracks
+/// ≥ kSharedWork) has each iteration's particles evaluated side by side on its pool: the particles
+/// split into one block per thread (multiples of four, the cost's lanes), each block evaluated by
+/// its own copy of the prepared cost, the costs written in place. The swarm's draws and
+/// bookkeeping stay on the calling thread and every candidate's cost has the bits it has alone,
+/// so the search is the same bits at any thread count (docs/design-notes.md, "Threads inside one
+/// run").
 class PlanOptimizer {
  public:
+  /// particles · tracks of one batch from which it is shared out: below, the hand-off costs more
+  /// than it gains (bench/RESULTS.md, "One agent's swarm on two threads").
+  static constexpr std::size_t kSharedWork = 2000;
+
+  /// A pool and one cost per block to evaluate on: the copies are made once per search and
+  /// reused by every optimiser given the same SharedEvaluation, so the optimisers that share it
+  /// must run one at a time, and the pool must be idle while they do (not one of its tasks).
+  struct SharedEvaluation {
+    TaskPool* pool = nullptr;
+    std::vector<NominalCost> costs;
+  };
+  /// Evaluates large batches with `shared` (nullptr, no pool or one thread: on the calling
+  /// thread); it must outlive its use.
+  void share(SharedEvaluation* shared) { shared_ = shared; }
+  /// Batches evaluated on the pool since construction.
+  long long sharedBatches() const { return shared_batches_; }
+
   /// free_agents: the UAVs to optimise (SMA: the planning agent; Dec-POMDP: all). assumed: one
   /// plan per UAV, used for the others. warm_start: empty, or k joint starts of one plan per free
   /// UAV each (k·free_agents.size() plans, start-major; the first is the previous plan already
@@ -46,12 +72,19 @@ class PlanOptimizer {
                       const SwarmShape& shape = {});
 
  private:
+  // n particles' positions into swarm_actions_ (and swarm_climbs_ when n_climbs > 0).
+  void decode(std::span<const double> positions, std::size_t n, std::size_t n_moves,
+              std::size_t n_climbs);
+
   NominalCost cost_;
   ParticleSwarm swarm_;
   std::vector<double> lo_, hi_, warm_;
   std::vector<Vec2> actions_;        // m/s, the free UAVs' actions of one particle
   std::vector<Vec2> swarm_actions_;  // m/s, every particle's actions (particle-major)
   std::vector<double> swarm_climbs_;  // m/s, every particle's climb rates (particle-major)
+  SharedEvaluation* shared_ = nullptr;
+  std::vector<char> copied_;  // per block: its cost holds this search's preparation
+  long long shared_batches_ = 0;
 };
 
 }  // namespace canopy::agents::planning

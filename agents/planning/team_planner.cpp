@@ -86,10 +86,13 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
       // Each agent searches on its own belief, optimiser and the epoch's shared stream (a copy
       // of its own): the agents are independent, so they run side by side; a tool observing the
       // joint problems sees them one after the other, in order.
+      // (the pool runs the agents: their swarms evaluate on their own threads)
+      for (PlanOptimizer& optimizer : optimizers_) optimizer.share(nullptr);
       forEachTask(joint_observer_ ? nullptr : pool_, order_.size(),
                   [&](std::size_t k) { planJoint(out, order_[k], uavs, views[order_[k]]); });
       break;
     case PlannerAlgorithm::centralized:
+      optimizers_[order_.front()].share(&shared_);  // the one search: its particles side by side
       planJoint(out, order_.front(), uavs, views[order_.front()]);
       break;
     case PlannerAlgorithm::learned:
@@ -104,6 +107,12 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
     flown_epoch_ = epoch;
   }
   return out;
+}
+
+long long TeamPlanner::sharedBatches() const {
+  long long total = 0;
+  for (const PlanOptimizer& optimizer : optimizers_) total += optimizer.sharedBatches();
+  return total;
 }
 
 void TeamPlanner::reportDecisions(const TeamPlan& out, std::span<const UavState> uavs,
@@ -246,6 +255,9 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
         if (fresh(i, j) && level_[j] < level) joints_[i][j] = freshPlan(j);
       }
     }
+    // A level of one agent (every level in team scope) leaves the pool idle: that agent's swarm
+    // evaluates its particles on it instead (PlanOptimizer::share).
+    for (const int i : batch_) optimizers_[i].share(batch_.size() == 1 ? &shared_ : nullptr);
     forEachTask(pool_, batch_.size(), [&](std::size_t k) {
       const int i = batch_[k];
       const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};

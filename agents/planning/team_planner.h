@@ -132,7 +132,10 @@ class TeamPlanner {
   /// same bits: SMA-NBO agents whose costs do not read each other's new plans (a level at a
   /// time, planSequential), Dec-POMDP agents all at once. The pool must outlive the planner's
   /// use of it.
-  void setPool(TaskPool* pool) { pool_ = pool; }
+  void setPool(TaskPool* pool) {
+    pool_ = pool;
+    shared_.pool = pool;
+  }
 
   const PlannerConfig& config() const { return config_; }
   /// Intention messages since the start (SMA-NBO's plans, the centralised leader's orders).
@@ -141,6 +144,9 @@ class TeamPlanner {
   /// no agent's cost read a plan made earlier in the same epoch (all side by side), N when each
   /// read its predecessor's (one after another); 0 before the first SMA epoch.
   int levels() const { return levels_; }
+  /// Swarm iterations whose particles were evaluated side by side on the pool (an agent planned
+  /// alone in its level, or the centralised leader; PlanOptimizer::share), since the start.
+  long long sharedBatches() const;
 
  private:
   void planSequential(TeamPlan& out, std::span<const UavState> uavs,
@@ -176,6 +182,9 @@ class TeamPlanner {
   std::vector<Plan> flown_;  // per UAV: the plan it applied at the previous epoch
   int flown_epoch_ = -1;
   TaskPool* pool_ = nullptr;
+  // The pool and its blocks' costs for the one search at a time that shares its particles out:
+  // two copies of a prepared cost for the team, not two per agent.
+  PlanOptimizer::SharedEvaluation shared_;
   // planSequential's per-epoch scratch, by agent.
   std::vector<std::vector<IntentionLinks::Route>> routes_;  // where its message goes
   std::vector<int> rank_;                                   // its place in order_

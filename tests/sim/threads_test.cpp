@@ -3,7 +3,8 @@
 // scope (every agent reads its predecessors' new plans: planned one after another) and in reach
 // scope (agents far apart planned side by side, also over lossy, late links), Dec-POMDP, and a
 // team with ground robots. The level counts SMA-NBO plans in are checked against what the
-// scenarios' geometry gives by hand, so that the parallel path is known to have run.
+// scenarios' geometry gives by hand, so that the parallel path is known to have run; a team-scope
+// swarm large enough to share one agent's particles out counts the batches it shared.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -115,6 +116,70 @@ TEST(Threads, SmaTeamScopePlansOneAfterAnotherWithTheSameRecord) {
   ASSERT_FALSE(levels.empty());
   for (const int l : levels) EXPECT_EQ(l, static_cast<int>(spec.uavs.size()));
   expectSameAtAnyThreadCount(spec, "sma_team");
+}
+
+// Six UAVs in team scope over 30 people: every level holds one agent, and each swarm's batch is
+// 20·H = 100 particles × 30 tracks = 3000 ≥ PlanOptimizer::kSharedWork, so at two threads and
+// more each agent's particles are evaluated side by side (PlanOptimizer::share).
+std::string crowdScenario() {
+  std::string uavs, targets;
+  for (int i = 0; i < 6; ++i) {
+    const int x = 30 + 60 * (i % 3), y = 30 + 60 * (i / 3);
+    uavs += std::string(i ? ", " : "") + R"({"name": "u)" + std::to_string(i) +
+            R"(", "start": [)" + std::to_string(x) + ", " + std::to_string(y) +
+            R"(], "v_max": 5, "fov": {"size": [20, 20]}})";
+    for (int k = 0; k < 5; ++k) {
+      const int p = 5 * i + k;
+      targets += std::string(p ? ", " : "") + R"({"name": "p)" + std::to_string(p) +
+                 R"(", "path": {"start": [)" + std::to_string(x - 8 + 4 * k) + ", " +
+                 std::to_string(y - 6 + 3 * k) + R"(], "velocity": [)" +
+                 std::to_string(0.2 * (k - 2)) + ", " + std::to_string(0.1 * (2 - k)) + "]}}";
+    }
+  }
+  return R"({"name": "crowd", "aoi": [0, 0, 180, 120], "clock": {"dt": 0.5, "duration": 2.0},
+  "seed": 4, "uavs": [)" + uavs + R"(], "targets": [)" + targets + R"(],
+  "occluders": [{"type": "poisson", "region": [0, 0, 180, 120], "lambda": 0.005,
+                 "radius": [1.0, 2.0], "seed": 6}],
+  "tracking": {"preseed": true, "preseed_variance": [1, 1, 1, 1]},
+  "planner": {"algorithm": "sma", "horizon": 5, "plan_period": 1.0}
+})";
+}
+
+TEST(Threads, SmaTeamScopeSwarmEvaluatesOneAgentsParticlesSideBySideWithTheSameRecord) {
+  const spec::ScenarioSpec spec = spec::loadScenarioText(crowdScenario(), "crowd.json");
+  ASSERT_EQ(spec.uavs.size(), 6u);
+  ASSERT_EQ(spec.targets.size(), 30u);
+  // Shared batches at a thread count: each epoch's levels and the batches evaluated on the pool.
+  auto sharedAt = [&](int threads) {
+    Simulation sim(spec, threads);
+    while (!sim.done()) {
+      if (sim.tick().plan) {
+        EXPECT_EQ(sim.team().planner().levels(), 6);  // one agent a level
+      }
+    }
+    return sim.team().planner().sharedBatches();
+  };
+  EXPECT_EQ(sharedAt(1), 0);  // no pool: the swarm evaluates on the calling thread
+  // Epochs at t = 0 and 1 s at least, six agents each, every batch of every swarm on the pool:
+  // the initial swarm and at least one iteration, two batches per agent and epoch.
+  EXPECT_GE(sharedAt(2), 2 * 6 * 2);
+  EXPECT_GE(sharedAt(4), 2 * 6 * 2);
+  expectSameAtAnyThreadCount(spec, "sma_team_crowd");
+}
+
+TEST(Threads, CentralisedLeadersSearchEvaluatesItsParticlesSideBySideWithTheSameRecord) {
+  std::string text = crowdScenario();
+  const std::string sma = R"("algorithm": "sma")";
+  text.replace(text.find(sma), sma.size(), R"("algorithm": "centralized")");
+  const spec::ScenarioSpec spec = spec::loadScenarioText(text, "crowd_centralised.json");
+  auto sharedAt = [&](int threads) {
+    Simulation sim(spec, threads);
+    while (!sim.done()) sim.tick();
+    return sim.team().planner().sharedBatches();
+  };
+  EXPECT_EQ(sharedAt(1), 0);
+  EXPECT_GE(sharedAt(2), 2 * 2);  // two epochs at least, the initial swarm and an iteration each
+  expectSameAtAnyThreadCount(spec, "centralised_crowd");
 }
 
 TEST(Threads, SmaReachScopePlansFarApartAgentsSideBySideWithTheSameRecord) {
