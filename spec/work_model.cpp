@@ -23,6 +23,12 @@ namespace {
 constexpr double kPerSearchUnit = 68.0;
 // The terminal penalty: one track in scope, per evaluation.
 constexpr double kPerPenaltyUnit = 38.0;
+// The penalty's exact skip: one track in reach (plus one), per evaluation (bench/RESULTS.md, "The
+// terminal penalty's exact skip": 72, 131 and 126 at 64 × 256 × 10⁵, 16 × 64 × 10⁴ and
+// 16 × 256 × 10⁴; their geometric mean).
+constexpr double kPerSkipUnit = 106.0;
+// The skip starts from 16 tracks that no candidate changes (NominalCost::kSkipFrom).
+constexpr double kSkipFromTracks = 16.0;
 // Preparing the cost: one (track, UAV) pair in scope, per swarm.
 constexpr double kPerPrepareUnit = 508.0;
 // Fusion: one track or crown held, per step (and per neighbour, a round adding 1/25 of that).
@@ -218,8 +224,14 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
     const double searched =
         g.free_uavs > 1.0 ? (p.cost_scope == agents::CostScope::reach ? g.uavs_in_reach : uavs)
                           : 1.0;
-    if (p.terminal_penalty)
-      w.planning_penalty = kPerPenaltyUnit * g.evaluations * scope_tracks * searched;
+    // With one free UAV and at least 16 tracks out of its reach, a candidate charges again only
+    // the tracks it can change (agents/planning/terminal_penalty_skip.cpp): those in its reach
+    // and the few the UAVs it displaces could take.
+    const bool skips = g.free_uavs <= 1.0 && scope_tracks - g.tracks_in_reach >= kSkipFromTracks;
+    if (p.terminal_penalty) {
+      w.planning_penalty = skips ? kPerSkipUnit * g.evaluations * (1.0 + g.tracks_in_reach)
+                                 : kPerPenaltyUnit * g.evaluations * scope_tracks * searched;
+    }
     // Before each swarm, the cost is prepared (nominal_cost.h): every track in scope against
     // every UAV in scope (the fixed UAVs' paths, footprints and distances at m = H).
     const double scope_uavs = p.cost_scope == agents::CostScope::reach ? g.uavs_in_reach : uavs;

@@ -15,7 +15,7 @@ namespace {
 
 // The per-unit coefficients of spec/work_model.cpp as bench/RESULTS.md ("Work budget in
 // instructions") states them; the formulas are worked by hand below.
-constexpr double kSearch = 68, kPenalty = 38, kPrepare = 508, kFusion = 188, kTracking = 1070,
+constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 508, kFusion = 188, kTracking = 1070,
                  kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 281, kSetup = 5670,
                  kStart = 1.5e7;
 
@@ -97,6 +97,32 @@ TEST(WorkModel, ReachScopeAndRangesCountTheNeighbourhoodFromTheStarts) {
   EXPECT_NEAR(w.fusion, kFusion * 11 * 2 * (50 + 1.0), 1e-6);  // no neighbour: its own tracks
 }
 
+// The hand-sized file with 20 more people standing far from both UAVs: 22 tracks held, 1 in
+// reach on average, so 21 that no candidate of one free UAV changes (≥ 16): the penalty's skip,
+// (1 + tracks in reach) per evaluation. In reach scope the same file charges its tracks in reach.
+TEST(WorkModel, ThePenaltysSkipCountsTheTracksInReach) {
+  std::string people = R"({"path": {"start": [105, 100], "velocity": [1, 0]}},
+                          {"path": {"start": [100, 110], "velocity": [0, 0]}})";
+  for (int i = 0; i < 20; ++i)
+    people += R"(, {"path": {"start": [)" + std::to_string(500 + i) + R"(, 500], "velocity": [0, 0]}})";
+  auto file = [&](const std::string& scope) {
+    return loadScenarioText(R"({"aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
+      "uavs": [{"start": [100, 100]}, {"start": [900, 900]}], "targets": [)" +
+                                people + R"(],
+      "planner": {"algorithm": "sma", "horizon": 2, "cost_scope": ")" + scope + R"(",
+                  "pso": {"particles_per_step": 10, "stall_iterations": 5}}})",
+                            "skip.json");
+  };
+  const ScenarioSpec team = file("team");
+  const WorkGeometry g = workGeometry(team);
+  EXPECT_DOUBLE_EQ(g.tracks_held, 22.0);
+  EXPECT_DOUBLE_EQ(g.tracks_in_reach, 1.0);  // 2 at the first UAV, 0 at the second
+  EXPECT_DOUBLE_EQ(g.evaluations, 1200.0);
+  EXPECT_NEAR(estimateStageWork(team).planning_penalty, kSkip * 1200 * (1 + 1.0), 1e-6);
+  // Reach scope: 1 track in scope, fewer than 16 beyond reach: every track, every evaluation.
+  EXPECT_NEAR(estimateStageWork(file("reach")).planning_penalty, kPenalty * 1200 * 1.0, 1e-6);
+}
+
 // A swarm runs about 2 × stall_iterations (the stall rule), at most max_iterations: the
 // evaluations follow stall_iterations until max_iterations caps them.
 TEST(WorkModel, EvaluationsFollowTheStallRuleUntilMaxIterationsCapsThem) {
@@ -169,8 +195,9 @@ TEST(WorkModel, TheEstimateGrowsWithUavsPeopleAndDuration) {
 
 // Issue 48's largest scale point, 256 UAVs × 1024 people × 10⁶ crowns for 4 s, runs in about a
 // minute of CPU (bench/RESULTS.md): admitted by the defaults. The same file with 100 times the
-// particles (100 times the planning, its largest part) would take hours: refused, naming the field
-// of its largest stage and the time. (400 s of it are refused too, by the record's size.)
+// particles and 10 times the iterations (a thousand times the search, its largest part then)
+// would take hours: refused, naming the field of its largest stage and the time. (400 s of it
+// are refused too, by the record's size.)
 TEST(WorkModel, TheLargestScalePointIsAdmittedAndOneHundredTimesItIsRefused) {
   const ScenarioSpec four = loadScenarioText(scalePoint(256, 1024, 1e6, 4), "city.json");
   EXPECT_GT(four.trees.size(), 950000u);
@@ -179,17 +206,19 @@ TEST(WorkModel, TheLargestScalePointIsAdmittedAndOneHundredTimesItIsRefused) {
   EXPECT_NO_THROW(checkWork(four, 1.0));
   ScenarioSpec many = four;
   many.planner.pso.particles_per_step *= 100;
+  many.planner.pso.stall_iterations *= 10;  // 2 × 500 iterations, max_iterations 1000
   many.file = "swarm100.json";
   try {
     checkWork(many, 1.0);
     FAIL() << "expected a ScenarioError";
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.file(), "swarm100.json");
-    EXPECT_EQ(e.field(), "planner.cost_scope") << e.message();  // the penalty is the largest
+    EXPECT_EQ(e.field(), "planner.pso") << e.message();  // the search is the largest
     EXPECT_NE(e.message().find("expected at most about 30 CPU-minutes of work"), std::string::npos)
         << e.message();
     EXPECT_NE(e.message().find("this file asks for about "), std::string::npos) << e.message();
-    EXPECT_NE(e.message().find("planner.cost_scope \"reach\""), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("fewer planner.pso.particles_per_step"), std::string::npos)
+        << e.message();
   }
   EXPECT_NO_THROW(checkWork(many, 100.0));  // --budget 100
   ScenarioSpec longer = four;
