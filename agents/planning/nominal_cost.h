@@ -223,9 +223,12 @@ class NominalCost {
     for (int lane = 0; lane < kLanes; ++lane) loss[lane] = std::exp(-custody_r2_ / trace[lane]);
     return loss;
   }
-  // evaluate()'s body, compiled once per instruction set.
+  // evaluate()'s body, compiled once per instruction set and per kHeight (each its own function,
+  // so that the paper's loop is compiled as it was before heights: bench/RESULTS.md).
+  template <bool kHeight>
   void evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
                         std::span<double> costs);
+  template <bool kHeight>
   void evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
                     std::span<double> costs);
   // kHeight: some free agent has a camera or uses `volumes`, or the team mixes models (height_);

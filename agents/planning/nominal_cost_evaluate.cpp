@@ -14,30 +14,35 @@
 namespace canopy::agents::planning {
 
 #if defined(__x86_64__)
+template <bool kHeight>
 [[gnu::target("avx2")]] void NominalCost::evaluateAvx2(std::span<const Vec2> actions,
                                                        std::span<const double> climbs,
                                                        std::span<double> costs) {
-  height_ ? evaluateBody<true>(actions, climbs, costs)
-          : evaluateBody<false>(actions, climbs, costs);
+  evaluateBody<kHeight>(actions, climbs, costs);
 }
 #else  // elsewhere the baseline build only
+template <bool kHeight>
 void NominalCost::evaluateAvx2(std::span<const Vec2> actions, std::span<const double> climbs,
                                std::span<double> costs) {
-  height_ ? evaluateBody<true>(actions, climbs, costs)
-          : evaluateBody<false>(actions, climbs, costs);
+  evaluateBody<kHeight>(actions, climbs, costs);
 }
 #endif
 
+template <bool kHeight>
 void NominalCost::evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
                                    std::span<double> costs) {
-  height_ ? evaluateBody<true>(actions, climbs, costs)
-          : evaluateBody<false>(actions, climbs, costs);
+  evaluateBody<kHeight>(actions, climbs, costs);
 }
 
 void NominalCost::evaluateWith(InstructionSet set, std::span<const Vec2> actions,
                                std::span<const double> climbs, std::span<double> costs) {
-  set == InstructionSet::avx2 ? evaluateAvx2(actions, climbs, costs)
-                              : evaluateBaseline(actions, climbs, costs);
+  if (set == InstructionSet::avx2) {
+    height_ ? evaluateAvx2<true>(actions, climbs, costs)
+            : evaluateAvx2<false>(actions, climbs, costs);
+  } else {
+    height_ ? evaluateBaseline<true>(actions, climbs, costs)
+            : evaluateBaseline<false>(actions, climbs, costs);
+  }
 }
 
 double NominalCost::evaluate(std::span<const Vec2> actions) {
