@@ -15,6 +15,7 @@
 #include "sim/run.h"
 #include "sim/run_report.h"
 #include "sim/simulation.h"
+#include "spec/budget.h"
 #include "spec/loader.h"
 
 namespace canopy::app {
@@ -144,6 +145,15 @@ int Run::run() {
     return kExitFailure;
   }
   const spec::ScenarioSpec spec = spec::loadScenario(scenario_, load_);
+  // The budget sized the record `--record auto` writes; plain lines asked for are sized here.
+  if (record_ == sim::RecordFormat::jsonl) {
+    const double bytes = spec::estimateWork(spec).record_bytes;
+    const double limit = spec::workLimits(load_.budget_scale).record_bytes;
+    if (bytes > limit) {
+      usageError("--record", "jsonl: " + spec::budgetMessage(bytes, limit, "bytes of record.jsonl") +
+                                 "; the compact record (--record compact or auto) is smaller");
+    }
+  }
   if (out_dir_.empty()) {
     // The scenario's name is the file's text: one safe component, so it stays under out/.
     out_dir_ = "out/" + safeFileName(spec.name);

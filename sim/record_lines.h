@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "spec/budget.h"
 #include "spec/scenario_spec.h"
 
 namespace canopy::sim {
@@ -20,7 +21,7 @@ enum class RecordFormat { automatic, jsonl, compact };
 
 inline constexpr const char* kRecordJsonlName = "record.jsonl";
 inline constexpr const char* kRecordCompactName = "record.jsonl.zst";
-inline constexpr double kCompactRecordAbove = 64e6;
+inline constexpr double kCompactRecordAbove = spec::kCompactRecordAbove;
 
 /// `format` with automatic resolved for `spec`.
 RecordFormat resolveRecordFormat(RecordFormat format, const spec::ScenarioSpec& spec);

@@ -18,7 +18,7 @@ struct WorkLimits {
   double trees = 2e6;                 // points one layout generator draws; trees in a scenario
   double world_units = 2e9;           // steps × (sub-steps × (UAVs + targets) + UAVs · seen)
   double world_substeps = 1e7;        // steps × Box2D sub-steps a step (world/substeps.h)
-  double record_bytes = 4e9;          // estimated size of record.jsonl
+  double record_bytes = 4e9;          // estimated size of the record as `canopy run` writes it
   double tracking_units = 5e11;       // steps × UAVs × (measurements² + joint-event cap); city_swarm asks 2.2e11
   double tracking_step_units = 5e8;   // one step, every UAV, worst case (bench/RESULTS.md, issue 47)
   // The whole run's estimated instructions (spec/work_model.h) in CPU-seconds of the machine the
@@ -46,13 +46,21 @@ double visibleTargetsBound(const ScenarioSpec& spec);
 /// each UAV then holds ~1200 clutter tracks.
 double clutterTrackScans(const ScenarioSpec& spec);
 
+/// `canopy run --record auto` (the default) writes the compact record (record.jsonl.zst) when
+/// record.jsonl is estimated above this many bytes, and plain lines below (sim/record_lines.h).
+inline constexpr double kCompactRecordAbove = 64e6;
+/// record.jsonl's estimate over this bounds the compact record's size: measured 49 (16 × 64 × 10⁴,
+/// 30 s), 105 (city_swarm), 164 (64 × 256 × 10⁵) and 550 (256 × 1024 × 10⁶) (bench/RESULTS.md).
+inline constexpr double kCompactRecordRatio = 20.0;
+
 /// What one trial of `spec` asks for, in the units of WorkLimits.
 struct WorkEstimate {
   double visible_trees = 0.0;    // visibleTreesBound
   double visible_targets = 0.0;  // visibleTargetsBound
   double substeps = 1.0;         // the most Box2D sub-steps of one step (world/substeps.h)
   double world_units = 0.0;
-  double record_bytes = 0.0;
+  double record_bytes = 0.0;          // record.jsonl, plain lines
+  double record_written_bytes = 0.0;  // the form `--record auto` writes (kCompactRecordAbove)
   double tracking_units = 0.0;
   double clutter_track_scans = 0.0;  // clutterTrackScans
   double tracking_step_units = 0.0;  // one step, every UAV: joint events enumerated + clutter BP

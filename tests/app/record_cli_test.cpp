@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,30 @@ TEST(RecordCli, PrintsThePlainLinesFromEitherFormAndEveryReaderReadsBoth) {
     EXPECT_NE(o.err.find(says), std::string::npos) << args << ": " << o.err;
   }
   fs::remove_all(dir);
+}
+
+// The budget sizes the record `--record auto` writes: past 6.4e7 bytes of record.jsonl the compact
+// form, a 20th of it. One UAV over ten people for 10⁶ steps: record.jsonl estimated at
+// 10⁶ × (1000 + 600 × 10) = 7.0e9 bytes, over the 4e9 limit; written compact, 3.5e8. Admitted;
+// the same run asked for as plain lines is refused before anything is written.
+TEST(RecordCli, PlainLinesPastTheLimitAreRefusedWhereTheCompactRecordIsAdmitted) {
+  const fs::path dir = fresh("record-limit");
+  fs::create_directories(dir);
+  std::string people;
+  for (int i = 0; i < 10; ++i) {
+    people += std::string(i ? ", " : "") + R"({"path": {"start": [)" + std::to_string(20 + i) +
+              R"(, 20], "velocity": [0, 0]}})";
+  }
+  std::ofstream(dir / "long.json") << (R"({"aoi": [0, 0, 100, 50], "uavs": [{"start": [10, 10]}],
+    "targets": [)" + people + R"(], "clock": {"dt": 0.01, "duration": 10000}})");
+  EXPECT_EQ(runIn(dir, "validate long.json").code, 0);
+  const Outcome plain = runIn(dir, "run long.json --record jsonl --out p");
+  EXPECT_EQ(plain.code, 2);
+  EXPECT_NE(plain.err.find("--record: jsonl: expected at most 4.0e+09 bytes of record.jsonl"),
+            std::string::npos)
+      << plain.err;
+  EXPECT_NE(plain.err.find("about 7.0e+09"), std::string::npos) << plain.err;
+  EXPECT_FALSE(fs::exists(dir / "p"));
 }
 
 }  // namespace
