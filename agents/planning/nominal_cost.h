@@ -223,8 +223,8 @@ class NominalCost {
     for (int lane = 0; lane < kLanes; ++lane) loss[lane] = std::exp(-custody_r2_ / trace[lane]);
     return loss;
   }
-  // evaluate()'s body, compiled once per instruction set and per kHeight (each its own function,
-  // so that the paper's loop is compiled as it was before heights: bench/RESULTS.md).
+  // evaluate()'s body, compiled once per instruction set and per kHeight, each its own function:
+  // the paper's loop is not compiled beside the height branch (TH −2.1 M Ir, bench/RESULTS.md).
   template <bool kHeight>
   void evaluateBaseline(std::span<const Vec2> actions, std::span<const double> climbs,
                         std::span<double> costs);
