@@ -127,27 +127,11 @@ double visibleTargetsBound(const ScenarioSpec& spec) {
 
 namespace {
 
-// The fastest any target's scripted path moves (m/s): a constant velocity, or a segment's.
-double fastestTarget(const ScenarioSpec& spec) {
-  double fastest = 0.0;  // m/s
-  for (const TargetSpec& target : spec.targets) {
-    const world::Path& path = target.path;
-    if (path.isConstantVelocity()) {
-      fastest = std::max(fastest, path.velocity().norm());
-      continue;
-    }
-    const std::vector<world::TimedPoint>& p = path.points();
-    for (std::size_t i = 1; i < p.size(); ++i)
-      fastest = std::max(fastest, (p[i].p - p[i - 1].p).norm() / (p[i].t - p[i - 1].t));
-  }
-  return fastest;
-}
-
 double substepsBound(const ScenarioSpec& spec) {
   std::vector<world::UavDef> bodies;
   bodies.reserve(spec.uavs.size());
   for (const UavSpec& uav : spec.uavs) bodies.push_back(uav.body);
-  return world::substepBound(bodies, spec.dt, fastestTarget(spec));
+  return world::substepBound(bodies, spec.dt, fastestTargetSpeed(spec));
 }
 
 }  // namespace
@@ -231,7 +215,8 @@ std::string fastestField(const ScenarioSpec& spec) {
   std::size_t fastest = 0;
   for (std::size_t i = 0; i < spec.uavs.size(); ++i)
     if (spec.uavs[i].body.v_max > spec.uavs[fastest].body.v_max) fastest = i;
-  if (spec.uavs.empty() || fastestTarget(spec) > spec.uavs[fastest].body.v_max) return "targets";
+  if (spec.uavs.empty() || fastestTargetSpeed(spec) > spec.uavs[fastest].body.v_max)
+    return "targets";
   return "uavs[" + std::to_string(fastest) + "].v_max";
 }
 

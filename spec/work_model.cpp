@@ -108,6 +108,8 @@ double meanWithin(const std::vector<Vec2>& centres, const std::vector<Vec2>& poi
   return count / counted;
 }
 
+}  // namespace
+
 double fastestTargetSpeed(const ScenarioSpec& spec) {
   double fastest = 0.0;  // m/s
   for (const TargetSpec& target : spec.targets) {
@@ -122,8 +124,6 @@ double fastestTargetSpeed(const ScenarioSpec& spec) {
   }
   return fastest;
 }
-
-}  // namespace
 
 WorkGeometry workGeometry(const ScenarioSpec& spec) {
   WorkGeometry g;

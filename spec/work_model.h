@@ -32,6 +32,9 @@ struct WorkGeometry {
 };
 WorkGeometry workGeometry(const ScenarioSpec& spec);
 
+/// The fastest any target's scripted path moves (m/s): a constant velocity, or a segment's.
+double fastestTargetSpeed(const ScenarioSpec& spec);
+
 /// The stages of one step (and the setup before the first), in estimated instructions.
 struct StageWork {
   double planning_search = 0.0;   // PSO moves and the cost recursion over the tracks in reach
