@@ -150,8 +150,9 @@ int Run::run() {
     const double bytes = spec::estimateWork(spec).record_bytes;
     const double limit = spec::workLimits(load_.budget_scale).record_bytes;
     if (bytes > limit) {
-      usageError("--record", "jsonl: " + spec::budgetMessage(bytes, limit, "bytes of record.jsonl") +
-                                 "; the compact record (--record compact or auto) is smaller");
+      usageError("--record",
+                 "jsonl: " + spec::budgetMessage(bytes, limit, "bytes of record.jsonl") +
+                     "; the compact record (--record compact or auto) is smaller");
     }
   }
   if (out_dir_.empty()) {
