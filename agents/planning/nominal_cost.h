@@ -12,6 +12,7 @@
 #include "agents/gaussian.h"
 #include "agents/occlusion_map.h"
 #include "agents/planning/covariance_lanes.h"
+#include "agents/planning/nearby_uavs.h"
 #include "agents/planning/plan.h"
 #include "agents/planning/sensing_lanes.h"
 #include "agents/planning/symmetric_covariance.h"
@@ -312,6 +313,13 @@ class NominalCost {
   std::vector<std::uint64_t> reach_;      // bit f: free UAV f can reach a footprint over z_{j,m}
   // Per track: P after t samples with the fixed UAVs' measurements only, at [j·(H·S+1) + t].
   std::vector<SymmetricCov4> fixed_path_;
+
+  // prepare()'s fixed UAVs by cell, one index per sample (many fixed UAVs: nearby_uavs.h), their
+  // positions at the sample being indexed, and one nominal position's nearby UAVs; kept to reuse
+  // their memory.
+  std::vector<NearbyUavs> nearby_;
+  std::vector<Vec2> nearby_positions_;
+  std::vector<int> near_fixed_;
 
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;           // first such sample t (H·S: none)

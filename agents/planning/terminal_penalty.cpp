@@ -1,12 +1,87 @@
 // The NBO cost's terminal penalty (Miller et al. 2009), one candidate at a time: each track that
 // no footprint holds and no crown hides at m = H, by decreasing tr(P_{j,H}[pos]), is charged to
-// the UAV whose distance to it plus the distance D_i already charged to it is least.
+// the UAV whose distance to it plus the distance D_i already charged to it is least; and
+// prepare()'s part for it (preparePenalty).
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "agents/planning/nominal_cost.h"
 
 namespace canopy::agents::planning {
+namespace {
+
+// From this many tracks (or fixed UAVs) on, the terminal penalty orders them by a merge (or
+// searches them nearest first): same bits, fewer instructions (preparePenalty).
+constexpr std::size_t kFastPenaltyFrom = 8;
+
+}  // namespace
+
+void NominalCost::preparePenalty(const std::vector<char>& is_free) {
+  const int T = horizon_ * substeps_;
+  penalty_tracks_.clear();
+  for (const int j : scope_tracks_)
+    if (!occluded_[static_cast<std::size_t>(j) * T + T - 1]) penalty_tracks_.push_back(j);
+  // The penalty's order, by decreasing tr(P_{j,H}[pos]) and then index: the tracks no free UAV
+  // can see (start_ = T) have the same trace and view in every lane, so they are sorted here once
+  // and merged with the few that a candidate changes (addTerminalPenalty). A non-finite trace
+  // leaves the order to the insertion sort of every call (its exact ties and NaN handling).
+  penalty_fixed_order_.clear();
+  penalty_varying_.clear();
+  penalty_merge_ = true;
+  for (const int j : penalty_tracks_) {
+    if (start_[j] < T) {
+      penalty_varying_.push_back(j);
+      continue;
+    }
+    if (in_view_final_[kLanes * j] != 0) continue;  // a fixed UAV holds it at m = H
+    penalty_merge_ = penalty_merge_ && std::isfinite(trace_final_[kLanes * j]);
+    penalty_fixed_order_.push_back(j);
+  }
+  std::stable_sort(penalty_fixed_order_.begin(), penalty_fixed_order_.end(), [&](int a, int b) {
+    return trace_final_[kLanes * a] > trace_final_[kLanes * b];
+  });
+  // Both ways give the same bits; the merge pays only past a few tracks (a paper scenario's four
+  // are sorted faster by insertion).
+  penalty_merge_ = penalty_merge_ && penalty_fixed_order_.size() >= kFastPenaltyFrom;
+  const std::size_t n_charged = penalty_uavs_.size();
+  penalty_free_.resize(n_charged);
+  for (std::size_t k = 0; k < n_charged; ++k) penalty_free_[k] = is_free[penalty_uavs_[k]];
+  // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
+  terminal_distance_.assign(start_.size() * n_charged, 0.0);
+  for (const int j : penalty_tracks_) {
+    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
+    for (std::size_t k = 0; k < n_charged; ++k) {
+      if (penalty_free_[k]) continue;
+      terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
+    }
+  }
+  // Per track, the nearest fixed entries by distance (then entry), so that the penalty's search for
+  // the least D_i + distance stops at the first fixed UAV farther than the best so far (D_i ≥ 0);
+  // a search that passes them all looks at the rest in any order.
+  penalty_free_entries_.clear();
+  penalty_fixed_entries_.clear();
+  for (std::size_t k = 0; k < n_charged; ++k)
+    (penalty_free_[k] ? penalty_free_entries_ : penalty_fixed_entries_)
+        .push_back(static_cast<int>(k));
+  const std::size_t n_fixed = penalty_fixed_entries_.size();
+  nearest_fixed_.resize(start_.size() * n_fixed);
+  penalty_nearest_ = n_fixed >= kFastPenaltyFrom;  // a few UAVs: the plain loop is faster
+  for (const int j : penalty_tracks_) {
+    if (!penalty_nearest_) break;
+    const double* distance = &terminal_distance_[j * n_charged];
+    int* order = &nearest_fixed_[j * n_fixed];
+    std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
+    for (const int k : penalty_fixed_entries_)
+      penalty_nearest_ = penalty_nearest_ && std::isfinite(distance[k]);
+    std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
+      return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+    });
+  }
+  prepareSkip();
+}
+
 
 // Tracks in no footprint (this lane's) and not occluded at m = H (penalty_tracks_, in the order J
 // sums them), into uncovered_ by decreasing tr(P_{j,H}[pos]) (ties: lower index first; stable
