@@ -19,22 +19,33 @@ constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 508, kFusi
                  kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 281, kSetup = 5670,
                  kStart = 1.5e7;
 
+// The hand-sized files below: two UAVs at (100, 100) and (900, 900), SMA-NBO H = 2 with 10
+// particles per step and stall_iterations 5, 2 s at dt = 0.2 s; `people` (the targets' JSON),
+// `fusion` (the fusion section's fields, or none) and planner.cost_scope `scope`.
+const std::string kThreePeople = R"({"path": {"start": [105, 100], "velocity": [1, 0]}},
+                {"path": {"start": [100, 110], "velocity": [0, 0]}},
+                {"path": {"start": [500, 500], "velocity": [0, 0]}})";
+ScenarioSpec handSized(const std::string& name, const std::string& people = kThreePeople,
+                       const std::string& fusion = "", const std::string& scope = "team") {
+  return loadScenarioText(R"({
+    "aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
+    "uavs": [{"start": [100, 100]}, {"start": [900, 900]}],
+    "targets": [)" + people + "]," +
+                              (fusion.empty() ? "" : R"( "fusion": {)" + fusion + "},") +
+                              R"(
+    "planner": {"algorithm": "sma", "horizon": 2, "cost_scope": ")" + scope + R"(",
+                "pso": {"particles_per_step": 10, "stall_iterations": 5}}
+  })",
+                          name);
+}
+
 // Two UAVs far apart (100, 100) and (900, 900) with 20 × 20 m footprints (circumradius
 // 10√2 = 14.142 m, area 400 m²) at v_max 5 m/s; three people: two beside the first UAV (5 and
 // 10 m off, 11.18 m apart, one walking at 1 m/s) and one alone at (500, 500). SMA-NBO H = 2,
 // 10 particles per step (20 particles), stall_iterations 5 (2 × 5 = 10 iterations), Δ = 1 s;
 // 2 s at dt = 0.2 s: 11 steps, 3 epochs (t = 0, 1, 2). No trees, no clutter.
 TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
-  const ScenarioSpec spec = loadScenarioText(R"({
-    "aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
-    "uavs": [{"start": [100, 100]}, {"start": [900, 900]}],
-    "targets": [{"path": {"start": [105, 100], "velocity": [1, 0]}},
-                {"path": {"start": [100, 110], "velocity": [0, 0]}},
-                {"path": {"start": [500, 500], "velocity": [0, 0]}}],
-    "planner": {"algorithm": "sma", "horizon": 2,
-                "pso": {"particles_per_step": 10, "stall_iterations": 5}}
-  })",
-                                             "hand.json");
+  const ScenarioSpec spec = handSized("hand.json");
   const WorkGeometry g = workGeometry(spec);
   EXPECT_DOUBLE_EQ(g.steps, 11.0);
   EXPECT_DOUBLE_EQ(g.epochs, 3.0);
@@ -76,17 +87,8 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
 // and the preparation count only what lies within reach (the first UAV's two people, the UAV
 // itself), no UAV has a neighbour, and the lone person at (500, 500) is held by no agent.
 TEST(WorkModel, ReachScopeAndRangesCountTheNeighbourhoodFromTheStarts) {
-  const ScenarioSpec spec = loadScenarioText(R"({
-    "aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
-    "uavs": [{"start": [100, 100]}, {"start": [900, 900]}],
-    "targets": [{"path": {"start": [105, 100], "velocity": [1, 0]}},
-                {"path": {"start": [100, 110], "velocity": [0, 0]}},
-                {"path": {"start": [500, 500], "velocity": [0, 0]}}],
-    "fusion": {"comm_range": 100, "interest_range": 50},
-    "planner": {"algorithm": "sma", "horizon": 2, "cost_scope": "reach",
-                "pso": {"particles_per_step": 10, "stall_iterations": 5}}
-  })",
-                                             "reach.json");
+  const ScenarioSpec spec = handSized("reach.json", kThreePeople,
+                                      R"("comm_range": 100, "interest_range": 50)", "reach");
   const WorkGeometry g = workGeometry(spec);
   EXPECT_DOUBLE_EQ(g.neighbours, 0.0);
   EXPECT_DOUBLE_EQ(g.tracks_held, 1.0);  // 2 people within 50 m of the first UAV, none of the other
@@ -105,22 +107,14 @@ TEST(WorkModel, ThePenaltysSkipCountsTheTracksInReach) {
                           {"path": {"start": [100, 110], "velocity": [0, 0]}})";
   for (int i = 0; i < 20; ++i)
     people += R"(, {"path": {"start": [)" + std::to_string(500 + i) + R"(, 500], "velocity": [0, 0]}})";
-  auto file = [&](const std::string& scope) {
-    return loadScenarioText(R"({"aoi": [0, 0, 1000, 1000], "clock": {"dt": 0.2, "duration": 2.0},
-      "uavs": [{"start": [100, 100]}, {"start": [900, 900]}], "targets": [)" +
-                                people + R"(],
-      "planner": {"algorithm": "sma", "horizon": 2, "cost_scope": ")" + scope + R"(",
-                  "pso": {"particles_per_step": 10, "stall_iterations": 5}}})",
-                            "skip.json");
-  };
-  const ScenarioSpec team = file("team");
+  const ScenarioSpec team = handSized("skip.json", people);
   const WorkGeometry g = workGeometry(team);
   EXPECT_DOUBLE_EQ(g.tracks_held, 22.0);
   EXPECT_DOUBLE_EQ(g.tracks_in_reach, 1.0);  // 2 at the first UAV, 0 at the second
   EXPECT_DOUBLE_EQ(g.evaluations, 1200.0);
   EXPECT_NEAR(estimateStageWork(team).planning_penalty, kSkip * 1200 * (1 + 1.0), 1e-6);
   // Reach scope: 1 track in scope, fewer than 16 beyond reach: every track, every evaluation.
-  EXPECT_NEAR(estimateStageWork(file("reach")).planning_penalty, kPenalty * 1200 * 1.0, 1e-6);
+  EXPECT_NEAR(estimateStageWork(handSized("skip.json", people, "", "reach")).planning_penalty, kPenalty * 1200 * 1.0, 1e-6);
 }
 
 // A swarm runs about 2 × stall_iterations (the stall rule), at most max_iterations: the
