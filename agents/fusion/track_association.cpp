@@ -1,26 +1,16 @@
 #include "agents/fusion/track_association.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <tuple>
+
+#include "agents/fusion/association_gate.h"
 
 namespace canopy::agents::fusion {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// Squared Mahalanobis distance between two position estimates, d² = Δpᵀ (S_a + S_b)⁻¹ Δp
-/// (Bar-Shalom, Willett & Tian 2011, track-to-track association, cross-covariance neglected).
-/// ∞ when S_a + S_b is not positive definite.
-double mahalanobis2(const Vec2& pa, const Mat2& Sa, const Vec2& pb, const Mat2& Sb) {
-  const Mat2 S = Sa + Sb;  // 2x2
-  const double det = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0);
-  if (!(S(0, 0) > 0.0) || !(det > 0.0)) return kInf;  // not positive definite (or NaN)
-  const Vec2 d = pa - pb;
-  // S⁻¹Δp by Cramer's rule, the 2x2 solve: [s11 −s01; −s10 s00] Δp / det.
-  const Vec2 solved(S(1, 1) * d.x() - S(0, 1) * d.y(), S(0, 0) * d.y() - S(1, 0) * d.x());
-  return d.dot(solved) / det;
-}
 
 }  // namespace
 
@@ -31,11 +21,21 @@ void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph&
   agents_ = graph.agents();
   mask_words_ = (agents_ + 63) / 64;
   gatherNodes(lists);
+  startUnionFind();
   remembered_.clear();
   assigned_.clear();
+  neighbour_sets_ = agents_ >= grouped_from_;
+  if (neighbour_sets_) gatherNeighbourSets(graph);
+  const bool by_key = neighbour_sets_ && keysUniquePerAgent();
+  if (by_key) linkByKey(graph, gate, diagnostics);
   for (int i = 0; i < agents_; ++i) {
     for (const int j : graph.neighbours(i)) {
-      if (j > i) linkNeighbours(i, j, gate);
+      if (j <= i) continue;
+      if (by_key) {
+        linkUnmatched(i, j, gate);
+      } else {
+        linkNeighbours(i, j, gate);
+      }
     }
   }
   cluster(diagnostics);
@@ -75,6 +75,27 @@ void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists) {
 }
 
 template <int N>
+void TrackAssociation<N>::gatherNeighbourSets(const CommGraph& graph) {
+  neighbours_.assign(static_cast<std::size_t>(agents_) * mask_words_, 0);
+  for (int a = 0; a < agents_; ++a) {
+    for (const int b : graph.neighbours(a)) {
+      neighbours_[static_cast<std::size_t>(a) * mask_words_ + b / 64] |= std::uint64_t{1}
+                                                                          << (b % 64);
+    }
+  }
+}
+
+template <int N>
+bool TrackAssociation<N>::keysUniquePerAgent() const {
+  for (int a = 0; a < agents_; ++a) {
+    for (int k = node_start_[a] + 1; k < node_start_[a + 1]; ++k) {
+      if (nodes_[by_key_[k - 1]].key == nodes_[by_key_[k]].key) return false;
+    }
+  }
+  return true;
+}
+
+template <int N>
 void TrackAssociation<N>::linkNeighbours(int i, int j, double gate) {
   ++link_stamp_;
   // Memory: tracks that already share a key stay matched while they stay within the gate.
@@ -101,7 +122,6 @@ void TrackAssociation<N>::linkNeighbours(int i, int j, double gate) {
     }
   }
 
-  // The rest: every same-label pair within the gate is a candidate for the assignment.
   rows_.clear();
   cols_.clear();
   for (int n = node_start_[i]; n < node_start_[i + 1]; ++n) {
@@ -110,6 +130,13 @@ void TrackAssociation<N>::linkNeighbours(int i, int j, double gate) {
   for (int n = node_start_[j]; n < node_start_[j + 1]; ++n) {
     if (taken_[n] != link_stamp_) cols_.push_back(n);
   }
+  gateAndAssign(gate);
+}
+
+template <int N>
+void TrackAssociation<N>::gateAndAssign(double gate) {
+  // The rest (rows_ of i, cols_ of j): every same-label pair within the gate is a candidate for
+  // the assignment.
   gated_.clear();
   for (int r = 0; r < static_cast<int>(rows_.size()); ++r) {
     const Node& x = nodes_[rows_[r]];
@@ -204,7 +231,7 @@ bool TrackAssociation<N>::unite(int a, int b) {
 }
 
 template <int N>
-void TrackAssociation<N>::cluster(FusionDiagnostics& diagnostics) {
+void TrackAssociation<N>::startUnionFind() {
   const int count = static_cast<int>(nodes_.size());
   parent_.resize(nodes_.size());
   mask_.assign(nodes_.size() * mask_words_, 0);
@@ -214,6 +241,12 @@ void TrackAssociation<N>::cluster(FusionDiagnostics& diagnostics) {
     const std::uint64_t bit = std::uint64_t{1} << (agent % 64);
     mask_[static_cast<std::size_t>(n) * mask_words_ + agent / 64] = bit;
   }
+}
+
+template <int N>
+void TrackAssociation<N>::cluster(FusionDiagnostics& diagnostics) {
+  const int count = static_cast<int>(nodes_.size());
+  // Remembered links first (joined already when linked by key), then the assigned ones.
   for (const Link& link : remembered_) {
     if (unite(link.a, link.b)) {
       ++diagnostics.remembered_matches;
@@ -295,6 +328,18 @@ void TrackAssociation<N>::planAdoptions(const CommGraph& graph) {
     // nodes of one cluster are not adjacent: a "last cluster offered" per agent let a second
     // member offer it again, and the copies multiplied step after step).
     const std::size_t words = static_cast<std::size_t>(find(n)) * mask_words_;
+    if (neighbour_sets_) {  // the same offers, a word of neighbours at a time
+      const std::size_t own = static_cast<std::size_t>(nodes_[n].agent) * mask_words_;
+      for (int w = 0; w < mask_words_; ++w) {
+        std::uint64_t& word = mask_[words + w];
+        std::uint64_t offered = neighbours_[own + w] & ~word;
+        word |= neighbours_[own + w];
+        for (; offered != 0; offered &= offered - 1) {
+          adoptions_.push_back({c, w * 64 + std::countr_zero(offered), n});
+        }
+      }
+      continue;
+    }
     for (const int j : graph.neighbours(nodes_[n].agent)) {
       std::uint64_t& word = mask_[words + j / 64];
       const std::uint64_t bit = std::uint64_t{1} << (j % 64);

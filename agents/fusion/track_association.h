@@ -3,6 +3,7 @@
 // tracks are matched (tracks that share a key first, then a gated Hungarian assignment on the
 // rest), grouped into clusters (one target each, at most one track per agent), given one key
 // each, and shared with neighbours that lack them.
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -64,10 +65,21 @@ struct Clusters {
 /// 5. A cluster with a confirmed member is copied to every neighbour of a member that has no track
 ///    in it (from its lowest-numbered neighbour in the cluster: key, label, prior, posterior,
 ///    scans and hits; status confirmed; detected false). Adoption reaches one hop per step.
+///
+/// Work. Rule 2's memory looks at every pair of neighbours' copies of a key: O(U² M) for U agents
+/// that all hold M tracks. From `grouped_from` agents on, when no agent holds two tracks with one
+/// key, the copies of each key are taken together instead (linkByKey): the copies near their
+/// centre pass the gate by a bound (gate_bound.h) and are joined per connected part of the graph
+/// with bit sets, O(K · U/64) for K copies; only pairs with a copy outside that core are computed.
+/// The links, clusters and counters are the same as pair by pair (remembered links never conflict
+/// then: a set of one key's copies holds each agent at most once), so the result is too.
 template <int N>
 class TrackAssociation {
  public:
   using TrackList = std::vector<tracking::Track<N>>;
+  static constexpr int kGroupedFrom = 8;  // agents; a paper team's few pairs are cheaper one by one
+
+  explicit TrackAssociation(int grouped_from = kGroupedFrom) : grouped_from_(grouped_from) {}
 
   /// lists[i]: agent i's tracks (the fusion's own copy, being fused). Rewrites keys, appends
   /// adopted copies, and fills `clusters`.
@@ -101,7 +113,18 @@ class TrackAssociation {
   };
 
   void gatherNodes(std::span<const TrackList> lists);
+  void startUnionFind();
+  void gatherNeighbourSets(const CommGraph& graph);  // neighbours_, from grouped_from_ agents
+  bool keysUniquePerAgent() const;
+  // Rule 2 pair by pair: the shared keys on link i–j, then the rest (gateAndAssign).
   void linkNeighbours(int i, int j, double gate);
+  // Rule 2 by key (track_association_by_key.cpp): every remembered link of the step, joined at
+  // once; then per link only the copies without a partner there (linkUnmatched).
+  void linkByKey(const CommGraph& graph, double gate, FusionDiagnostics& diagnostics);
+  void linkKey(std::span<const int> copies, double gate);
+  void joinPart(int start_agent, std::span<std::uint64_t> remaining);
+  void linkUnmatched(int i, int j, double gate);
+  void gateAndAssign(double gate);
   void assignComponents(double gate);
   void cluster(FusionDiagnostics& diagnostics);
   void chooseKeys(const CommGraph& graph, KeyMint& mint, FusionDiagnostics& diagnostics);
@@ -110,6 +133,7 @@ class TrackAssociation {
   int find(int node);
   bool unite(int a, int b);
 
+  int grouped_from_ = kGroupedFrom;
   int agents_ = 0;
   int mask_words_ = 1;           // 64-bit words per agent set
   std::vector<int> node_start_;  // CSR: nodes of agent a are [node_start_[a], node_start_[a + 1])
@@ -135,6 +159,23 @@ class TrackAssociation {
   std::vector<char> confirmed_;         // per cluster
   std::vector<int> order_;
   std::vector<Adoption> adoptions_;
+  bool neighbour_sets_ = false;            // neighbours_ holds this step's graph
+  std::vector<std::uint64_t> neighbours_;   // per agent, its neighbours as a bit set
+  // linkByKey's scratch.
+  struct Copy {
+    TrackKey key;
+    sensing::LabelId label = 0;
+    int node = 0;
+  };
+  std::vector<Copy> copies_;                // every node, by key, label, node
+  std::vector<int> key_copies_;             // the nodes of one key and label
+  std::vector<std::uint64_t> partners_;     // per node, the agents it is remembered with
+  std::vector<std::uint64_t> core_;         // the agents of the current key's core copies
+  std::vector<int> copy_of_agent_;          // the current key's node per agent, or −1
+  std::vector<int> outside_;                // the current key's copies outside the core
+  std::vector<int> stack_;                  // joinPart's agents to visit
+  std::vector<int> unmatched_start_, unmatched_;  // CSR per agent: nodes short of a partner
+  long remembered_links_ = 0;
 };
 
 }  // namespace canopy::agents::fusion

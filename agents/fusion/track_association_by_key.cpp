@@ -1,0 +1,158 @@
+// Rule 2 of the association taken by key (TrackAssociation::linkByKey): the remembered links of
+// the whole step at once, for teams where every pair of neighbours would otherwise walk every key
+// they share. Same links, clusters and counters as pair by pair (track_association.cpp).
+#include <algorithm>
+#include <bit>
+#include <tuple>
+
+#include "agents/fusion/association_gate.h"
+#include "agents/fusion/track_association.h"
+
+namespace canopy::agents::fusion {
+namespace {
+
+std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
+
+}  // namespace
+
+template <int N>
+void TrackAssociation<N>::linkByKey(const CommGraph& graph, double gate,
+                                    FusionDiagnostics& diagnostics) {
+  const std::size_t words = static_cast<std::size_t>(mask_words_);
+  // One run of equal key and label is one target's copies, at most one per agent.
+  copies_.resize(nodes_.size());
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    copies_[n] = {nodes_[n].key, nodes_[n].label, static_cast<int>(n)};
+  }
+  std::sort(copies_.begin(), copies_.end(), [](const Copy& x, const Copy& y) {
+    return std::tie(x.key, x.label, x.node) < std::tie(y.key, y.label, y.node);
+  });
+  partners_.assign(nodes_.size() * words, 0);
+  copy_of_agent_.assign(static_cast<std::size_t>(agents_), -1);
+  remembered_links_ = 0;
+  for (std::size_t begin = 0; begin < copies_.size();) {
+    std::size_t end = begin + 1;
+    while (end < copies_.size() && copies_[end].key == copies_[begin].key &&
+           copies_[end].label == copies_[begin].label) {
+      ++end;
+    }
+    if (end - begin >= 2) {
+      key_copies_.clear();
+      for (std::size_t k = begin; k < end; ++k) key_copies_.push_back(copies_[k].node);
+      linkKey(key_copies_, gate);
+    }
+    begin = end;
+  }
+  diagnostics.remembered_matches += remembered_links_;
+
+  // Per agent, the nodes without a partner at some neighbour: the only ones a link can gate.
+  unmatched_start_.assign(static_cast<std::size_t>(agents_) + 1, 0);
+  unmatched_.clear();
+  for (int a = 0; a < agents_; ++a) {
+    for (int n = node_start_[a]; n < node_start_[a + 1]; ++n) {
+      int partners = 0;
+      for (std::size_t w = 0; w < words; ++w) partners += std::popcount(partners_[n * words + w]);
+      if (partners != graph.degree(a)) unmatched_.push_back(n);
+    }
+    unmatched_start_[a + 1] = static_cast<int>(unmatched_.size());
+  }
+}
+
+template <int N>
+void TrackAssociation<N>::linkKey(std::span<const int> copies, double gate) {
+  const std::size_t words = static_cast<std::size_t>(mask_words_);
+  Vec2 centre = Vec2::Zero();
+  for (const int n : copies) centre += nodes_[n].p;
+  centre /= static_cast<double>(copies.size());
+  core_.assign(words, 0);
+  outside_.clear();
+  for (const int n : copies) {
+    const Node& copy = nodes_[n];
+    copy_of_agent_[copy.agent] = n;
+    if (inGateCore((copy.p - centre).norm(), eigenFloor(copy.S), gate)) {
+      core_[copy.agent / 64] |= bitOf(copy.agent);
+    } else {
+      outside_.push_back(n);
+    }
+  }
+  // Two core copies of neighbours pass the gate (association_gate.h): each core copy is
+  // remembered with every neighbour in the core, each link seen from both ends.
+  long ends = 0;
+  for (const int n : copies) {
+    const int a = nodes_[n].agent;
+    if ((core_[a / 64] & bitOf(a)) == 0) continue;
+    for (std::size_t w = 0; w < words; ++w) {
+      const std::uint64_t linked = neighbours_[a * words + w] & core_[w];
+      partners_[n * words + w] |= linked;
+      ends += std::popcount(linked);
+    }
+  }
+  remembered_links_ += ends / 2;
+  // A pair with a copy outside the core is gated as pair by pair (each such pair once).
+  for (const int o : outside_) {
+    const Node& x = nodes_[o];
+    for (const int n : copies) {
+      const Node& y = nodes_[n];
+      const bool y_outside = (core_[y.agent / 64] & bitOf(y.agent)) == 0;
+      if (n == o || (y_outside && n < o)) continue;
+      if ((neighbours_[x.agent * words + y.agent / 64] & bitOf(y.agent)) == 0) continue;
+      if (!(mahalanobis2(x.p, x.S, y.p, y.S) <= gate)) continue;
+      partners_[o * words + y.agent / 64] |= bitOf(y.agent);
+      partners_[n * words + x.agent / 64] |= bitOf(x.agent);
+      ++remembered_links_;
+      unite(o, n);  // never refused: the copies of one key hold each agent once
+    }
+  }
+  // The core's links join its copies per connected part of the graph among its agents.
+  for (std::size_t w = 0; w < words; ++w) {
+    while (core_[w] != 0) {
+      const int start = static_cast<int>(w * 64) + std::countr_zero(core_[w]);
+      joinPart(start, core_);
+    }
+  }
+  for (const int n : copies) copy_of_agent_[nodes_[n].agent] = -1;
+}
+
+template <int N>
+void TrackAssociation<N>::joinPart(int start_agent, std::span<std::uint64_t> remaining) {
+  const std::size_t words = static_cast<std::size_t>(mask_words_);
+  remaining[start_agent / 64] &= ~bitOf(start_agent);
+  stack_.assign(1, start_agent);
+  while (!stack_.empty()) {
+    const int a = stack_.back();
+    stack_.pop_back();
+    for (std::size_t w = 0; w < words; ++w) {
+      std::uint64_t reached = neighbours_[a * words + w] & remaining[w];
+      remaining[w] &= ~reached;
+      while (reached != 0) {
+        const int b = static_cast<int>(w * 64) + std::countr_zero(reached);
+        reached &= reached - 1;
+        unite(copy_of_agent_[a], copy_of_agent_[b]);
+        stack_.push_back(b);
+      }
+    }
+  }
+}
+
+template <int N>
+void TrackAssociation<N>::linkUnmatched(int i, int j, double gate) {
+  const std::size_t words = static_cast<std::size_t>(mask_words_);
+  rows_.clear();
+  cols_.clear();
+  for (int k = unmatched_start_[i]; k < unmatched_start_[i + 1]; ++k) {
+    const int n = unmatched_[k];
+    if ((partners_[n * words + j / 64] & bitOf(j)) == 0) rows_.push_back(n);
+  }
+  for (int k = unmatched_start_[j]; k < unmatched_start_[j + 1]; ++k) {
+    const int n = unmatched_[k];
+    if ((partners_[n * words + i / 64] & bitOf(i)) == 0) cols_.push_back(n);
+  }
+  gateAndAssign(gate);
+}
+
+template void TrackAssociation<3>::linkByKey(const CommGraph&, double, FusionDiagnostics&);
+template void TrackAssociation<4>::linkByKey(const CommGraph&, double, FusionDiagnostics&);
+template void TrackAssociation<3>::linkUnmatched(int, int, double);
+template void TrackAssociation<4>::linkUnmatched(int, int, double);
+
+}  // namespace canopy::agents::fusion
