@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "agents/fusion/small_cholesky.h"
@@ -33,6 +34,18 @@ bool fromInformation(const Eigen::Matrix<double, N, N>& omega, const Eigen::Matr
   g.P = cholesky.inverse();  // P = Ω⁻¹ (N×N)
   g.x = cholesky.solve(q);   // x = Ω⁻¹ q (N)
   return true;
+}
+
+/// Whether two fixed-size matrices hold the same bits (equal values could differ in a zero's sign
+/// or a NaN's payload, and so in what is computed from them).
+template <typename Matrix>
+bool sameBits(const Matrix& a, const Matrix& b) {
+  return std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0;
+}
+
+template <int N>
+bool sameBits(const Gaussian<N>& a, const Gaussian<N>& b) {
+  return sameBits(a.x, b.x) && sameBits(a.P, b.P);
 }
 
 // Existence crosses as log-odds, ln(r / (1 − r)), kept within ±ln(10⁹ − 1) so that r = 0 or 1
@@ -170,9 +183,27 @@ void InformationConsensus<N>::runCi(std::span<TrackList> lists,
                                     std::span<const ClusterMember> members, const CommGraph& graph,
                                     int rounds, FusionDiagnostics& diagnostics) {
   const int count = static_cast<int>(members.size());
+  // Copies that no agent updated since the last fusion hold the same bits (each predicted from
+  // the one fused value): in a large cluster a member equal to the last one converted takes its
+  // result, in and out, instead of another Cholesky (the same bits, the same failures counted).
+  const bool reuse = members.size() >= kReuseFrom;
+  auto posteriorOf = [&](int k) -> Gaussian<N>& {
+    return lists[members[k].agent][members[k].track].posterior;
+  };
   info_.resize(members.size());
+  int last = -1;  // the last member converted
   for (int k = 0; k < count; ++k) {
-    const Gaussian<N>& posterior = lists[members[k].agent][members[k].track].posterior;
+    const Gaussian<N>& posterior = posteriorOf(k);
+    if (reuse && last >= 0 && sameBits(posterior, posteriorOf(last))) {
+      if (usable_[last]) {
+        info_[k] = info_[last];
+      } else {
+        exclude(members, k);
+        ++diagnostics.numerical_failures;
+      }
+      continue;
+    }
+    last = k;
     if (!toInformation<N>(posterior, info_[k].template leftCols<N>(), info_[k].col(N))) {
       exclude(members, k);
       ++diagnostics.numerical_failures;
@@ -194,14 +225,26 @@ void InformationConsensus<N>::runCi(std::span<TrackList> lists,
     mix(members, graph, rounds, info_, info_next_);
     mix(members, graph, rounds, existence_, existence_next_);
   }
+  last = -1;
+  bool last_converted = false;
   for (int k = 0; k < count; ++k) {
     if (!usable_[k]) continue;
     tracking::Track<N>& track = lists[members[k].agent][members[k].track];
     track.existence = fromLogOdds(existence_[k](0));
     Gaussian<N>& posterior = track.posterior;
+    if (reuse && last >= 0 && sameBits(info_[k], info_[last])) {
+      if (last_converted) {
+        posterior = posteriorOf(last);
+      } else {
+        ++diagnostics.numerical_failures;  // left as it was, as the last one
+      }
+      continue;
+    }
+    last = k;
     const Mat omega = info_[k].template leftCols<N>();
     const Vec q = info_[k].col(N);
-    if (!fromInformation<N>(omega, q, posterior)) ++diagnostics.numerical_failures;
+    last_converted = fromInformation<N>(omega, q, posterior);
+    if (!last_converted) ++diagnostics.numerical_failures;
   }
 }
 

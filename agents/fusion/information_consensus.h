@@ -48,6 +48,8 @@ class InformationConsensus {
   /// From this many members on, CI on a complete graph without losses mixes in closed form
   /// (mixOnCompleteGraph); the paper's teams (2–4 UAVs) stay far below it.
   static constexpr std::size_t kClosedFormFrom = 16;
+  /// From this many members, CI converts a run of members with the same bits once (runCi).
+  static constexpr std::size_t kReuseFrom = 8;
 
   using TrackList = std::vector<tracking::Track<N>>;
 

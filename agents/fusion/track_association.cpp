@@ -27,7 +27,7 @@ void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph&
   neighbour_sets_ = agents_ >= grouped_from_;
   if (neighbour_sets_) gatherNeighbourSets(graph);
   const bool by_key = neighbour_sets_ && keysUniquePerAgent();
-  if (by_key) linkByKey(graph, gate, diagnostics);
+  if (by_key) linkByKey(gate, diagnostics);
   for (int i = 0; i < agents_; ++i) {
     for (const int j : graph.neighbours(i)) {
       if (j <= i) continue;

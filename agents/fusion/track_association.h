@@ -120,7 +120,7 @@ class TrackAssociation {
   void linkNeighbours(int i, int j, double gate);
   // Rule 2 by key (track_association_by_key.cpp): every remembered link of the step, joined at
   // once; then per link only the copies without a partner there (linkUnmatched).
-  void linkByKey(const CommGraph& graph, double gate, FusionDiagnostics& diagnostics);
+  void linkByKey(double gate, FusionDiagnostics& diagnostics);
   void linkKey(std::span<const int> copies, double gate);
   void joinPart(int start_agent, std::span<std::uint64_t> remaining);
   void linkUnmatched(int i, int j, double gate);

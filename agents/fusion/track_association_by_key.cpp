@@ -16,7 +16,7 @@ std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
 }  // namespace
 
 template <int N>
-void TrackAssociation<N>::linkByKey(const CommGraph& graph, double gate,
+void TrackAssociation<N>::linkByKey(double gate,
                                     FusionDiagnostics& diagnostics) {
   const std::size_t words = static_cast<std::size_t>(mask_words_);
   // One run of equal key and label is one target's copies, at most one per agent.
@@ -45,14 +45,16 @@ void TrackAssociation<N>::linkByKey(const CommGraph& graph, double gate,
   }
   diagnostics.remembered_matches += remembered_links_;
 
-  // Per agent, the nodes without a partner at some neighbour: the only ones a link can gate.
+  // Per agent, the nodes without a partner at some neighbour (partners ⊂ neighbours): the only
+  // ones a link can gate.
   unmatched_start_.assign(static_cast<std::size_t>(agents_) + 1, 0);
   unmatched_.clear();
   for (int a = 0; a < agents_; ++a) {
+    const std::uint64_t* neighbours = &neighbours_[a * words];
     for (int n = node_start_[a]; n < node_start_[a + 1]; ++n) {
-      int partners = 0;
-      for (std::size_t w = 0; w < words; ++w) partners += std::popcount(partners_[n * words + w]);
-      if (partners != graph.degree(a)) unmatched_.push_back(n);
+      if (!std::equal(neighbours, neighbours + words, &partners_[n * words])) {
+        unmatched_.push_back(n);
+      }
     }
     unmatched_start_[a + 1] = static_cast<int>(unmatched_.size());
   }
@@ -150,8 +152,8 @@ void TrackAssociation<N>::linkUnmatched(int i, int j, double gate) {
   gateAndAssign(gate);
 }
 
-template void TrackAssociation<3>::linkByKey(const CommGraph&, double, FusionDiagnostics&);
-template void TrackAssociation<4>::linkByKey(const CommGraph&, double, FusionDiagnostics&);
+template void TrackAssociation<3>::linkByKey(double, FusionDiagnostics&);
+template void TrackAssociation<4>::linkByKey(double, FusionDiagnostics&);
 template void TrackAssociation<3>::linkUnmatched(int, int, double);
 template void TrackAssociation<4>::linkUnmatched(int, int, double);
 

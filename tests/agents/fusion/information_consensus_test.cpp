@@ -327,5 +327,52 @@ TEST(Ci, ManyHoldersOnACompleteGraphMixAsTheRoundsDo) {
   }
 }
 
+
+TEST(Ci, CopiesWithTheSameBitsFuseAsEachOnItsOwn) {
+  // 14 agents hold the track: 8 copies with the same bits, 4 others, 2 with a NaN covariance.
+  // Fused once as they are (the copies converted once) and once with each copy's zero velocity
+  // written as −0.0 in all but the first (equal values, other bits: each converted on its own),
+  // every posterior has the same values and the failures are counted alike.
+  const int n = 14;
+  auto fuse = [&](bool distinct_bits, FusionDiagnostics& diagnostics) {
+    RandomStream rng(9, "test.consensus.same_bits");
+    std::vector<std::vector<tracking::TargetTrack>> lists(n);
+    const Mat4 shared_P = test::randomSpd<4>(rng, 0.5);
+    Clusters clusters;
+    clusters.start = {0, n};
+    clusters.keys = {{-1, 0}};
+    for (int i = 0; i < n; ++i) {
+      Vec4 x(20.0, 30.0, 1.0, 0.0);
+      Mat4 P = shared_P;
+      if (i >= 8 && i < 12) {
+        x += test::randomVector<4>(rng, 0.5);
+        P = test::randomSpd<4>(rng, 0.5);
+      }
+      if (i >= 12) P(1, 1) = std::numeric_limits<double>::quiet_NaN();
+      if (distinct_bits && i > 0 && i < 8) x(3) = -0.0;
+      lists[i] = {test::makeTrack<4>({-1, 0}, x, P)};
+      clusters.members.push_back({i, 0, false});
+    }
+    CommGraph graph;
+    graph.build(std::vector<Vec2>(n, Vec2::Zero()), kInf);
+    FusionConfig config;
+    config.rounds = 3;
+    InformationConsensus<4>().run(lists, clusters, graph, config, diagnostics);
+    return lists;
+  };
+  FusionDiagnostics reused, alone;
+  const auto a = fuse(false, reused);
+  const auto b = fuse(true, alone);
+  for (int i = 0; i < 12; ++i) {  // the two with NaN take no part and keep their posterior
+    for (int r = 0; r < 4; ++r) {
+      EXPECT_EQ(a[i][0].posterior.x(r), b[i][0].posterior.x(r)) << i;
+      for (int c = 0; c < 4; ++c) EXPECT_EQ(a[i][0].posterior.P(r, c), b[i][0].posterior.P(r, c));
+    }
+  }
+  EXPECT_NE(a[0][0].posterior.x, a[8][0].posterior.x);  // fused, not all one value
+  EXPECT_EQ(reused.numerical_failures, 2);
+  EXPECT_EQ(alone.numerical_failures, 2);
+}
+
 }  // namespace
 }  // namespace canopy::agents::fusion
