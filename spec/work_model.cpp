@@ -31,8 +31,9 @@ constexpr double kPerSkipUnit = 106.0;
 constexpr double kSkipFromTracks = 16.0;
 // Preparing the cost: one (track, UAV) pair in scope, per swarm.
 constexpr double kPerPrepareUnit = 508.0;
-// Fusion: one track or crown held, per step (and per neighbour, a round adding 1/25 of that).
-constexpr double kPerFusionUnit = 188.0;
+// Fusion: one track or crown held, per step (copied, associated, fused; pair by pair, each
+// neighbour adds 0.7 of that; consensus in rounds, each neighbour and round 1/31).
+constexpr double kPerFusionUnit = 1950.0;
 // Tracking: one track or crown held or detection, per scan (and the JPDA term of its people).
 constexpr double kPerTrackingUnit = 1070.0;
 // Sensing: one detection, per scan.
@@ -237,15 +238,20 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
     const double scope_uavs = p.cost_scope == agents::CostScope::reach ? g.uavs_in_reach : uavs;
     w.planning_prepare = kPerPrepareUnit * g.swarms * scope_tracks * scope_uavs;
   }
-  // Fusion, every step: each agent associates its tracks and crowns with each neighbour's, then
-  // runs `rounds` rounds of covariance intersection over them (agents/fusion/team_fusion.h).
+  // Fusion, every step (agents/fusion/team_fusion.h): each agent's tracks and crowns are copied,
+  // associated with its neighbours' and fused. The association goes by key from 8 UAVs on (each
+  // copy sorted and bounded once) and pair by pair with each neighbour below; the consensus is
+  // one closed form on a complete graph without losses (clusters of 16 or more), else `rounds`
+  // rounds over each neighbour's copy. Measured per held track and step (bench/RESULTS.md, "The
+  // association by key"): 1896–1953 instructions at 16 × 64 × 10⁴ to 64 × 256 × 10⁵ (complete),
+  // 3039 in city_swarm (3.5 neighbours, 5 rounds), 3689 in trajectory_handover (one neighbour).
   const double held = g.tracks_held + g.trees_known;
-  // Association pairs each agent's tracks with each neighbour's once a step; a consensus round
-  // costs about 1/25 of it per neighbour (callgrind at 64 × 256 × 10⁵: TrackAssociation 1.68·10⁹,
-  // five rounds of runCi 0.31·10⁹). A fixed part per agent and step (its links, its outputs)
-  // weighs as about 50 tracks.
-  w.fusion = kPerFusionUnit * g.steps * uavs *
-             (50.0 + held * (1.0 + g.neighbours * (1.0 + spec.fusion.rounds / 25.0)));
+  const bool by_key = uavs >= 8.0;
+  const bool closed_form = uavs >= 16.0 && !std::isfinite(spec.fusion.comm_range) &&
+                           spec.fusion.comm_drop <= 0.0;
+  const double per_held = 1.0 + (by_key ? 0.0 : 0.7 * g.neighbours) +
+                          (closed_form ? 0.0 : g.neighbours * spec.fusion.rounds / 31.0);
+  w.fusion = kPerFusionUnit * g.steps * uavs * held * per_held;
   // Tracking, every scan: predict and keep every track and crown held, gate each detection; the
   // people's detections (and clutter) and the tracks near them form clusters whose joint events
   // (JPDA) number up to max_hypotheses, each as deep as the cluster: pairs m² times a depth of

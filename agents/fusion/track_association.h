@@ -163,11 +163,11 @@ class TrackAssociation {
   std::vector<std::uint64_t> neighbours_;   // per agent, its neighbours as a bit set
   // linkByKey's scratch.
   struct Copy {
-    TrackKey key;
-    sensing::LabelId label = 0;
+    std::uint64_t key = 0;          // TrackKey (origin, serial), packed in order
+    std::uint64_t label_agent = 0;  // (label, agent), packed in order
     int node = 0;
   };
-  std::vector<Copy> copies_;                // every node, by key, label, node
+  std::vector<Copy> copies_;                // every node, by key, label, agent
   std::vector<int> key_copies_;             // the nodes of one key and label
   std::vector<std::uint64_t> partners_;     // per node, the agents it is remembered with
   std::vector<std::uint64_t> core_;         // the agents of the current key's core copies

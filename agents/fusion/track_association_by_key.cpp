@@ -3,7 +3,6 @@
 // they share. Same links, clusters and counters as pair by pair (track_association.cpp).
 #include <algorithm>
 #include <bit>
-#include <tuple>
 
 #include "agents/fusion/association_gate.h"
 #include "agents/fusion/track_association.h"
@@ -12,6 +11,12 @@ namespace canopy::agents::fusion {
 namespace {
 
 std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
+
+// Two ints as one unsigned word that orders as the pair (hi, lo) does (the sign bits flipped).
+std::uint64_t packed(int hi, int lo) {
+  const auto flip = [](int v) { return static_cast<std::uint32_t>(v) ^ 0x80000000u; };
+  return (std::uint64_t{flip(hi)} << 32) | flip(lo);
+}
 
 }  // namespace
 
@@ -22,10 +27,13 @@ void TrackAssociation<N>::linkByKey(double gate,
   // One run of equal key and label is one target's copies, at most one per agent.
   copies_.resize(nodes_.size());
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
-    copies_[n] = {nodes_[n].key, nodes_[n].label, static_cast<int>(n)};
+    const Node& node = nodes_[n];
+    copies_[n] = {packed(node.key.origin, node.key.serial), packed(node.label, node.agent),
+                  static_cast<int>(n)};
   }
+  // By key, label and node (a node's agent orders its nodes: one agent holds a key once).
   std::sort(copies_.begin(), copies_.end(), [](const Copy& x, const Copy& y) {
-    return std::tie(x.key, x.label, x.node) < std::tie(y.key, y.label, y.node);
+    return x.key < y.key || (x.key == y.key && x.label_agent < y.label_agent);
   });
   partners_.assign(nodes_.size() * words, 0);
   copy_of_agent_.assign(static_cast<std::size_t>(agents_), -1);
@@ -33,7 +41,7 @@ void TrackAssociation<N>::linkByKey(double gate,
   for (std::size_t begin = 0; begin < copies_.size();) {
     std::size_t end = begin + 1;
     while (end < copies_.size() && copies_[end].key == copies_[begin].key &&
-           copies_[end].label == copies_[begin].label) {
+           (copies_[end].label_agent >> 32) == (copies_[begin].label_agent >> 32)) {
       ++end;
     }
     if (end - begin >= 2) {

@@ -15,7 +15,7 @@ namespace {
 
 // The per-unit coefficients of spec/work_model.cpp as bench/RESULTS.md ("Work budget in
 // instructions") states them; the formulas are worked by hand below.
-constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 508, kFusion = 188, kTracking = 1070,
+constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 508, kFusion = 1950, kTracking = 1070,
                  kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 281, kSetup = 5670,
                  kStart = 1.5e7;
 
@@ -68,8 +68,9 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   EXPECT_NEAR(w.planning_penalty, kPenalty * evaluations * 3, 1e-6);            // 136 800
   // Six swarms (3 epochs × 2 agents), each prepared over 3 tracks × 2 UAVs.
   EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 3 * 2, 1e-6);  // 18 288
-  // 50 + held × (1 + neighbours × (1 + rounds/25)) = 50 + 3 × 2.2
-  EXPECT_NEAR(w.fusion, kFusion * steps * uavs * (50 + held * (1 + 1 * (1 + 5 / 25.0))), 1e-6);
+  // Two UAVs: association pair by pair (0.7 per neighbour), consensus in rounds (not a closed
+  // form below 16 UAVs): held × (1 + 0.7 × 1 + 1 × 5 / 31).
+  EXPECT_NEAR(w.fusion, kFusion * steps * uavs * held * (1 + 0.7 + 5 / 31.0), 1e-6);
   // held + seen + people seen² × min(people seen, 64)
   EXPECT_NEAR(w.tracking, kTracking * steps * uavs * (held + seen + 1 * 1 * 1), 1e-6);
   EXPECT_NEAR(w.sensing, kSensing * steps * uavs * (1 + seen), 1e-6);
@@ -96,7 +97,7 @@ TEST(WorkModel, ReachScopeAndRangesCountTheNeighbourhoodFromTheStarts) {
   const StageWork w = estimateStageWork(spec);
   EXPECT_NEAR(w.planning_penalty, kPenalty * 1200 * 1.0, 1e-6);
   EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 1.0 * 1.0, 1e-6);
-  EXPECT_NEAR(w.fusion, kFusion * 11 * 2 * (50 + 1.0), 1e-6);  // no neighbour: its own tracks
+  EXPECT_NEAR(w.fusion, kFusion * 11 * 2 * 1.0, 1e-6);  // no neighbour: its own tracks
 }
 
 // The hand-sized file with 20 more people standing far from both UAVs: 22 tracks held, 1 in
