@@ -60,11 +60,12 @@ void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
     fuseLate(agents, fused);
     return;
   }
-  for (int i = 0; i < agents_; ++i) {
+  // Each agent's lists copied on the pool (each task writes its own agent's entries).
+  forEachTask(pool_, static_cast<std::size_t>(agents_), [&](std::size_t i) {
     positions_[i] = agents[i].position;
     fused.targets[i].assign(agents[i].targets.begin(), agents[i].targets.end());
     fused.trees[i].assign(agents[i].trees.begin(), agents[i].trees.end());
-  }
+  });
   graph_.build(positions_, config_.comm_range);
   const int exchanges = config_.method == FusionMethod::observer_average ? 1 : config_.rounds;
   graph_.drawLosses(exchanges, config_.comm_drop, loss_streams_);

@@ -69,10 +69,10 @@ struct Clusters {
 /// Work. Rule 2's memory looks at every pair of neighbours' copies of a key: O(U² M) for U agents
 /// that all hold M tracks. From `grouped_from` agents on, when no agent holds two tracks with one
 /// key, the copies of each key are taken together instead (linkByKey): the copies near their
-/// centre pass the gate by a bound (gate_bound.h) and are joined per connected part of the graph
-/// with bit sets, O(K · U/64) for K copies; only pairs with a copy outside that core are computed.
-/// The links, clusters and counters are the same as pair by pair (remembered links never conflict
-/// then: a set of one key's copies holds each agent at most once), so the result is too.
+/// centre pass the gate by a bound (association_gate.h) and are joined per connected part of the
+/// graph with bit sets, O(K · U/64) for K copies; only pairs with a copy outside that core are
+/// computed. The links, clusters and counters are the same as pair by pair (remembered links never
+/// conflict then: a set of one key's copies holds each agent at most once), so the result is too.
 template <int N>
 class TrackAssociation {
  public:
@@ -160,20 +160,20 @@ class TrackAssociation {
   std::vector<int> order_;
   std::vector<Adoption> adoptions_;
   bool neighbour_sets_ = false;            // neighbours_ holds this step's graph
-  std::vector<std::uint64_t> neighbours_;   // per agent, its neighbours as a bit set
+  std::vector<std::uint64_t> neighbours_;  // per agent, its neighbours as a bit set
   // linkByKey's scratch.
   struct Copy {
     std::uint64_t key = 0;          // TrackKey (origin, serial), packed in order
     std::uint64_t label_agent = 0;  // (label, agent), packed in order
     int node = 0;
   };
-  std::vector<Copy> copies_;                // every node, by key, label, agent
-  std::vector<int> key_copies_;             // the nodes of one key and label
-  std::vector<std::uint64_t> partners_;     // per node, the agents it is remembered with
-  std::vector<std::uint64_t> core_;         // the agents of the current key's core copies
-  std::vector<int> copy_of_agent_;          // the current key's node per agent, or −1
-  std::vector<int> outside_;                // the current key's copies outside the core
-  std::vector<int> stack_;                  // joinPart's agents to visit
+  std::vector<Copy> copies_;                      // every node, by key, label, agent
+  std::vector<int> key_copies_;                   // the nodes of one key and label
+  std::vector<std::uint64_t> partners_;           // per node, the agents it is remembered with
+  std::vector<std::uint64_t> core_;               // the agents of the current key's core copies
+  std::vector<int> copy_of_agent_;                // the current key's node per agent, or −1
+  std::vector<int> outside_;                      // the current key's copies outside the core
+  std::vector<int> stack_;                        // joinPart's agents to visit
   std::vector<int> unmatched_start_, unmatched_;  // CSR per agent: nodes short of a partner
   long remembered_links_ = 0;
 };

@@ -10,7 +10,9 @@
 namespace canopy::agents::fusion {
 namespace {
 
-std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
+std::uint64_t bitOf(int agent) {
+  return std::uint64_t{1} << (agent % 64);
+}
 
 // Two ints as one unsigned word that orders as the pair (hi, lo) does (the sign bits flipped).
 std::uint64_t packed(int hi, int lo) {
@@ -21,8 +23,7 @@ std::uint64_t packed(int hi, int lo) {
 }  // namespace
 
 template <int N>
-void TrackAssociation<N>::linkByKey(double gate,
-                                    FusionDiagnostics& diagnostics) {
+void TrackAssociation<N>::linkByKey(double gate, FusionDiagnostics& diagnostics) {
   const std::size_t words = static_cast<std::size_t>(mask_words_);
   // One run of equal key and label is one target's copies, at most one per agent.
   copies_.resize(nodes_.size());

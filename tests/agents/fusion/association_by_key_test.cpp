@@ -41,10 +41,10 @@ TEST(AssociationGate, FloorIsBelowTheLeastEigenvalue) {
 
 TEST(AssociationGate, FloorRefusesWhatTheBoundCannotCover) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(eigenFloor(Mat2{{1.0, 2.0}, {2.0, 1.0}}), 0.0);    // indefinite
-  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.0}, {0.0, nan}}), 0.0);    // not finite
-  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.0}, {0.0, 1e-4}}), 0.0);   // κ = 10⁴
-  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.1}, {0.0, 1.0}}), 0.0);    // asymmetric
+  EXPECT_EQ(eigenFloor(Mat2{{1.0, 2.0}, {2.0, 1.0}}), 0.0);            // indefinite
+  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.0}, {0.0, nan}}), 0.0);            // not finite
+  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.0}, {0.0, 1e-4}}), 0.0);           // κ = 10⁴
+  EXPECT_EQ(eigenFloor(Mat2{{1.0, 0.1}, {0.0, 1.0}}), 0.0);            // asymmetric
   EXPECT_NEAR(eigenFloor(Mat2{{1.0, 0.0}, {0.0, 1e-3}}), 1e-3, 2e-9);  // κ = 1000: used
   // [[2, 1], [1, 2]]: eigenvalues 1 and 3.
   EXPECT_NEAR(eigenFloor(Mat2{{2.0, 1.0}, {1.0, 2.0}}), 1.0, 2e-6);
@@ -135,8 +135,7 @@ Outcome associate(const RandomTeam& team, int grouped_from, int steps, std::uint
   KeyMint mint(static_cast<int>(team.positions.size()));
   RandomStream drift(seed, "test.drift");  // the same drift for both ways
   for (int step = 0; step < steps; ++step) {
-    association.associate(outcome.lists, graph, 9.21, mint, outcome.clusters,
-                          outcome.diagnostics);
+    association.associate(outcome.lists, graph, 9.21, mint, outcome.clusters, outcome.diagnostics);
     for (TargetList& list : outcome.lists) {
       for (tracking::TargetTrack& track : list) {
         track.posterior.x.head<2>() += 0.3 * Vec2(drift.normal(), drift.normal());
