@@ -5,6 +5,7 @@
 // each, and shared with neighbours that lack them.
 #include <cstdint>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "agents/belief.h"
@@ -162,13 +163,20 @@ class TrackAssociation {
   bool neighbour_sets_ = false;            // neighbours_ holds this step's graph
   std::vector<std::uint64_t> neighbours_;  // per agent, its neighbours as a bit set
   // linkByKey's scratch.
-  struct Copy {
-    std::uint64_t key = 0;          // TrackKey (origin, serial), packed in order
-    std::uint64_t label_agent = 0;  // (label, agent), packed in order
-    int node = 0;
+  struct KeyLabel {
+    std::uint64_t key = 0;  // TrackKey (origin, serial), packed
+    sensing::LabelId label = 0;
+    bool operator==(const KeyLabel&) const = default;
   };
-  std::vector<Copy> copies_;                      // every node, by key, label, agent
-  std::vector<int> key_copies_;                   // the nodes of one key and label
+  struct KeyLabelHash {
+    std::size_t operator()(const KeyLabel& k) const noexcept {
+      const std::uint64_t h = (k.key ^ static_cast<std::uint32_t>(k.label)) * 0x9E3779B97F4A7C15ull;
+      return static_cast<std::size_t>(h ^ (h >> 32));
+    }
+  };
+  std::unordered_map<KeyLabel, int, KeyLabelHash> group_of_;  // (key, label) → its group
+  std::vector<int> group_start_, group_nodes_;                // CSR: group g's nodes, ascending
+  std::vector<int> node_group_, fill_;
   std::vector<std::uint64_t> partners_;           // per node, the agents it is remembered with
   std::vector<std::uint64_t> core_;               // the agents of the current key's core copies
   std::vector<int> copy_of_agent_;                // the current key's node per agent, or −1

@@ -25,32 +25,33 @@ std::uint64_t packed(int hi, int lo) {
 template <int N>
 void TrackAssociation<N>::linkByKey(double gate, FusionDiagnostics& diagnostics) {
   const std::size_t words = static_cast<std::size_t>(mask_words_);
-  // One run of equal key and label is one target's copies, at most one per agent.
-  copies_.resize(nodes_.size());
+  // The nodes of one key and label are one target's copies, at most one per agent: grouped by
+  // a hash of (key, label), each group's nodes in ascending order (the groups' order is free:
+  // their links and unions are independent).
+  group_of_.clear();
+  group_start_.assign(1, 0);
+  node_group_.resize(nodes_.size());
   for (std::size_t n = 0; n < nodes_.size(); ++n) {
     const Node& node = nodes_[n];
-    copies_[n] = {packed(node.key.origin, node.key.serial), packed(node.label, node.agent),
-                  static_cast<int>(n)};
+    const KeyLabel key{packed(node.key.origin, node.key.serial), node.label};
+    const auto [at, fresh] = group_of_.try_emplace(key, static_cast<int>(group_start_.size() - 1));
+    if (fresh) group_start_.push_back(0);
+    node_group_[n] = at->second;
+    ++group_start_[at->second + 1];
   }
-  // By key, label and node (a node's agent orders its nodes: one agent holds a key once).
-  std::sort(copies_.begin(), copies_.end(), [](const Copy& x, const Copy& y) {
-    return x.key < y.key || (x.key == y.key && x.label_agent < y.label_agent);
-  });
+  for (std::size_t g = 1; g < group_start_.size(); ++g) group_start_[g] += group_start_[g - 1];
+  group_nodes_.resize(nodes_.size());
+  fill_.assign(group_start_.begin(), group_start_.end() - 1);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    group_nodes_[fill_[node_group_[n]]++] = static_cast<int>(n);
+  }
   partners_.assign(nodes_.size() * words, 0);
   copy_of_agent_.assign(static_cast<std::size_t>(agents_), -1);
   remembered_links_ = 0;
-  for (std::size_t begin = 0; begin < copies_.size();) {
-    std::size_t end = begin + 1;
-    while (end < copies_.size() && copies_[end].key == copies_[begin].key &&
-           (copies_[end].label_agent >> 32) == (copies_[begin].label_agent >> 32)) {
-      ++end;
-    }
-    if (end - begin >= 2) {
-      key_copies_.clear();
-      for (std::size_t k = begin; k < end; ++k) key_copies_.push_back(copies_[k].node);
-      linkKey(key_copies_, gate);
-    }
-    begin = end;
+  for (std::size_t g = 0; g + 1 < group_start_.size(); ++g) {
+    const int begin = group_start_[g], end = group_start_[g + 1];
+    if (end - begin < 2) continue;
+    linkKey(std::span<const int>(group_nodes_).subspan(begin, end - begin), gate);
   }
   diagnostics.remembered_matches += remembered_links_;
 
