@@ -264,6 +264,9 @@ class NominalCost {
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
   // free, and the fixed UAVs' distances to each track at m = H.
   void preparePenalty(const std::vector<char>& is_free);
+  // Every |p_{i,H} − z_{j,H}| of a fixed entry and a track of penalty_tracks_ is finite (their
+  // coordinates are finite and within ±1e150).
+  bool distancesFinite() const;
   // prepare()'s part for the clearance charge: the solids near each free robot, the intended
   // positions of the fixed bodies that may touch a free one (fixed_pos: every UAV's T samples,
   // filled for the fixed agents prepare() flew: those in the cost's scope and those bodies).
@@ -348,7 +351,9 @@ class NominalCost {
     return std::min(penalty_fixed_entries_.size(), kNearestSorted);
   }
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
+  // (rows of the tracks a candidate may charge only: charged_tracks_, when distancesFinite()).
   std::vector<double> terminal_distance_;
+  std::vector<int> charged_tracks_;  // penalty_varying_, then penalty_fixed_order_
   // The exact skip: on from kSkipFrom tracks in penalty_fixed_order_ (with penalty_merge_ and
   // penalty_nearest_). base_[c]: the baseline's charge of the track at position c: entry, D_i +
   // distance, distance; base_penalty_ = Σ_c w·total_c·tr_c. Per entry k (offsets at [k, k+1]):
