@@ -29,6 +29,20 @@ bool NominalCost::distancesFinite() const {
   return true;
 }
 
+void NominalCost::sortNearest(int j) {
+  // The fixed entries by distance (then entry), the first nearestSorted() of them, so that the
+  // penalty's search for the least D_i + distance stops at the first fixed UAV farther than the
+  // best so far (D_i ≥ 0); a search that passes them all looks at the rest in any order.
+  const double* distance = &terminal_distance_[j * penalty_uavs_.size()];
+  const std::size_t n_fixed = penalty_fixed_entries_.size();
+  int* order = &nearest_fixed_[j * n_fixed];
+  std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
+  std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
+    return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+  });
+  nearest_sorted_[j] = 1;
+}
+
 void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   const int T = horizon_ * substeps_;
   penalty_tracks_.clear();
@@ -68,15 +82,15 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   // The tracks a candidate may charge: penalty_varying_ and penalty_fixed_order_ (a track a fixed
   // UAV holds at m = H is held in every lane, and never charged). Only theirs are needed below;
   // the others' distances decide penalty_nearest_ alone, and only when one may be non-finite.
-  const int* rows = penalty_tracks_.data();
-  std::size_t n_rows = penalty_tracks_.size();
   if (distancesFinite()) {
     charged_tracks_.assign(penalty_varying_.begin(), penalty_varying_.end());
     charged_tracks_.insert(charged_tracks_.end(), penalty_fixed_order_.begin(),
                            penalty_fixed_order_.end());
-    rows = charged_tracks_.data();
-    n_rows = charged_tracks_.size();
+  } else {
+    charged_tracks_ = penalty_tracks_;
   }
+  const int* rows = charged_tracks_.data();
+  const std::size_t n_rows = charged_tracks_.size();
   // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
   terminal_distance_.resize(start_.size() * n_charged);
   for (std::size_t r = 0; r < n_rows; ++r) {
@@ -85,9 +99,6 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
     for (const int k : penalty_fixed_entries_)
       terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
   }
-  // Per track, the nearest fixed entries by distance (then entry), so that the penalty's search for
-  // the least D_i + distance stops at the first fixed UAV farther than the best so far (D_i ≥ 0);
-  // a search that passes them all looks at the rest in any order.
   const std::size_t n_fixed = penalty_fixed_entries_.size();
   nearest_fixed_.resize(start_.size() * n_fixed);
   penalty_nearest_ = n_fixed >= kFastPenaltyFrom;  // a few UAVs: the plain loop is faster
@@ -96,14 +107,13 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
     for (const int k : penalty_fixed_entries_)
       penalty_nearest_ = penalty_nearest_ && std::isfinite(distance[k]);
   }
-  for (std::size_t r = 0; r < n_rows && penalty_nearest_; ++r) {
-    const int j = rows[r];
-    const double* distance = &terminal_distance_[j * n_charged];
-    int* order = &nearest_fixed_[j * n_fixed];
-    std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
-    std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
-      return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
-    });
+  // Per track, its nearest fixed entries (sortNearest): now for every track the penalty may
+  // charge, or, with the exact skip, at a track's first search (most tracks are never searched).
+  nearest_sorted_.assign(start_.size(), 0);
+  penalty_skip_ = terminal_ && penalty_merge_ && penalty_nearest_ &&
+                  penalty_fixed_order_.size() >= kSkipFrom;
+  if (penalty_nearest_ && !penalty_skip_) {
+    for (std::size_t r = 0; r < n_rows; ++r) sortNearest(rows[r]);
   }
   prepareSkip();
 }
