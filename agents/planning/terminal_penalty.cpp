@@ -82,15 +82,21 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   // The tracks a candidate may charge: penalty_varying_ and penalty_fixed_order_ (a track a fixed
   // UAV holds at m = H is held in every lane, and never charged). Only theirs are needed below;
   // the others' distances decide penalty_nearest_ alone, and only when one may be non-finite.
-  if (distancesFinite()) {
-    charged_tracks_.assign(penalty_varying_.begin(), penalty_varying_.end());
-    charged_tracks_.insert(charged_tracks_.end(), penalty_fixed_order_.begin(),
-                           penalty_fixed_order_.end());
-  } else {
-    charged_tracks_ = penalty_tracks_;
+  // A few fixed UAVs (no nearest-first search): every track's, as cheap as choosing.
+  const std::size_t n_fixed = penalty_fixed_entries_.size();
+  const int* rows = penalty_tracks_.data();
+  std::size_t n_rows = penalty_tracks_.size();
+  if (n_fixed >= kFastPenaltyFrom) {
+    if (distancesFinite()) {
+      charged_tracks_.assign(penalty_varying_.begin(), penalty_varying_.end());
+      charged_tracks_.insert(charged_tracks_.end(), penalty_fixed_order_.begin(),
+                             penalty_fixed_order_.end());
+    } else {
+      charged_tracks_ = penalty_tracks_;
+    }
+    rows = charged_tracks_.data();
+    n_rows = charged_tracks_.size();
   }
-  const int* rows = charged_tracks_.data();
-  const std::size_t n_rows = charged_tracks_.size();
   // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
   terminal_distance_.resize(start_.size() * n_charged);
   for (std::size_t r = 0; r < n_rows; ++r) {
@@ -99,7 +105,6 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
     for (const int k : penalty_fixed_entries_)
       terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
   }
-  const std::size_t n_fixed = penalty_fixed_entries_.size();
   nearest_fixed_.resize(start_.size() * n_fixed);
   penalty_nearest_ = n_fixed >= kFastPenaltyFrom;  // a few UAVs: the plain loop is faster
   for (std::size_t r = 0; r < n_rows && penalty_nearest_; ++r) {
@@ -109,11 +114,12 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   }
   // Per track, its nearest fixed entries (sortNearest): now for every track the penalty may
   // charge, or, with the exact skip, at a track's first search (most tracks are never searched).
-  nearest_sorted_.assign(start_.size(), 0);
   penalty_skip_ = terminal_ && penalty_merge_ && penalty_nearest_ &&
                   penalty_fixed_order_.size() >= kSkipFrom;
-  if (penalty_nearest_ && !penalty_skip_) {
-    for (std::size_t r = 0; r < n_rows; ++r) sortNearest(rows[r]);
+  if (penalty_nearest_) {
+    nearest_sorted_.assign(start_.size(), 0);
+    if (!penalty_skip_)
+      for (std::size_t r = 0; r < n_rows; ++r) sortNearest(rows[r]);
   }
   prepareSkip();
 }
