@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <tuple>
 
 namespace canopy::metrics {
 namespace {
@@ -65,19 +64,25 @@ void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const
   parent_.resize(static_cast<std::size_t>(m_ + n_));
   std::iota(parent_.begin(), parent_.end(), 0);
   edges_.clear();
+  auto join = [&](int i, int j) {  // a pair closer than c: an edge
+    if (!((small[i] - large[j]).norm() < c_)) return;
+    edges_.push_back({0, i, j});
+    parent_[findRoot(parent_, i)] = findRoot(parent_, m_ + j);
+  };
   for (int i = 0; i < m_; ++i) {
     if (!usable(small[i])) continue;
     const auto [cx, cy] = cellOf(small[i]);
+    // Per column x, the cells (x, y−1), (x, y), (x, y+1) in the order of their keys (by cell,
+    // then index) are one run of cells_ found by one search, unless y's low 32 bits (all the key
+    // keeps of y) wrap between y − 1 and y + 1: then one cell at a time, in the same order.
+    const auto low = static_cast<std::uint32_t>(cy & 0xffffffff);
+    const bool one_run = low != 0 && low != 0xffffffffU;
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const std::uint64_t key = cellKey(cx + dx, cy + dy);
-        auto cell = std::lower_bound(cells_.begin(), cells_.end(), std::pair{key, 0});
-        for (; cell != cells_.end() && cell->first == key; ++cell) {
-          const int j = cell->second;
-          if (!((small[i] - large[j]).norm() < c_)) continue;
-          edges_.push_back({0, i, j});
-          parent_[findRoot(parent_, i)] = findRoot(parent_, m_ + j);
-        }
+      for (std::int64_t dy = one_run ? 0 : -1; dy <= (one_run ? 0 : 1); ++dy) {
+        const std::uint64_t first = cellKey(cx + dx, cy + (one_run ? -1 : dy));
+        const std::uint64_t last = cellKey(cx + dx, cy + (one_run ? 1 : dy));
+        auto cell = std::lower_bound(cells_.begin(), cells_.end(), std::pair{first, 0});
+        for (; cell != cells_.end() && cell->first <= last; ++cell) join(i, cell->second);
       }
     }
   }
@@ -85,18 +90,23 @@ void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const
   // Each connected component of the edge graph is its own cut-off assignment: a pair across
   // components costs c^p, as leaving both points unassigned does, so the components' optimal
   // matchings together are optimal (see the header). Components in the order of their roots,
-  // rows and columns in index order: the same sums on every platform.
-  for (Edge& edge : edges_) edge.root = findRoot(parent_, edge.small);
-  std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) {
-    return std::tie(a.root, a.small, a.large) < std::tie(b.root, b.small, b.large);
-  });
-  for (std::size_t first = 0; first < edges_.size();) {
+  // rows and columns in index order: the same sums on every platform. The edges by root, by a
+  // stable counting sort: within a component they keep their order, by small index.
+  root_start_.assign(parent_.size() + 1, 0);
+  for (Edge& edge : edges_) {
+    edge.root = findRoot(parent_, edge.small);
+    ++root_start_[edge.root + 1];
+  }
+  std::partial_sum(root_start_.begin(), root_start_.end(), root_start_.begin());
+  by_root_.resize(edges_.size());
+  for (const Edge& edge : edges_) by_root_[root_start_[edge.root]++] = edge;
+  for (std::size_t first = 0; first < by_root_.size();) {
     std::size_t last = first;
     rows_.clear();
     cols_.clear();
-    for (; last < edges_.size() && edges_[last].root == edges_[first].root; ++last) {
-      rows_.push_back(edges_[last].small);
-      cols_.push_back(edges_[last].large);
+    for (; last < by_root_.size() && by_root_[last].root == by_root_[first].root; ++last) {
+      rows_.push_back(by_root_[last].small);
+      cols_.push_back(by_root_[last].large);
     }
     rows_.erase(std::unique(rows_.begin(), rows_.end()), rows_.end());  // sorted by the edges
     std::sort(cols_.begin(), cols_.end());

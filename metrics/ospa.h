@@ -70,7 +70,9 @@ class CutoffAssignment {
     int root = 0;  // its component
     int small = 0, large = 0;
   };
-  std::vector<Edge> edges_;       // pairs closer than c
+  std::vector<Edge> edges_;       // pairs closer than c, by small index
+  std::vector<Edge> by_root_;     // edges_ by component root (then as in edges_)
+  std::vector<int> root_start_;   // per root, its first edge in by_root_ (a counting sort)
   std::vector<int> rows_, cols_;  // one part's small and large indices
   std::vector<Pair> pairs_;
 };

@@ -257,6 +257,11 @@ class NominalCost {
   // same charges as the loop; J's penalty is summed in another order (its last bits may differ).
   void prepareSkip();
   double addTerminalPenaltySkipping(int lane, double J);
+  // The skip's way out to addTerminalPenaltyAtScale (its ties, or too many UAVs changed), every
+  // track's nearest order sorted first.
+  double wholePenalty(int lane, double J);
+  // Track j's fixed entries into nearest_fixed_, the nearestSorted() nearest first.
+  void sortNearest(int j);
   // D_k of the baseline before position c of penalty_fixed_order_ (fixed entry k).
   double baselineChargedBefore(int entry, int c) const;
   Charge leastChargeByIndex(const Vec2* final_position, const Vec2& z,
@@ -264,6 +269,9 @@ class NominalCost {
   // prepare()'s part for the terminal penalty: the tracks it may charge, which charged UAVs are
   // free, and the fixed UAVs' distances to each track at m = H.
   void preparePenalty(const std::vector<char>& is_free);
+  // Every |p_{i,H} − z_{j,H}| of a fixed entry and a track of penalty_tracks_ is finite (their
+  // coordinates are finite and within ±1e150).
+  bool distancesFinite() const;
   // prepare()'s part for the clearance charge: the solids near each free robot, the intended
   // positions of the fixed bodies that may touch a free one (fixed_pos: every UAV's T samples,
   // filled for the fixed agents prepare() flew: those in the cost's scope and those bodies).
@@ -339,7 +347,9 @@ class NominalCost {
   // [j·|fixed|], the first nearestSorted() of them the nearest by increasing distance to z_{j,H}
   // (ties: lower entry), the rest no nearer, in any order; penalty_nearest_: every such distance
   // is finite, so the search may stop early (addTerminalPenalty).
+  // With the exact skip a track's order is sorted at its first search (nearest_sorted_).
   std::vector<int> penalty_free_entries_, penalty_fixed_entries_, nearest_fixed_;
+  std::vector<char> nearest_sorted_;  // per track: nearest_fixed_ holds its order
   bool penalty_nearest_ = true;
   // How many fixed entries per track preparePenalty sorts: a full sort per track was 11 % of a
   // 256-UAV run (bench/RESULTS.md).
@@ -348,7 +358,10 @@ class NominalCost {
     return std::min(penalty_fixed_entries_.size(), kNearestSorted);
   }
   // |p_{i,H} − z_{j,H}| of each fixed entry k of penalty_uavs_, at [j·|penalty_uavs_| + k]
+  // (rows of the tracks a candidate may charge only: charged_tracks_, when distancesFinite()).
   std::vector<double> terminal_distance_;
+  // penalty_varying_, then penalty_fixed_order_ (when distancesFinite(); else penalty_tracks_)
+  std::vector<int> charged_tracks_;
   // The exact skip: on from kSkipFrom tracks in penalty_fixed_order_ (with penalty_merge_ and
   // penalty_nearest_). base_[c]: the baseline's charge of the track at position c: entry, D_i +
   // distance, distance; base_penalty_ = Σ_c w·total_c·tr_c. Per entry k (offsets at [k, k+1]):

@@ -18,6 +18,31 @@ constexpr std::size_t kFastPenaltyFrom = 8;
 
 }  // namespace
 
+bool NominalCost::distancesFinite() const {
+  // |a − b| of coordinates within ±1e150 is finite: (2e150)² · 2 < 1.8e308.
+  auto bounded = [](const Vec2& p) { return p.allFinite() && p.cwiseAbs().maxCoeff() <= 1e150; };
+  const int T = horizon_ * substeps_;
+  for (const int j : penalty_tracks_)
+    if (!bounded(z_[static_cast<std::size_t>(j) * T + T - 1])) return false;
+  for (const int k : penalty_fixed_entries_)
+    if (!bounded(final_position_[penalty_uavs_[k]])) return false;
+  return true;
+}
+
+void NominalCost::sortNearest(int j) {
+  // The fixed entries by distance (then entry), the first nearestSorted() of them, so that the
+  // penalty's search for the least D_i + distance stops at the first fixed UAV farther than the
+  // best so far (D_i ≥ 0); a search that passes them all looks at the rest in any order.
+  const double* distance = &terminal_distance_[j * penalty_uavs_.size()];
+  const std::size_t n_fixed = penalty_fixed_entries_.size();
+  int* order = &nearest_fixed_[j * n_fixed];
+  std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
+  std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
+    return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
+  });
+  nearest_sorted_[j] = 1;
+}
+
 void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   const int T = horizon_ * substeps_;
   penalty_tracks_.clear();
@@ -48,36 +73,53 @@ void NominalCost::preparePenalty(const std::vector<char>& is_free) {
   const std::size_t n_charged = penalty_uavs_.size();
   penalty_free_.resize(n_charged);
   for (std::size_t k = 0; k < n_charged; ++k) penalty_free_[k] = is_free[penalty_uavs_[k]];
-  // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
-  terminal_distance_.assign(start_.size() * n_charged, 0.0);
-  for (const int j : penalty_tracks_) {
-    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
-    for (std::size_t k = 0; k < n_charged; ++k) {
-      if (penalty_free_[k]) continue;
-      terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
-    }
-  }
-  // Per track, the nearest fixed entries by distance (then entry), so that the penalty's search for
-  // the least D_i + distance stops at the first fixed UAV farther than the best so far (D_i ≥ 0);
-  // a search that passes them all looks at the rest in any order.
+  // Entries of penalty_uavs_ that are free, and fixed.
   penalty_free_entries_.clear();
   penalty_fixed_entries_.clear();
   for (std::size_t k = 0; k < n_charged; ++k)
     (penalty_free_[k] ? penalty_free_entries_ : penalty_fixed_entries_)
         .push_back(static_cast<int>(k));
+  // The tracks a candidate may charge: penalty_varying_ and penalty_fixed_order_ (a track a fixed
+  // UAV holds at m = H is held in every lane, and never charged). Only theirs are needed below;
+  // the others' distances decide penalty_nearest_ alone, and only when one may be non-finite.
+  // A few fixed UAVs (no nearest-first search): every track's, as cheap as choosing.
   const std::size_t n_fixed = penalty_fixed_entries_.size();
+  const int* rows = penalty_tracks_.data();
+  std::size_t n_rows = penalty_tracks_.size();
+  if (n_fixed >= kFastPenaltyFrom) {
+    if (distancesFinite()) {
+      charged_tracks_.assign(penalty_varying_.begin(), penalty_varying_.end());
+      charged_tracks_.insert(charged_tracks_.end(), penalty_fixed_order_.begin(),
+                             penalty_fixed_order_.end());
+    } else {
+      charged_tracks_ = penalty_tracks_;
+    }
+    rows = charged_tracks_.data();
+    n_rows = charged_tracks_.size();
+  }
+  // A fixed UAV's p_{i,H} is every lane's: its distance to each z_{j,H} once, here.
+  terminal_distance_.resize(start_.size() * n_charged);
+  for (std::size_t r = 0; r < n_rows; ++r) {
+    const int j = rows[r];
+    const Vec2& z = z_[static_cast<std::size_t>(j) * T + T - 1];
+    for (const int k : penalty_fixed_entries_)
+      terminal_distance_[j * n_charged + k] = (final_position_[penalty_uavs_[k]] - z).norm();
+  }
   nearest_fixed_.resize(start_.size() * n_fixed);
   penalty_nearest_ = n_fixed >= kFastPenaltyFrom;  // a few UAVs: the plain loop is faster
-  for (const int j : penalty_tracks_) {
-    if (!penalty_nearest_) break;
-    const double* distance = &terminal_distance_[j * n_charged];
-    int* order = &nearest_fixed_[j * n_fixed];
-    std::copy(penalty_fixed_entries_.begin(), penalty_fixed_entries_.end(), order);
+  for (std::size_t r = 0; r < n_rows && penalty_nearest_; ++r) {
+    const double* distance = &terminal_distance_[rows[r] * n_charged];
     for (const int k : penalty_fixed_entries_)
       penalty_nearest_ = penalty_nearest_ && std::isfinite(distance[k]);
-    std::partial_sort(order, order + nearestSorted(), order + n_fixed, [&](int a, int b) {
-      return distance[a] < distance[b] || (distance[a] == distance[b] && a < b);
-    });
+  }
+  // Per track, its nearest fixed entries (sortNearest): now for every track the penalty may
+  // charge, or, with the exact skip, at a track's first search (most tracks are never searched).
+  penalty_skip_ = terminal_ && penalty_merge_ && penalty_nearest_ &&
+                  penalty_fixed_order_.size() >= kSkipFrom;
+  if (penalty_nearest_) {
+    nearest_sorted_.assign(start_.size(), 0);
+    if (!penalty_skip_)
+      for (std::size_t r = 0; r < n_rows; ++r) sortNearest(rows[r]);
   }
   prepareSkip();
 }

@@ -36,13 +36,13 @@ double NominalCost::baselineChargedBefore(int entry, int c) const {
 
 void NominalCost::prepareSkip() {
   const std::size_t n_order = penalty_fixed_order_.size();
-  penalty_skip_ = terminal_ && penalty_merge_ && penalty_nearest_ && n_order >= kSkipFrom;
-  if (!penalty_skip_) return;
+  if (!penalty_skip_) return;  // preparePenalty decided
   const int T = horizon_ * substeps_;
   const std::size_t n_charged = penalty_uavs_.size();
-  const std::size_t n_fixed = penalty_fixed_entries_.size();
   // The baseline: the loop over penalty_fixed_order_ with the fixed entries only (lane 0: these
-  // tracks are the same in every lane).
+  // tracks are the same in every lane). Its charge is the least (D_k + distance, entry) over the
+  // fixed entries (every distance finite: penalty_nearest_), found here by looking at each, as
+  // the nearest-first search finds it (one farther than the least total cannot reach it).
   std::vector<double> charged(n_charged, 0.0);
   std::vector<int> wins(n_charged, 0);
   base_.resize(n_order);
@@ -51,17 +51,10 @@ void NominalCost::prepareSkip() {
     const int j = penalty_fixed_order_[c];
     const double* distance = &terminal_distance_[j * n_charged];
     BaseCharge best{0, std::numeric_limits<double>::infinity(), 0.0};
-    const int* k = &nearest_fixed_[j * n_fixed];
-    const int *sorted_end = k + nearestSorted(), *end = k + n_fixed;
-    auto consider = [&](int entry) {
+    for (const int entry : penalty_fixed_entries_) {
       const double total = charged[entry] + distance[entry];
       if (total < best.total || (total == best.total && entry < best.entry))
         best = {entry, total, distance[entry]};
-    };
-    for (; k != sorted_end && distance[*k] <= best.total; ++k) consider(*k);
-    if (k == sorted_end) {
-      for (; k != end; ++k)
-        if (distance[*k] <= best.total) consider(*k);
     }
     base_[c] = best;
     base_penalty_ += weight_ * best.total * trace_final_[kLanes * j];  // w (D_i + d) tr(P_{j,H})
@@ -109,6 +102,13 @@ void NominalCost::prepareSkip() {
   changed_.clear();
 }
 
+double NominalCost::wholePenalty(int lane, double J) {
+  // The charge of every track it may charge, each searched nearest first: every track's order.
+  for (const int j : charged_tracks_)
+    if (!nearest_sorted_[j]) sortNearest(j);
+  return addTerminalPenaltyAtScale(lane, J);
+}
+
 double NominalCost::addTerminalPenaltySkipping(int lane, double J) {
   const int T = horizon_ * substeps_;
   auto traceFinal = [&](int j) { return trace_final_[kLanes * j + lane]; };
@@ -121,7 +121,7 @@ double NominalCost::addTerminalPenaltySkipping(int lane, double J) {
   int n_varying = 0;
   for (const int j : penalty_varying_) {
     if (in_view_final_[kLanes * j + lane] != 0) continue;
-    if (!std::isfinite(traceFinal(j))) return addTerminalPenaltyAtScale(lane, J);  // its ties
+    if (!std::isfinite(traceFinal(j))) return wholePenalty(lane, J);  // its ties
     int slot = n_varying++;
     for (; slot > 0 && traceFinal(varying[slot - 1]) < traceFinal(j); --slot)
       varying[slot] = varying[slot - 1];
@@ -169,6 +169,7 @@ double NominalCost::addTerminalPenaltySkipping(int lane, double J) {
     if (base != nullptr && changed_slot_[base->entry] < 0) {
       consider(base->entry, base->total, base->distance);  // the least of the unchanged ones
     } else {  // the unchanged fixed entries, nearest first, at their D_k(c)
+      if (!nearest_sorted_[j]) sortNearest(j);
       const int* k = &nearest_fixed_[j * n_fixed];
       const int *sorted_end = k + nearestSorted(), *end = k + n_fixed;
       for (; k != end; ++k) {
@@ -196,7 +197,7 @@ double NominalCost::addTerminalPenaltySkipping(int lane, double J) {
 
   int v = 0;
   for (;;) {
-    if (changed_.size() > kSkipMaxChanged) return addTerminalPenaltyAtScale(lane, J);
+    if (changed_.size() > kSkipMaxChanged) return wholePenalty(lane, J);
     int next = n_order;  // the next position some changed UAV could take
     for (const Changed& k : changed_) {
       if (k.cursor < contest_offset_[k.entry + 1])

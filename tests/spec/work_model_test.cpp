@@ -15,8 +15,9 @@ namespace {
 
 // The per-unit coefficients of spec/work_model.cpp as bench/RESULTS.md ("Work budget in
 // instructions") states them; the formulas are worked by hand below.
-constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 508, kFusion = 1950, kTracking = 1070,
-                 kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 281, kSetup = 5670,
+constexpr double kSearch = 68, kPenalty = 38, kSkip = 106, kPrepare = 395, kFusion = 1950,
+                 kTracking = 1070, kSensing = 2800, kWorld = 2300, kRecord = 5000, kMetrics = 199,
+                 kSetup = 5670,
                  kStart = 1.5e7;
 
 // The hand-sized files below: two UAVs at (100, 100) and (900, 900), SMA-NBO H = 2 with 10
@@ -67,7 +68,7 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   EXPECT_NEAR(w.planning_search, kSearch * evaluations * 2 * (1 + 1.0), 1e-6);  // 326 400
   EXPECT_NEAR(w.planning_penalty, kPenalty * evaluations * 3, 1e-6);            // 136 800
   // Six swarms (3 epochs × 2 agents), each prepared over 3 tracks × 2 UAVs.
-  EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 3 * 2, 1e-6);  // 18 288
+  EXPECT_NEAR(w.planning_prepare, kPrepare * 6 * 3 * 2, 1e-6);  // 14 220
   // Two UAVs: association pair by pair (0.7 per neighbour), consensus in rounds (not a closed
   // form below 16 UAVs): held × (1 + 0.7 × 1 + 1 × 5 / 31).
   EXPECT_NEAR(w.fusion, kFusion * steps * uavs * held * (1 + 0.7 + 5 / 31.0), 1e-6);

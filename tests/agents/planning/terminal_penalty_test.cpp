@@ -107,13 +107,16 @@ TEST(TerminalPenaltyAtScale, BreaksExactTiesAsThePlainLoopDoes) {
 // UAVs' costs against the plain loop's joint cost (every UAV free there, so nothing is skipped),
 // with `free_agents` free at once (a Dec-POMDP block). Returns the tracks charged one at a time
 // per candidate.
+// `reuse`: prepare that cost (its buffers from earlier problems) instead of a new one.
 double expectSkippingAgrees(Scene scene, const std::vector<int>& free_agents, int candidates,
-                            RandomStream& rng, const std::string& where) {
+                            RandomStream& rng, const std::string& where,
+                            NominalCost* reuse = nullptr) {
   CostSettings s;
   s.horizon = static_cast<int>(scene.plans[0].velocities.size());
   s.terminal_penalty = true;
   const PlanningProblem problem{scene.targets, scene.uavs, nullptr, s};
-  NominalCost agents;
+  NominalCost fresh;
+  NominalCost& agents = reuse != nullptr ? *reuse : fresh;
   agents.prepare(problem, free_agents, scene.plans);
   for (int c = 0; c < candidates; ++c) {
     std::vector<Vec2> actions;
@@ -171,6 +174,28 @@ TEST(TerminalPenaltySkip, BreaksExactTiesAsThePlainLoopDoes) {
   for (const int self : {0, 9, 35}) {
     expectSkippingAgrees(tiedScene(6, 3), {self}, 20, rng,
                          "tied scene, free UAV " + std::to_string(self));
+  }
+}
+
+// The skip sorts a track's nearest fixed UAVs at its first search: one cost prepared for one
+// scene after another (the orders of the last still in its buffers), and crowds where the free
+// UAVs displace more than kSkipMaxChanged others, so that the skip hands the whole penalty to
+// the nearest-first loop (which then needs every track's order).
+TEST(TerminalPenaltySkip, SortsEachTracksNearestUavsWhenFirstSearched) {
+  RandomStream rng(53, "terminal-penalty-lazy-order-test");
+  NominalCost reused;
+  for (int scene = 0; scene < 4; ++scene) {
+    const int n_uavs = 30 + 6 * scene;
+    const Scene s = sparseScene(rng, n_uavs, 4, 3 + scene % 3);
+    expectSkippingAgrees(s, {(7 * scene) % n_uavs}, 16, rng,
+                         "reused cost, scene " + std::to_string(scene), &reused);
+  }
+  for (int scene = 0; scene < 2; ++scene) {
+    // 64 UAVs (all free in the joint cost: prepare's limit) and 512 people over 400 × 400 m,
+    // four of them free.
+    const Scene s = randomScene(rng, 64, 512, 3);
+    expectSkippingAgrees(s, {scene, scene + 16, scene + 32, scene + 48}, 8, rng,
+                         "crowd " + std::to_string(scene), &reused);
   }
 }
 
