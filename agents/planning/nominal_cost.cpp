@@ -156,6 +156,11 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     climb_slot_[free_.size() - 1] = static_cast<int>(climbers_.size());
     climbers_.push_back(static_cast<int>(free_.size()) - 1);
   }
+  free_sensor_.clear();
+  for (const Mover& mover : free_) {
+    free_sensor_.push_back({SensorLanes::of(mover.at_origin, mover.quality),
+                            SensorLanes::of(mover.at_origin, mover.reference)});
+  }
   heads_ = false;
   for (const UavState& u : problem.uavs)
     heads_ = heads_ || u.occlusion == sensing::OcclusionModel::volumes;
