@@ -27,8 +27,8 @@ struct alignas(32) PoseLanes {
 /// sensing_lanes_test.cpp). A constant splat (a, a, a, a) is what `a * v` multiplies v by;
 /// r0 is broadcast(r0) as the std::max below compares it.
 struct alignas(32) SensorLanes {
-  V4 half_x, half_y;            // m, a rectangle's half sides + kFootprintSlack
-  V4 r0;                        // m, the range below which the noise is that of r0
+  V4 half_x, half_y;              // m, a rectangle's half sides + kFootprintSlack
+  V4 r0;                          // m, the range below which the noise is that of r0
   V4 range_scale, bearing_scale;  // α·0.1 and α·0.1·π (noise per metre of range)
 
   static SensorLanes of(const sensing::Footprint& at_origin, const sensing::SensorQuality& q) {
@@ -119,8 +119,8 @@ struct alignas(32) SensorLanes {
                                                                 const V4& y,
                                                                 const SensorLanes& sensor) {
   const V4 dx = z.x() - x, dy = z.y() - y;
-  const V4 r = lanes::sqrt(dx * dx + dy * dy);    // |z − p|
-  const V4 d = sensor.r0 < r ? r : sensor.r0;     // std::max(r0, r)
+  const V4 r = lanes::sqrt(dx * dx + dy * dy);  // |z − p|
+  const V4 d = sensor.r0 < r ? r : sensor.r0;   // std::max(r0, r)
   const M4 away = r > 0.0;
   const V4 c = away ? dx / r : lanes::broadcast(1.0);  // cos ρ
   const V4 s = away ? dy / r : V4{};                   // sin ρ
