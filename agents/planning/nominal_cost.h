@@ -290,6 +290,7 @@ class NominalCost {
     SensorLanes quality, reference;
   };
   std::vector<FreeSensor> free_sensor_;
+  void prepareSensors();  // free_sensor_ of free_
   std::vector<int> free_index_;        // UAV index of each free UAV
   std::vector<int> climbers_;          // the free UAVs (f) whose altitude is free, in order
   std::vector<int> climb_slot_;        // per free UAV: its place in climbers_, or −1
