@@ -80,6 +80,15 @@ CostSettings CostSettings::from(const PlannerConfig& config, double sigma_a) {
   return s;
 }
 
+// prepare()'s part for the free UAVs' sensing constants in every lane (sensing_lanes.h).
+void NominalCost::prepareSensors() {
+  free_sensor_.clear();
+  for (const Mover& mover : free_) {
+    free_sensor_.push_back({SensorLanes::of(mover.at_origin, mover.quality),
+                            SensorLanes::of(mover.at_origin, mover.reference)});
+  }
+}
+
 void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> free_agents,
                           std::span<const Plan> assumed) {
   const CostSettings& s = problem.settings;
@@ -156,6 +165,7 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
     climb_slot_[free_.size() - 1] = static_cast<int>(climbers_.size());
     climbers_.push_back(static_cast<int>(free_.size()) - 1);
   }
+  prepareSensors();
   heads_ = false;
   for (const UavState& u : problem.uavs)
     heads_ = heads_ || u.occlusion == sensing::OcclusionModel::volumes;

@@ -292,6 +292,13 @@ class NominalCost {
   std::vector<double> discount_;       // γ^{m−1}, m = 1..H
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
   std::vector<Mover> free_;            // the free UAVs, in prepare's order
+  // Per free UAV, what evaluate() reads of its footprint and sensor in every lane (S·R and, for a
+  // camera, the reference S·R_ref), set by prepare() (sensing_lanes.h).
+  struct FreeSensor {
+    SensorLanes quality, reference;
+  };
+  std::vector<FreeSensor> free_sensor_;
+  void prepareSensors();  // free_sensor_ of free_
   std::vector<int> free_index_;        // UAV index of each free UAV
   std::vector<int> climbers_;          // the free UAVs (f) whose altitude is free, in order
   std::vector<int> climb_slot_;        // per free UAV: its place in climbers_, or −1

@@ -120,7 +120,9 @@ template <bool kHeight>
       const int first_sample = start_[j];
       CovarianceLanes P =
           CovarianceLanes::of(fixed_path_[static_cast<std::size_t>(j) * (T + 1) + first_sample]);
-      M4 seen_final = M4{};
+      // Whose footprints hold z_{j,t} at the sample being run; after the loop, at t = H·S − 1
+      // (it runs at least once: start_[j] < H·S for a reachable track).
+      M4 seen = M4{};
       int m = first_sample / S;         // the action (0-based) of the first sample
       int left = S - first_sample % S;  // samples of it still to come, the first included
       for (int t = first_sample; t < T; ++t) {
@@ -129,7 +131,7 @@ template <bool kHeight>
         predictCovariance(P, tau, Q_);  // P⁻ at the sample (P⁻_{j,m} when S = 1)
         // V_{j,m} = {i : z_{j,m} ∈ φ_i(p_{i,m}), z_{j,m} ∉ map, and, under line of sight, no map
         // tree on the segment p_{i,m} → z_{j,m}}; the fixed UAVs' part is fused in R_fix.
-        M4 seen = M4{};
+        seen = M4{};
         if (fixed_seen_[k]) {
           seen = M4{} - 1;
           updatePosition(P, NoiseLanes::of(fixed_R_[k]), seen);
@@ -138,12 +140,13 @@ template <bool kHeight>
           const int f = std::countr_zero(bits);
           const PoseLanes& pose = free_pose_[static_cast<std::size_t>(f) * T + t];
           const Mover& uav = free_[f];
+          const FreeSensor& sensor = free_sensor_[f];
           const bool camera = kHeight && uav.camera;
           if (kHeight && heads_ && !uav.volumes && under_crown_[k]) continue;  // its model hides it
           const V4 h = camera ? free_height_[static_cast<std::size_t>(f) * T + t].h : V4{};
           // φ(h) = φ(z)·h/z (class comment)
-          M4 sees = camera ? footprintHoldsScaled(uav.at_origin, pose, z, uav.z / h)
-                           : footprintHolds(uav.at_origin, pose, z);
+          M4 sees = camera ? footprintHoldsScaled(uav.at_origin, sensor.quality, pose, z, uav.z / h)
+                           : footprintHolds(uav.at_origin, sensor.quality, pose, z);
           if (uav.line_of_sight || (kHeight && uav.volumes)) {  // once here, not per lane
             for (int lane = 0; lane < kLanes; ++lane) {
               if (sees[lane] != 0 &&
@@ -156,14 +159,14 @@ template <bool kHeight>
           if (!lanes::anyLane(sees)) continue;
           NoiseLanes R;
           if (camera) {  // (ℓ(h)/ℓ(h_ref))·R_ref, the sensor's model
-            R = rangeBearingCovariance(z, pose.x, pose.y, uav.reference);
+            R = rangeBearingCovariance(z, pose.x, pose.y, sensor.reference);
             const V4 factor = slantFactor(z, pose.x, pose.y, h);
             R.r00 *= factor;
             R.r01 *= factor;
             R.r10 *= factor;
             R.r11 *= factor;
           } else {
-            R = rangeBearingCovariance(z, pose.x, pose.y, uav.quality);  // S·R
+            R = rangeBearingCovariance(z, pose.x, pose.y, sensor.quality);  // S·R
           }
           R.r00 = sees ? R.r00 : lanes::broadcast(1.0);  // I in a lane that does not see
           R.r01 = sees ? R.r01 : V4{};
@@ -178,10 +181,9 @@ template <bool kHeight>
           ++m;
           left = S;
         }
-        if (t == T - 1) seen_final = seen;
       }
       store(&trace_final_[kLanes * j], penaltyWeight(P));  // tr(P_{j,H}[pos]) or its custody loss
-      std::memcpy(&in_view_final_[kLanes * j], &seen_final, sizeof seen_final);
+      std::memcpy(&in_view_final_[kLanes * j], &seen, sizeof seen);
     }
     // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
     V4 J = V4{};

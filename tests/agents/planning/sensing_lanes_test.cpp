@@ -59,10 +59,14 @@ TEST(SensingLanes, FootprintTestIsTheScalarOnePerLane) {
       const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
       const PoseLanes pose = randomPoses(rng, z, trial);
       const M4 holds = footprintHolds(at_origin, pose, z);
+      // The cost's form: the constants worked out once for the UAV (any sensor quality).
+      const SensorLanes sensor = SensorLanes::of(at_origin, {rng.uniform(0.05, 3.0), 2.0});
+      const M4 holds_once = footprintHolds(at_origin, sensor, pose, z);
       for (int k = 0; k < 4; ++k) {
         const bool scalar =
             at_origin.containsFrom(Vec2(pose.x[k], pose.y[k]), pose.c[k], pose.s[k], z);
         ASSERT_EQ(holds[k] != 0, scalar) << static_cast<int>(shape) << " " << trial << " " << k;
+        ASSERT_EQ(holds_once[k] != 0, scalar) << static_cast<int>(shape) << " " << trial;
         (scalar ? inside : outside) += 1;
       }
     }
@@ -79,12 +83,18 @@ TEST(SensingLanes, RangeBearingNoiseIsTheScalarOnePerLane) {
     const Vec2 z(rng.uniform(-50, 50), rng.uniform(-50, 50));
     const PoseLanes pose = randomPoses(rng, z, trial);
     const NoiseLanes R = rangeBearingCovariance(z, pose.x, pose.y, quality);
+    // The cost's form: the quality's constants worked out once for the UAV (with its footprint's).
+    const SensorLanes sensor =
+        SensorLanes::of(footprintAtOrigin(rng, sensing::FootprintShape::rectangle), quality);
+    const NoiseLanes R_once = rangeBearingCovariance(z, pose.x, pose.y, sensor);
     for (int k = 0; k < 4; ++k) {
       const Mat2 scalar = sensing::rangeBearingCovariance(z, Vec2(pose.x[k], pose.y[k]), quality);
-      ASSERT_EQ(bitsOf(R.r00[k]), bitsOf(scalar(0, 0))) << trial << " " << k;
-      ASSERT_EQ(bitsOf(R.r01[k]), bitsOf(scalar(0, 1))) << trial << " " << k;
-      ASSERT_EQ(bitsOf(R.r10[k]), bitsOf(scalar(1, 0))) << trial << " " << k;
-      ASSERT_EQ(bitsOf(R.r11[k]), bitsOf(scalar(1, 1))) << trial << " " << k;
+      for (const NoiseLanes& lanes : {R, R_once}) {
+        ASSERT_EQ(bitsOf(lanes.r00[k]), bitsOf(scalar(0, 0))) << trial << " " << k;
+        ASSERT_EQ(bitsOf(lanes.r01[k]), bitsOf(scalar(0, 1))) << trial << " " << k;
+        ASSERT_EQ(bitsOf(lanes.r10[k]), bitsOf(scalar(1, 0))) << trial << " " << k;
+        ASSERT_EQ(bitsOf(lanes.r11[k]), bitsOf(scalar(1, 1))) << trial << " " << k;
+      }
     }
   }
 }
