@@ -250,6 +250,7 @@ StageWork estimateStageWork(const ScenarioSpec& spec) {
   // association by key"): 1896–1953 instructions at 16 × 64 × 10⁴ to 64 × 256 × 10⁵ (complete),
   // 3039 in city_swarm (3.5 neighbours, 5 rounds), 3689 in trajectory_handover (one neighbour).
   const double held = g.tracks_held + g.trees_known;
+  // From TrackAssociation::kGroupedFrom UAVs; InformationConsensus::kClosedFormFrom members.
   const bool by_key = uavs >= 8.0;
   const bool closed_form = uavs >= 16.0 && !std::isfinite(spec.fusion.comm_range) &&
                            spec.fusion.comm_drop <= 0.0;

@@ -24,9 +24,8 @@ void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph&
   startUnionFind();
   remembered_.clear();
   assigned_.clear();
-  neighbour_sets_ = agents_ >= grouped_from_;
-  if (neighbour_sets_) gatherNeighbourSets(graph);
-  const bool by_key = neighbour_sets_ && keysUniquePerAgent();
+  gatherNeighbourSets(graph);
+  const bool by_key = agents_ >= grouped_from_ && keysUniquePerAgent();
   if (by_key) linkByKey(gate, diagnostics);
   for (int i = 0; i < agents_; ++i) {
     for (const int j : graph.neighbours(i)) {
@@ -40,7 +39,7 @@ void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph&
   }
   cluster(diagnostics);
   chooseKeys(graph, mint, diagnostics);
-  planAdoptions(graph);
+  planAdoptions();
   writeOut(lists, clusters, diagnostics);
 }
 
@@ -79,8 +78,7 @@ void TrackAssociation<N>::gatherNeighbourSets(const CommGraph& graph) {
   neighbours_.assign(static_cast<std::size_t>(agents_) * mask_words_, 0);
   for (int a = 0; a < agents_; ++a) {
     for (const int b : graph.neighbours(a)) {
-      neighbours_[static_cast<std::size_t>(a) * mask_words_ + b / 64] |= std::uint64_t{1}
-                                                                          << (b % 64);
+      neighbours_[static_cast<std::size_t>(a) * mask_words_ + b / 64] |= bitOf(b);
     }
   }
 }
@@ -238,8 +236,7 @@ void TrackAssociation<N>::startUnionFind() {
   for (int n = 0; n < count; ++n) {
     parent_[n] = n;
     const int agent = nodes_[n].agent;
-    const std::uint64_t bit = std::uint64_t{1} << (agent % 64);
-    mask_[static_cast<std::size_t>(n) * mask_words_ + agent / 64] = bit;
+    mask_[static_cast<std::size_t>(n) * mask_words_ + agent / 64] = bitOf(agent);
   }
 }
 
@@ -317,7 +314,7 @@ void TrackAssociation<N>::chooseKeys(const CommGraph& graph, KeyMint& mint,
 }
 
 template <int N>
-void TrackAssociation<N>::planAdoptions(const CommGraph& graph) {
+void TrackAssociation<N>::planAdoptions() {
   adoptions_.clear();
   const int count = static_cast<int>(nodes_.size());
   for (int n = 0; n < count; ++n) {  // nodes ascend by agent: the lowest member offers first
@@ -328,24 +325,15 @@ void TrackAssociation<N>::planAdoptions(const CommGraph& graph) {
     // nodes of one cluster are not adjacent: a "last cluster offered" per agent let a second
     // member offer it again, and the copies multiplied step after step).
     const std::size_t words = static_cast<std::size_t>(find(n)) * mask_words_;
-    if (neighbour_sets_) {  // the same offers, a word of neighbours at a time
-      const std::size_t own = static_cast<std::size_t>(nodes_[n].agent) * mask_words_;
-      for (int w = 0; w < mask_words_; ++w) {
-        std::uint64_t& word = mask_[words + w];
-        std::uint64_t offered = neighbours_[own + w] & ~word;
-        word |= neighbours_[own + w];
-        for (; offered != 0; offered &= offered - 1) {
-          adoptions_.push_back({c, w * 64 + std::countr_zero(offered), n});
-        }
+    // Each neighbour not in the set yet adopts it, by increasing agent, a word at a time.
+    const std::size_t own = static_cast<std::size_t>(nodes_[n].agent) * mask_words_;
+    for (int w = 0; w < mask_words_; ++w) {
+      std::uint64_t& word = mask_[words + w];
+      std::uint64_t offered = neighbours_[own + w] & ~word;
+      word |= neighbours_[own + w];
+      for (; offered != 0; offered &= offered - 1) {
+        adoptions_.push_back({c, w * 64 + std::countr_zero(offered), n});
       }
-      continue;
-    }
-    for (const int j : graph.neighbours(nodes_[n].agent)) {
-      std::uint64_t& word = mask_[words + j / 64];
-      const std::uint64_t bit = std::uint64_t{1} << (j % 64);
-      if ((word & bit) != 0) continue;
-      word |= bit;
-      adoptions_.push_back({c, j, n});
     }
   }
 }

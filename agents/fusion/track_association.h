@@ -115,7 +115,9 @@ class TrackAssociation {
 
   void gatherNodes(std::span<const TrackList> lists);
   void startUnionFind();
-  void gatherNeighbourSets(const CommGraph& graph);  // neighbours_, from grouped_from_ agents
+  void gatherNeighbourSets(const CommGraph& graph);  // neighbours_ of this step's graph
+  // An agent's bit in its word of an agent set.
+  static std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
   bool keysUniquePerAgent() const;
   // Rule 2 pair by pair: the shared keys on link i–j, then the rest (gateAndAssign).
   void linkNeighbours(int i, int j, double gate);
@@ -129,7 +131,7 @@ class TrackAssociation {
   void assignComponents(double gate);
   void cluster(FusionDiagnostics& diagnostics);
   void chooseKeys(const CommGraph& graph, KeyMint& mint, FusionDiagnostics& diagnostics);
-  void planAdoptions(const CommGraph& graph);
+  void planAdoptions();
   void writeOut(std::span<TrackList> lists, Clusters& clusters, FusionDiagnostics& diagnostics);
   int find(int node);
   bool unite(int a, int b);
@@ -160,7 +162,6 @@ class TrackAssociation {
   std::vector<char> confirmed_;         // per cluster
   std::vector<int> order_;
   std::vector<Adoption> adoptions_;
-  bool neighbour_sets_ = false;            // neighbours_ holds this step's graph
   std::vector<std::uint64_t> neighbours_;  // per agent, its neighbours as a bit set
   // linkByKey's scratch.
   struct KeyLabel {

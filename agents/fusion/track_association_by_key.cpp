@@ -10,10 +10,6 @@
 namespace canopy::agents::fusion {
 namespace {
 
-std::uint64_t bitOf(int agent) {
-  return std::uint64_t{1} << (agent % 64);
-}
-
 // Two ints as one unsigned word that orders as the pair (hi, lo) does (the sign bits flipped).
 std::uint64_t packed(int hi, int lo) {
   const auto flip = [](int v) { return static_cast<std::uint32_t>(v) ^ 0x80000000u; };
