@@ -6,6 +6,7 @@
 // leaves sound) advance in one vector step each: a few instructions per number. The streams are
 // seeded from a named RandomStream, so a trial's numbers still follow from its seed alone, on any
 // CPU and at any thread count (integer arithmetic; the baseline lowers it to SSE2 pairs).
+#include <cstddef>
 #include <cstdint>
 
 #include "core/lanes.h"
@@ -54,6 +55,17 @@ struct alignas(32) RandomLanes {
   s3 = (s3 << 45) | (s3 >> 19);
   constexpr std::uint64_t kOne = 0x3FF0000000000000;  // the bits of 1.0
   return (V4)((out >> 12) | kOne) - 1.0;
+}
+
+/// The four streams moved on by `steps` steps of nextUniform, the draws discarded: where a later
+/// part of a sequence of draws starts, so that it can be drawn apart from the parts before it.
+inline void advance(RandomLanes& random, std::size_t steps) {
+  U4 s0 = random.s[0], s1 = random.s[1], s2 = random.s[2], s3 = random.s[3];
+  for (std::size_t k = 0; k < steps; ++k) nextUniform(s0, s1, s2, s3);
+  random.s[0] = s0;
+  random.s[1] = s1;
+  random.s[2] = s2;
+  random.s[3] = s3;
 }
 
 }  // namespace canopy::lanes

@@ -78,10 +78,10 @@ void TeamFusion::fuse(std::span<const AgentTracks> agents, FusedTracks& fused) {
 
 void TeamFusion::associateAndAgree(FusedTracks& fused) {
   target_association_.associate(fused.targets, graph_, config_.association_gate, mint_,
-                                target_clusters_, diagnostics_);
+                                target_clusters_, diagnostics_, pool_);
   agree<4>(target_consensus_, fused.targets, target_clusters_);
   tree_association_.associate(fused.trees, graph_, config_.association_gate, mint_, tree_clusters_,
-                              diagnostics_);
+                              diagnostics_, pool_);
   agree<3>(tree_consensus_, fused.trees, tree_clusters_);
   shareOutlines(fused.trees, tree_clusters_, graph_, outline_scratch_);
 }

@@ -17,10 +17,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 template <int N>
 void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph& graph, double gate,
                                     KeyMint& mint, Clusters& clusters,
-                                    FusionDiagnostics& diagnostics) {
+                                    FusionDiagnostics& diagnostics, TaskPool* pool) {
   agents_ = graph.agents();
   mask_words_ = (agents_ + 63) / 64;
-  gatherNodes(lists);
+  gatherNodes(lists, pool);
   startUnionFind();
   remembered_.clear();
   assigned_.clear();
@@ -44,7 +44,7 @@ void TrackAssociation<N>::associate(std::span<TrackList> lists, const CommGraph&
 }
 
 template <int N>
-void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists) {
+void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists, TaskPool* pool) {
   node_start_.assign(static_cast<std::size_t>(agents_) + 1, 0);
   for (int a = 0; a < agents_; ++a) {
     const int count = static_cast<int>(lists[a].size());
@@ -52,7 +52,9 @@ void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists) {
   }
   nodes_.resize(static_cast<std::size_t>(node_start_[agents_]));
   by_key_.resize(nodes_.size());
-  for (int a = 0; a < agents_; ++a) {
+  // Agent a writes only its own rows [node_start_[a], node_start_[a + 1]).
+  forEachTask(pool, static_cast<std::size_t>(agents_), [&](std::size_t agent) {
+    const int a = static_cast<int>(agent);
     for (int n = node_start_[a]; n < node_start_[a + 1]; ++n) {
       const tracking::Track<N>& track = lists[a][n - node_start_[a]];
       Node& node = nodes_[n];
@@ -68,7 +70,7 @@ void TrackAssociation<N>::gatherNodes(std::span<const TrackList> lists) {
     std::sort(
         by_key_.begin() + node_start_[a], by_key_.begin() + node_start_[a + 1],
         [this](int x, int y) { return std::tie(nodes_[x].key, x) < std::tie(nodes_[y].key, y); });
-  }
+  });
   taken_.assign(nodes_.size(), 0);
   link_stamp_ = 0;
 }

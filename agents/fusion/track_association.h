@@ -13,6 +13,7 @@
 #include "agents/fusion/fusion_diagnostics.h"
 #include "agents/fusion/hungarian.h"
 #include "agents/tracking/track.h"
+#include "core/task_pool.h"
 #include "core/types.h"
 
 namespace canopy::agents::fusion {
@@ -83,9 +84,10 @@ class TrackAssociation {
   explicit TrackAssociation(int grouped_from = kGroupedFrom) : grouped_from_(grouped_from) {}
 
   /// lists[i]: agent i's tracks (the fusion's own copy, being fused). Rewrites keys, appends
-  /// adopted copies, and fills `clusters`.
+  /// adopted copies, and fills `clusters`. With a pool, each agent's tracks are gathered on it
+  /// (the same result).
   void associate(std::span<TrackList> lists, const CommGraph& graph, double gate, KeyMint& mint,
-                 Clusters& clusters, FusionDiagnostics& diagnostics);
+                 Clusters& clusters, FusionDiagnostics& diagnostics, TaskPool* pool = nullptr);
 
  private:
   struct Node {
@@ -113,7 +115,7 @@ class TrackAssociation {
     int source = 0;  // node copied
   };
 
-  void gatherNodes(std::span<const TrackList> lists);
+  void gatherNodes(std::span<const TrackList> lists, TaskPool* pool);
   void startUnionFind();
   void gatherNeighbourSets(const CommGraph& graph);  // neighbours_ of this step's graph
   // An agent's bit in its word of an agent set.

@@ -90,7 +90,7 @@ void NominalCost::prepareSensors() {
 }
 
 void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> free_agents,
-                          std::span<const Plan> assumed) {
+                          std::span<const Plan> assumed, TaskPool* pool) {
   const CostSettings& s = problem.settings;
   const int H = horizon_ = s.horizon;
   const int S = substeps_ = s.substeps;
@@ -244,12 +244,14 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
                                   footprint_reach + sensing::kFootprintSlack + kReachSlack);
   }
 
-  for (int j = 0; j < n_targets; ++j) {
+  // Track j's nominal path, what the fixed UAVs see of it and its covariance recursion until a
+  // free UAV may see it: it writes only track j's entries (`near` is the caller's scratch).
+  auto prepareTrack = [&](int j, std::vector<int>& near) {
     Vec4 x = problem.targets[j].x;
     // |z_{j,t} − p_{f,0}| ≥ |ξ_j − p_{f,0}| − T·τ·|v_j|: beyond every free UAV's reach, the track
     // is out of scope (its start_ stays T, its cost 0).
     if (reach_scope && !nearFree(problem, free_agents, x.head<2>(), T * tau * x.tail<2>().norm()))
-      continue;
+      return;
     const Mat4& P0 = problem.targets[j].P;
     // Symmetrised; the recursion keeps it exactly so and works on its unique entries.
     SymmetricCov4 P = SymmetricCov4::fromUpper(0.5 * (P0 + P0.transpose()));
@@ -274,8 +276,8 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
         int seen = 0;
         std::span<const int> asked = fixed;
         if (use_nearby) {
-          nearby_[t].near(z, near_fixed_);
-          asked = near_fixed_;
+          nearby_[t].near(z, near);
+          asked = near;
         }
         for (const int i : asked) {
           const std::size_t im = static_cast<std::size_t>(i) * T + t;
@@ -331,7 +333,19 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
       if ((t + 1) % S == 0) cost += discount_[m - 1] * stageTrace(P);  // at t_m
     }
     if (!started) cost_start_[j] = cost;
-  }
+  };
+  // The tracks in blocks, side by side on the pool when there is one (each block its own
+  // scratch); the same entries either way. A few blocks per thread, since the tracks out of scope
+  // cost next to nothing and the pool hands a finished thread the blocks not yet started.
+  const std::size_t blocks = pool == nullptr || pool->threads() == 1 || n_targets < kPoolTracksFrom
+                                 ? 1
+                                 : static_cast<std::size_t>(kBlocksPerThread * pool->threads());
+  near_scratch_.resize(std::max(near_scratch_.size(), blocks));
+  forEachTask(pool, blocks, [&](std::size_t b) {
+    const int first = static_cast<int>(b * n_targets / blocks);
+    const int last = static_cast<int>((b + 1) * n_targets / blocks);
+    for (int j = first; j < last; ++j) prepareTrack(j, near_scratch_[b]);
+  });
 
   reachable_.clear();
   scope_tracks_.clear();

@@ -18,6 +18,7 @@
 #include "agents/planning/symmetric_covariance.h"
 #include "agents/planning/uav_state.h"
 #include "core/cpu.h"
+#include "core/task_pool.h"
 #include "core/types.h"
 #include "sensing/camera.h"
 #include "sensing/footprint.h"
@@ -111,8 +112,14 @@ class NominalCost {
   /// free_agents: indices of the UAVs whose actions evaluate() receives (distinct). assumed: one
   /// plan per UAV; the plans of the others are read from it (a missing step repeats the last
   /// action, an empty plan hovers), the entries of free UAVs are ignored.
+  /// With a pool, the tracks' part of the preparation runs on it (from kPoolTracksFrom tracks);
+  /// the result is the same bits.
   void prepare(const PlanningProblem& problem, std::span<const int> free_agents,
-               std::span<const Plan> assumed);
+               std::span<const Plan> assumed, TaskPool* pool = nullptr);
+  /// Tracks from which prepare() shares its tracks out: 256 tracks take about 0.4 ms on one
+  /// core at 64 UAVs, against a few µs for a hand-off.
+  static constexpr int kPoolTracksFrom = 32;
+  static constexpr int kBlocksPerThread = 4;
   /// Whether the cost reads assumed[uav] of a UAV that is not free, i.e. whether its plan can
   /// change J: always in team scope; in reach scope when it starts within reach(f) + reach(uav)
   /// of some free UAV f, or when it is a body that may come within the separation of a free
@@ -334,7 +341,7 @@ class NominalCost {
   // their memory.
   std::vector<NearbyUavs> nearby_;
   std::vector<Vec2> nearby_positions_;
-  std::vector<int> near_fixed_;
+  std::vector<std::vector<int>> near_scratch_;  // per block of prepare()'s tracks
 
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;           // first such sample t (H·S: none)

@@ -49,6 +49,21 @@ struct SwarmResult {
 /// positions: particle-major, particles × dimension; costs: one per particle, to be written.
 using BatchCost = std::function<void(std::span<const double> positions, std::span<double> costs)>;
 
+/// The swarm in blocks of particles that move and are evaluated side by side (a global-best
+/// swarm without restarts): block b holds particles [b·width, min((b + 1)·width, n)), width a
+/// multiple of four. `run(count, task)` runs task(b) for every b < count and returns when all
+/// are done (on a pool: ParticleSwarm's tasks write only their block's entries); `cost(b,
+/// positions, costs)` evaluates block b's particles. Each block draws its own r1, r2: the four
+/// streams are advanced past the blocks before it (core/random_lanes.h, advance), so the draws,
+/// and the search, are those of the whole swarm at once, bit for bit.
+struct SwarmBlocks {
+  std::size_t count = 1;
+  std::size_t width = 0;
+  std::function<void(std::size_t count, const std::function<void(std::size_t)>& task)> run;
+  std::function<void(std::size_t block, std::span<const double> positions, std::span<double> costs)>
+      cost;
+};
+
 /// Synchronous PSO (global best):
 ///   v ← w v + c1 r1 δ(x_best,own − x) + c2 r2 δ(x_best,swarm − x),  x ← wrap(x + v),
 /// r1, r2 ~ U[0, 1) per particle and coordinate. A coordinate that leaves [lo, hi] re-enters from
@@ -76,9 +91,13 @@ class ParticleSwarm {
   /// warm_start: empty, or k positions (k·dimension values, k ≤ particles) given to particles
   /// 0 … k − 1 instead of their draws (which are still made, so the rest do not depend on k).
   /// Buffers are kept between calls; the cost is called once per iteration with the whole swarm.
+  /// With `blocks` (global best, no restarts; otherwise ignored), every iteration after the
+  /// first evaluation moves and evaluates the blocks side by side (SwarmBlocks); the result is
+  /// the same bits.
   SwarmResult minimise(const BatchCost& cost, std::span<const double> lo,
                        std::span<const double> hi, const SwarmOptions& options, RandomStream& rng,
-                       std::span<const double> warm_start = {});
+                       std::span<const double> warm_start = {},
+                       const SwarmBlocks* blocks = nullptr);
 
  private:
   /// Ring: each particle's neighbourhood best into swarm_best_ (swarm_best where a
@@ -88,8 +107,10 @@ class ParticleSwarm {
                             std::span<const double> swarm_best, double ftol = 0.0);
 
   std::vector<double> x_, v_, own_best_, own_best_cost_, cost_;
-  std::vector<double> neighbourhood_cost_;  // ring: each particle's neighbourhood best cost
-  std::vector<int> since_improved_;         // restarts: iterations since own best improved
+  std::vector<double> neighbourhood_cost_;        // ring: each particle's neighbourhood best cost
+  std::vector<int> since_improved_;               // restarts: iterations since own best improved
+  std::vector<char> improved_;                    // blocks: own best improved at this iteration
+  std::vector<lanes::RandomLanes> block_random_;  // blocks: each block's streams
   lanes::RandomLanes random_;  // four streams for r1, r2, seeded from the call's stream
   // Per particle and coordinate (particle-major, as x_), for swarm_kernels.h: the box, its width
   // and the swarm's best position, repeated once per particle.

@@ -15,7 +15,7 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
                                    const SwarmShape& shape) {
   const int H = problem.settings.horizon;
   const std::size_t n_free = free_agents.size();
-  cost_.prepare(problem, free_agents, assumed);
+  cost_.prepare(problem, free_agents, assumed, shared_ == nullptr ? nullptr : shared_->pool);
   actions_.resize(n_free * H);
   // Height: the climb rates of the free UAVs whose altitude is free follow the speeds and
   // headings, H each in [−climb_rate, climb_rate] (none: the decision vector is the paper's).
@@ -79,48 +79,67 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   }
   // The whole swarm decoded at once (swarm_kernels.h), then evaluated four particles at a time.
   const auto batch = [this, n_moves, n_climbs](std::span<const double> positions,
-                                                std::span<double> costs) {
-    const std::size_t per_particle = actions_.size();
-    swarm_actions_.resize(costs.size() * per_particle);
+                                               std::span<double> costs) {
+    const std::size_t n = costs.size();
+    resizeDecoded(n, n_climbs);
+    decode(positions, 0, n, n_moves, n_climbs);
     if (n_climbs == 0) {
-      decodeActions(positions, swarm_actions_);
       cost_.evaluate(swarm_actions_, costs);
       return;
     }
-    decode(positions, costs.size(), n_moves, n_climbs);
     cost_.evaluate(swarm_actions_, swarm_climbs_, costs);
   };
-  // The same with the swarm's blocks evaluated side by side. Block b: particles [b·w, min((b +
-  // 1)·w, n)), w = 4·⌈n / (4·blocks)⌉, so that the lanes group the candidates as one evaluate()
-  // over the whole swarm does.
-  const auto shared_batch = [this, n_moves, n_climbs, blocks, pool](
-                                std::span<const double> positions, std::span<double> costs) {
-    const std::size_t n = costs.size(), per_particle = actions_.size();
-    decode(positions, n, n_moves, n_climbs);
-    const std::size_t width = 4 * ((n + 4 * blocks - 1) / (4 * blocks));
-    std::vector<NominalCost>& copies = shared_->costs;
+  // The same with the swarm's blocks side by side. Block b: particles [b·w, min((b + 1)·w, n)),
+  // w = 4·⌈n / (4·blocks)⌉, so that the lanes group the candidates as one evaluate() over the
+  // whole swarm does. Block b's particles (`positions` holds theirs only) are decoded into their
+  // entries and evaluated on block b's copy of the prepared cost.
+  const std::size_t n_particles = static_cast<std::size_t>(std::max(1, options.particles));
+  const std::size_t width = 4 * ((n_particles + 4 * blocks - 1) / (4 * blocks));
+  const auto evaluate_block = [this, n_moves, n_climbs, width](std::size_t b,
+                                                               std::span<const double> positions,
+                                                               std::span<double> costs) {
+    const std::size_t first = b * width, last = first + costs.size();
+    const std::size_t per_particle = actions_.size();
+    decode(positions, first, last, n_moves, n_climbs);
+    if (!copied_[b]) {  // cost_ is only read while the blocks run
+      shared_->costs[b] = cost_;
+      copied_[b] = 1;
+    }
+    const std::span<const Vec2> actions(swarm_actions_.data() + first * per_particle,
+                                        (last - first) * per_particle);
+    const std::span<const double> climbs =
+        n_climbs == 0 ? std::span<const double>()
+                      : std::span<const double>(swarm_climbs_.data() + first * n_climbs,
+                                                (last - first) * n_climbs);
+    shared_->costs[b].evaluate(actions, climbs, costs);
+  };
+  // The first batch (the initial swarm) in blocks; the iterations after it move and evaluate
+  // each block on its own (SwarmBlocks).
+  const std::size_t dim = lo_.size();
+  const auto shared_batch = [&](std::span<const double> positions, std::span<double> costs) {
+    const std::size_t n = costs.size();
+    resizeDecoded(n, n_climbs);
     pool->run(blocks, [&](std::size_t b) {
       const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
       if (first == last) return;
-      if (!copied_[b]) {  // cost_ is only read while the blocks run
-        copies[b] = cost_;
-        copied_[b] = 1;
-      }
-      const std::span<const Vec2> actions(swarm_actions_.data() + first * per_particle,
-                                          (last - first) * per_particle);
-      const std::span<const double> climbs =
-          n_climbs == 0 ? std::span<const double>()
-                        : std::span<const double>(swarm_climbs_.data() + first * n_climbs,
-                                                  (last - first) * n_climbs);
-      copies[b].evaluate(actions, climbs, costs.subspan(first, last - first));
+      evaluate_block(b, positions.subspan(first * dim, (last - first) * dim),
+                     costs.subspan(first, last - first));
     });
     ++shared_batches_;
   };
+  SwarmBlocks swarm_blocks;
+  swarm_blocks.count = blocks;
+  swarm_blocks.width = width;
+  swarm_blocks.run = [&](std::size_t count, const std::function<void(std::size_t)>& task) {
+    pool->run(count, task);
+    ++shared_batches_;
+  };
+  swarm_blocks.cost = evaluate_block;
   // No more warm starts than particles (the first ones kept).
-  warm_.resize(std::min(warm_.size(),
-                        static_cast<std::size_t>(std::max(1, options.particles)) * lo_.size()));
-  const SwarmResult best = swarm_.minimise(
-      shared ? BatchCost(shared_batch) : BatchCost(batch), lo_, hi_, options, rng, warm_);
+  warm_.resize(std::min(warm_.size(), n_particles * dim));
+  const SwarmResult best =
+      swarm_.minimise(shared ? BatchCost(shared_batch) : BatchCost(batch), lo_, hi_, options, rng,
+                      warm_, shared ? &swarm_blocks : nullptr);
 
   decodeActions(std::span<const double>(best.best).first(n_moves), actions_);
   PlanSearch search;
@@ -139,22 +158,27 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   return search;
 }
 
-void PlanOptimizer::decode(std::span<const double> positions, std::size_t n, std::size_t n_moves,
-                           std::size_t n_climbs) {
+void PlanOptimizer::resizeDecoded(std::size_t n, std::size_t n_climbs) {
+  swarm_actions_.resize(n * actions_.size());
+  swarm_climbs_.resize(n * n_climbs);
+}
+
+void PlanOptimizer::decode(std::span<const double> positions, std::size_t first, std::size_t last,
+                           std::size_t n_moves, std::size_t n_climbs) {
   const std::size_t per_particle = actions_.size();
-  swarm_actions_.resize(n * per_particle);
+  const std::size_t dim = n_moves + n_climbs;
+  const std::span<Vec2> actions =
+      std::span<Vec2>(swarm_actions_).subspan(first * per_particle, (last - first) * per_particle);
   if (n_climbs == 0) {
-    decodeActions(positions, swarm_actions_);
+    decodeActions(positions, actions);
     return;
   }
   // Each particle's speeds and headings, then its climb rates (read as they are).
-  swarm_climbs_.resize(n * n_climbs);
-  const std::size_t dim = n_moves + n_climbs;
-  for (std::size_t p = 0; p < n; ++p) {
-    decodeActions(positions.subspan(p * dim, n_moves),
-                  std::span<Vec2>(swarm_actions_).subspan(p * per_particle, per_particle));
-    std::copy_n(positions.begin() + static_cast<std::ptrdiff_t>(p * dim + n_moves), n_climbs,
-                swarm_climbs_.begin() + static_cast<std::ptrdiff_t>(p * n_climbs));
+  for (std::size_t k = 0; k < last - first; ++k) {
+    decodeActions(positions.subspan(k * dim, n_moves),
+                  actions.subspan(k * per_particle, per_particle));
+    std::copy_n(positions.begin() + static_cast<std::ptrdiff_t>(k * dim + n_moves), n_climbs,
+                swarm_climbs_.begin() + static_cast<std::ptrdiff_t>((first + k) * n_climbs));
   }
 }
 

@@ -38,9 +38,9 @@ struct SwarmShape {
 ///
 /// With a shared evaluation (share), a swarm whose batches are large enough (particles · tracks
 /// ≥ kSharedWork) has each iteration's particles evaluated side by side on its pool: the particles
-/// split into one block per thread (multiples of four, the cost's lanes), each block evaluated by
-/// its own copy of the prepared cost, the costs written in place. The swarm's draws and
-/// bookkeeping stay on the calling thread and every candidate's cost has the bits it has alone,
+/// split into one block per thread (multiples of four, the cost's lanes), each block decoded and
+/// evaluated by its own copy of the prepared cost, the costs written in place. The swarm's draws
+/// and bookkeeping stay on the calling thread and every candidate's cost has the bits it has alone,
 /// so the search is the same bits at any thread count (docs/design-notes.md, "Threads inside one
 /// run").
 class PlanOptimizer {
@@ -72,9 +72,12 @@ class PlanOptimizer {
                       const SwarmShape& shape = {});
 
  private:
-  // n particles' positions into swarm_actions_ (and swarm_climbs_ when n_climbs > 0).
-  void decode(std::span<const double> positions, std::size_t n, std::size_t n_moves,
-              std::size_t n_climbs);
+  // swarm_actions_ and swarm_climbs_ sized for n particles.
+  void resizeDecoded(std::size_t n, std::size_t n_climbs);
+  // Particles [first, last) (`positions` holds theirs only) into their entries of
+  // swarm_actions_ (and swarm_climbs_ when n_climbs > 0); blocks may decode side by side.
+  void decode(std::span<const double> positions, std::size_t first, std::size_t last,
+              std::size_t n_moves, std::size_t n_climbs);
 
   NominalCost cost_;
   ParticleSwarm swarm_;

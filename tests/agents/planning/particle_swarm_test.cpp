@@ -4,9 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <vector>
+
+#include "core/task_pool.h"
 
 namespace canopy::agents::planning {
 namespace {
@@ -111,6 +115,61 @@ TEST(ParticleSwarm, IdenticalSeedsGiveBitwiseIdenticalResults) {
   RandomStream rng_a2(11, "pso", 1);
   EXPECT_EQ(a.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_a2).best, ra.best);
   EXPECT_NE(a.minimise(batchOf(3, rosenbrock), lo, hi, options, rng_c).best, ra.best);
+}
+
+// SwarmBlocks (a swarm shared out over a pool): each block draws its r1, r2 from streams advanced
+// past the blocks before it, so the search is the whole swarm's, bit for bit, whatever order the
+// blocks run in and on whichever thread; swarms whose size is not a multiple of the width, and
+// blocks left empty, included.
+TEST(ParticleSwarm, BlocksMoveAndEvaluateAsTheWholeSwarmBitForBit) {
+  struct Case {
+    int particles;
+    std::size_t dim, blocks;
+  };
+  TaskPool pool(2);
+  for (const Case c :
+       {Case{40, 3, 2}, Case{37, 5, 2}, Case{41, 10, 3}, Case{9, 4, 4}, Case{100, 10, 2}}) {
+    const std::vector<double> lo(c.dim, -2.0), hi(c.dim, 2.0);
+    SwarmOptions options = precise(c.particles, 300);
+    options.ftol = 1e-9;
+    options.stall_iterations = 30;
+    RandomStream whole_rng(5, "pso", c.dim), blocks_rng(5, "pso", c.dim);
+    ParticleSwarm whole, in_blocks;
+    const SwarmResult expected =
+        whole.minimise(batchOf(c.dim, rosenbrock), lo, hi, options, whole_rng);
+
+    const std::size_t n = static_cast<std::size_t>(c.particles);
+    SwarmBlocks blocks;
+    blocks.count = c.blocks;
+    blocks.width = 4 * ((n + 4 * c.blocks - 1) / (4 * c.blocks));
+    int calls = 0;
+    blocks.run = [&](std::size_t count, const std::function<void(std::size_t)>& task) {
+      if (++calls % 2 == 0) {
+        pool.run(count, task);
+        return;
+      }
+      for (std::size_t b = count; b-- > 0;) task(b);  // last block first
+    };
+    long long evaluated = 0;
+    std::mutex mutex;
+    blocks.cost = [&](std::size_t b, std::span<const double> x, std::span<double> costs) {
+      ASSERT_EQ(x.size(), costs.size() * c.dim);
+      ASSERT_LE(b * blocks.width + costs.size(), n);
+      for (std::size_t p = 0; p < costs.size(); ++p)
+        costs[p] = rosenbrock(x.subspan(p * c.dim, c.dim));
+      const std::lock_guard lock(mutex);
+      evaluated += static_cast<long long>(costs.size());
+    };
+    const SwarmResult got =
+        in_blocks.minimise(batchOf(c.dim, rosenbrock), lo, hi, options, blocks_rng, {}, &blocks);
+    EXPECT_EQ(got.best, expected.best) << c.particles << " particles, " << c.blocks << " blocks";
+    EXPECT_EQ(got.best_cost, expected.best_cost);
+    EXPECT_EQ(got.iterations, expected.iterations);
+    EXPECT_EQ(got.evaluations, expected.evaluations);
+    EXPECT_EQ(calls, got.iterations);  // every iteration after the first batch ran in blocks
+    EXPECT_EQ(evaluated, static_cast<long long>(got.iterations) * c.particles);
+    EXPECT_GT(got.iterations, 10);
+  }
 }
 
 TEST(ParticleSwarm, StopsOnStallOrCapAndEvaluatesTheWholeSwarmPerCall) {
