@@ -209,13 +209,12 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
       stalls = updateNeighbourhoods(n, dim, options.neighbours, result.best, options.ftol)
                    ? 0
                    : stalls + 1;
-    } else if (in_blocks) {
-      best_moved = best_moved || improved;  // each block repeats it over its own particles
-      stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
-                   ? stalls + 1
-                   : 0;
     } else {
-      if (improved) repeatSwarmBest();
+      if (in_blocks) {
+        best_moved = best_moved || improved;  // each block repeats it over its own particles
+      } else if (improved) {
+        repeatSwarmBest();
+      }
       // Stall: |best_k − best_{k−1}| < ftol·(1 + |best_{k−1}|).
       stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
                    ? stalls + 1
