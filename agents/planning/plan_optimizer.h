@@ -37,12 +37,12 @@ struct SwarmShape {
 /// calls; one instance per thread.
 ///
 /// With a shared evaluation (share), a swarm whose batches are large enough (particles · tracks
-/// ≥ kSharedWork) has each iteration's particles evaluated side by side on its pool: the particles
-/// split into one block per thread (multiples of four, the cost's lanes), each block decoded and
-/// evaluated by its own copy of the prepared cost, the costs written in place. The swarm's draws
-/// and bookkeeping stay on the calling thread and every candidate's cost has the bits it has alone,
-/// so the search is the same bits at any thread count (docs/design-notes.md, "Threads inside one
-/// run").
+/// ≥ kSharedWork) has each iteration's particles moved and evaluated side by side on its pool: the
+/// particles split into one block per thread (multiples of four, the cost's lanes), each block
+/// moved (its r1, r2 from the swarm's streams advanced past the blocks before it: SwarmBlocks),
+/// decoded and evaluated by its own copy of the prepared cost. The swarm's best is chosen on the
+/// calling thread in particle order and every candidate's cost has the bits it has alone, so the
+/// search is the same bits at any thread count (docs/design-notes.md, "Threads inside one run").
 class PlanOptimizer {
  public:
   /// particles · tracks of one batch from which it is shared out: below, the hand-off costs more
