@@ -67,6 +67,7 @@ void StepColumnEncoder::add(const StepRecord& record) {
   plans(record);
   extras_.encode(extras_.schema().step, record, s);
   previous_ = record.beliefs;
+  previous_agents_ = previous_.size();
   ++steps_;
 }
 
@@ -75,7 +76,7 @@ void StepColumnEncoder::add(const StepRecord& record) {
 // (a track's label, then its values XORed with entry j's).
 void StepColumnEncoder::belief(int agent, const agents::AgentBelief& b) {
   ColumnOut& s = columns_[kStructureColumn];
-  const agents::AgentBelief* before = static_cast<std::size_t>(agent) < previous_.size()
+  const agents::AgentBelief* before = static_cast<std::size_t>(agent) < previous_agents_
                                           ? &previous_[static_cast<std::size_t>(agent)]
                                           : nullptr;
   ColumnOut& map = columns_[kMapColumn];
@@ -270,7 +271,7 @@ void StepColumnEncoder::take(std::string& out) {
     bytes.clear();
   }
   steps_ = 0;
-  previous_.clear();
+  previous_agents_ = 0;
   uavs_.clear();
   targets_.clear();
 }

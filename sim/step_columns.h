@@ -69,8 +69,11 @@ class StepColumnEncoder {
   RecordExtras extras_;
   std::array<ColumnOut, kColumnCount> columns_;
   std::uint32_t steps_ = 0;
-  // The step before, in this block.
+  // The step before, in this block: its first previous_agents_ beliefs (none at a block's start;
+  // the vectors keep their capacity from block to block, so that a swarm's beliefs, tens of MB,
+  // are not allocated and faulted in again at every block).
   std::vector<agents::AgentBelief> previous_;
+  std::size_t previous_agents_ = 0;
   std::vector<std::array<double, 8>> uavs_;
   std::vector<std::array<double, 4>> targets_;
 };

@@ -112,6 +112,7 @@ TeamPlan TeamPlanner::plan(int epoch, std::span<const UavState> uavs,
 long long TeamPlanner::sharedBatches() const {
   long long total = 0;
   for (const PlanOptimizer& optimizer : optimizers_) total += optimizer.sharedBatches();
+  total += alone_.sharedBatches();
   return total;
 }
 
@@ -256,8 +257,10 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
       }
     }
     // A level of one agent (every level in team scope) leaves the pool idle: that agent's swarm
-    // evaluates its particles on it instead (PlanOptimizer::share).
-    for (const int i : batch_) optimizers_[i].share(batch_.size() == 1 ? &shared_ : nullptr);
+    // evaluates its particles on it instead (PlanOptimizer::share), in the team's one optimiser
+    // for such levels (alone_).
+    for (const int i : batch_) optimizers_[i].share(nullptr);
+    alone_.share(&shared_);
     forEachTask(pool_, batch_.size(), [&](std::size_t k) {
       const int i = batch_[k];
       const PlanningProblem problem{views[i].tracks, uavs, views[i].map, settings_};
@@ -266,7 +269,8 @@ void TeamPlanner::planSequential(TeamPlan& out, std::span<const UavState> uavs,
                                              : std::span<const Plan>(&joints_[i][i], 1);
       const int self[] = {i};
       const Clock::time_point start = Clock::now();
-      searches_[i] = optimizers_[i].optimise(problem, config_.pso, self, joints_[i], warm, rng_[i]);
+      PlanOptimizer& optimizer = batch_.size() == 1 ? alone_ : optimizers_[i];
+      searches_[i] = optimizer.optimise(problem, config_.pso, self, joints_[i], warm, rng_[i]);
       seconds_[i] = secondsSince(start);
     });
   }
