@@ -2,6 +2,7 @@
 // one-agent level of a team in one optimiser (TeamPlanner::alone_), one agent after another.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "agents/planning/plan_optimizer.h"
@@ -16,16 +17,16 @@ using cost_test::hoveringUav;
 using cost_test::settings;
 using cost_test::target;
 
-struct Scene {
+struct ReuseScene {
   std::vector<UavState> uavs;
   std::vector<TargetGaussian> targets;
   std::vector<Plan> plans;
 };
 
 // `uavs` UAVs and `tracks` tracks at random in a square of `side` m; every UAV's plan random.
-Scene scene(std::uint64_t seed, int uavs, int tracks, double side) {
+ReuseScene reuseScene(std::uint64_t seed, int uavs, int tracks, double side) {
   RandomStream rng(seed, "optimiser-reuse-test");
-  Scene s;
+  ReuseScene s;
   s.plans.resize(static_cast<std::size_t>(uavs));
   for (int i = 0; i < uavs; ++i) {
     s.uavs.push_back(hoveringUav(Vec2(rng.uniform(0.0, side), rng.uniform(0.0, side))));
@@ -40,7 +41,7 @@ Scene scene(std::uint64_t seed, int uavs, int tracks, double side) {
   return s;
 }
 
-PlanSearch search(PlanOptimizer& optimizer, const Scene& s, int agent) {
+PlanSearch searchAs(PlanOptimizer& optimizer, const ReuseScene& s, int agent) {
   const PlanningProblem problem{s.targets, s.uavs, nullptr, settings(5, true)};
   const int self[] = {agent};
   RandomStream rng(7, "pso", static_cast<std::uint64_t>(agent));
@@ -50,20 +51,20 @@ PlanSearch search(PlanOptimizer& optimizer, const Scene& s, int agent) {
 TEST(PlanOptimizer, ASearchDoesNotDependOnTheSearchesBeforeIt) {
   // A large search (its particles shared out on a pool, 40 tracks), then a small one, then the
   // large one for another agent: each as a fresh optimiser finds it, to the bit.
-  const Scene large = scene(3, 12, 40, 80.0), small = scene(4, 3, 5, 30.0);
+  const ReuseScene large = reuseScene(3, 12, 40, 80.0), small = reuseScene(4, 3, 5, 30.0);
   TaskPool pool(2);
   PlanOptimizer::SharedEvaluation shared{&pool, {}}, fresh_shared{&pool, {}};
   PlanOptimizer reused;
   reused.share(&shared);
   const struct {
-    const Scene* scene;
+    const ReuseScene* scene;
     int agent;
   } runs[] = {{&large, 0}, {&small, 1}, {&large, 5}, {&small, 2}};
   for (const auto& run : runs) {
-    const PlanSearch got = search(reused, *run.scene, run.agent);
+    const PlanSearch got = searchAs(reused, *run.scene, run.agent);
     PlanOptimizer fresh;
     fresh.share(&fresh_shared);
-    const PlanSearch expected = search(fresh, *run.scene, run.agent);
+    const PlanSearch expected = searchAs(fresh, *run.scene, run.agent);
     EXPECT_EQ(got.cost, expected.cost) << "agent " << run.agent;
     EXPECT_EQ(got.iterations, expected.iterations);
     EXPECT_EQ(got.evaluations, expected.evaluations);
