@@ -116,42 +116,34 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
     updateNeighbourhoods(n, dim, options.neighbours, result.best);
   }
   since_improved_.assign(n, 0);
-  improved_.assign(n, 0);
   const bool in_blocks = blocks != nullptr && blocks->count > 1 && blocks->width % 4 == 0 &&
                          blocks->width * blocks->count >= n && !ring && restart_after <= 0;
-  if (in_blocks) block_random_.resize(blocks->count);
+  if (in_blocks) {
+    block_random_.resize(blocks->count);
+    improved_.assign(n, 0);
+  }
   bool best_moved = false;  // blocks: the swarm's best changed since swarm_best_ was filled
-  // Particles [first, last): moved with `random` (r1, r2 drawn as the whole swarm's move draws
-  // them from there), evaluated, and their own bests kept (improved_ marks the ones that
-  // improved). The whole swarm on one thread, or each block on its own.
-  auto moveAndEvaluate = [&](std::size_t first, std::size_t last, lanes::RandomLanes& random,
-                             const std::function<void(std::span<double>)>& evaluate) {
-    const std::size_t from = first * dim, count_part = (last - first) * dim;
-    SwarmMove part = move;
-    part.count = count_part;
-    part.random = &random;
-    part.own_best = own_best_.data() + from;
-    part.swarm_best = swarm_best_.data() + from;
-    part.lo = lo_.data() + from;
-    part.hi = hi_.data() + from;
-    part.width = width_.data() + from;
-    part.x = x_.data() + from;
-    part.v = v_.data() + from;
-    part.moved = moved_.data() + from;
-    moveParticles(part, kernels);
-    evaluate(std::span<double>(cost_).subspan(first, last - first));
-    for (std::size_t p = first; p < last; ++p) {
-      improved_[p] = cost_[p] < own_best_cost_[p];
-      if (!improved_[p]) {
-        ++since_improved_[p];
-        continue;
-      }
-      since_improved_[p] = 0;
-      own_best_cost_[p] = cost_[p];
-      std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, own_best_.begin() + p * dim);
+  // Particle p's own best after its evaluation; true when it improved.
+  auto keepOwnBest = [&](std::size_t p) {
+    if (!(cost_[p] < own_best_cost_[p])) {
+      ++since_improved_[p];
+      return false;
     }
+    since_improved_[p] = 0;
+    own_best_cost_[p] = cost_[p];
+    std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, own_best_.begin() + p * dim);
+    return true;
+  };
+  // Particle p, which improved its own best, as the swarm's best when it beats it.
+  auto offerAsBest = [&](std::size_t p) {
+    if (!(cost_[p] < result.best_cost)) return false;
+    result.best_cost = cost_[p];
+    std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, result.best.begin());
+    return true;
   };
   while (result.iterations < options.max_iterations) {
+    const double previous = result.best_cost;
+    bool improved = false;
     if (in_blocks) {
       // Block b's streams start where block b − 1's draws end: two draws per four coordinates.
       const std::size_t width = blocks->width;
@@ -159,36 +151,48 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
         block_random_[b] = b == 0 ? random_ : block_random_[b - 1];
         if (b > 0) lanes::advance(block_random_[b], 2 * ((width * dim + 3) / 4));
       }
+      // Each block: the swarm's best repeated over its particles when it moved, then its
+      // particles moved with its streams, evaluated, and their own bests kept.
       blocks->run(blocks->count, [&](std::size_t b) {
         const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
         if (first == last) return;
-        if (best_moved) {  // the swarm's best, repeated over the block's particles
+        if (best_moved) {
           for (std::size_t p = first; p < last; ++p)
             std::copy(result.best.begin(), result.best.end(), swarm_best_.begin() + p * dim);
         }
-        moveAndEvaluate(first, last, block_random_[b], [&](std::span<double> costs) {
-          blocks->cost(b, std::span<const double>(x_).subspan(first * dim, (last - first) * dim),
-                       costs);
-        });
+        const std::size_t from = first * dim, part_count = (last - first) * dim;
+        SwarmMove part = move;
+        part.count = part_count;
+        part.random = &block_random_[b];
+        part.own_best = own_best_.data() + from;
+        part.swarm_best = swarm_best_.data() + from;
+        part.lo = lo_.data() + from;
+        part.hi = hi_.data() + from;
+        part.width = width_.data() + from;
+        part.x = x_.data() + from;
+        part.v = v_.data() + from;
+        part.moved = moved_.data() + from;
+        moveParticles(part, kernels);
+        blocks->cost(b, std::span<const double>(x_).subspan(from, part_count),
+                     std::span<double>(cost_).subspan(first, last - first));
+        for (std::size_t p = first; p < last; ++p) improved_[p] = keepOwnBest(p);
       });
       // The streams go on from where the last block with particles stopped drawing.
       random_ = block_random_[(n + width - 1) / width - 1];
       best_moved = false;
+      for (std::size_t p = 0; p < n; ++p) {  // in order: the first of equal costs is the best
+        if (improved_[p] && offerAsBest(p)) improved = true;
+      }
     } else {
-      moveAndEvaluate(0, n, random_, [&](std::span<double> costs) { cost(x_, costs); });
+      moveParticles(move, kernels);
+      cost(x_, cost_);
+      for (std::size_t p = 0; p < n; ++p) {
+        if (keepOwnBest(p) && offerAsBest(p)) improved = true;
+      }
     }
     result.evaluations += static_cast<long long>(n);
     ++result.iterations;
 
-    const double previous = result.best_cost;
-    bool improved = false;
-    for (std::size_t p = 0; p < n; ++p) {  // in order: the first of equal costs is the best
-      if (improved_[p] && cost_[p] < result.best_cost) {
-        result.best_cost = cost_[p];
-        std::copy(x_.begin() + p * dim, x_.begin() + (p + 1) * dim, result.best.begin());
-        improved = true;
-      }
-    }
     if (restart_after > 0) {
       for (std::size_t p = 0; p < n; ++p) {
         if (since_improved_[p] < restart_after || own_best_cost_[p] == result.best_cost) continue;
