@@ -120,6 +120,10 @@ class TrackAssociation {
   void gatherNeighbourSets(const CommGraph& graph);  // neighbours_ of this step's graph
   // An agent's bit in its word of an agent set.
   static std::uint64_t bitOf(int agent) { return std::uint64_t{1} << (agent % 64); }
+  // Whether the agent set starting at `set` (mask_words_ words) holds `agent`.
+  static bool holds(const std::uint64_t* set, int agent) {
+    return (set[agent / 64] & bitOf(agent)) != 0;
+  }
   bool keysUniquePerAgent() const;
   // Rule 2 pair by pair: the shared keys on link i–j, then the rest (gateAndAssign).
   void linkNeighbours(int i, int j, double gate);

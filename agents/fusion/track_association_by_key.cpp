@@ -88,7 +88,7 @@ void TrackAssociation<N>::linkKey(std::span<const int> copies, double gate) {
   long ends = 0;
   for (const int n : copies) {
     const int a = nodes_[n].agent;
-    if ((core_[a / 64] & bitOf(a)) == 0) continue;
+    if (!holds(core_.data(), a)) continue;
     for (std::size_t w = 0; w < words; ++w) {
       const std::uint64_t linked = neighbours_[a * words + w] & core_[w];
       partners_[n * words + w] |= linked;
@@ -101,9 +101,9 @@ void TrackAssociation<N>::linkKey(std::span<const int> copies, double gate) {
     const Node& x = nodes_[o];
     for (const int n : copies) {
       const Node& y = nodes_[n];
-      const bool y_outside = (core_[y.agent / 64] & bitOf(y.agent)) == 0;
+      const bool y_outside = !holds(core_.data(), y.agent);
       if (n == o || (y_outside && n < o)) continue;
-      if ((neighbours_[x.agent * words + y.agent / 64] & bitOf(y.agent)) == 0) continue;
+      if (!holds(&neighbours_[x.agent * words], y.agent)) continue;
       if (!(mahalanobis2(x.p, x.S, y.p, y.S) <= gate)) continue;
       partners_[o * words + y.agent / 64] |= bitOf(y.agent);
       partners_[n * words + x.agent / 64] |= bitOf(x.agent);
@@ -149,11 +149,11 @@ void TrackAssociation<N>::linkUnmatched(int i, int j, double gate) {
   cols_.clear();
   for (int k = unmatched_start_[i]; k < unmatched_start_[i + 1]; ++k) {
     const int n = unmatched_[k];
-    if ((partners_[n * words + j / 64] & bitOf(j)) == 0) rows_.push_back(n);
+    if (!holds(&partners_[n * words], j)) rows_.push_back(n);
   }
   for (int k = unmatched_start_[j]; k < unmatched_start_[j + 1]; ++k) {
     const int n = unmatched_[k];
-    if ((partners_[n * words + i / 64] & bitOf(i)) == 0) cols_.push_back(n);
+    if (!holds(&partners_[n * words], i)) cols_.push_back(n);
   }
   gateAndAssign(gate);
 }

@@ -15,7 +15,8 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
                                    const SwarmShape& shape) {
   const int H = problem.settings.horizon;
   const std::size_t n_free = free_agents.size();
-  cost_.prepare(problem, free_agents, assumed, shared_ == nullptr ? nullptr : shared_->pool);
+  TaskPool* const pool = shared_ == nullptr ? nullptr : shared_->pool;
+  cost_.prepare(problem, free_agents, assumed, pool);
   actions_.resize(n_free * H);
   // Height: the climb rates of the free UAVs whose altitude is free follow the speeds and
   // headings, H each in [−climb_rate, climb_rate] (none: the decision vector is the paper's).
@@ -68,7 +69,6 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
   // Shared out when one batch is large enough (class comment); each block's copy of the prepared
   // cost is made by the block's own task at the search's first batch (the blocks only read cost_,
   // so they copy it side by side).
-  TaskPool* const pool = shared_ == nullptr ? nullptr : shared_->pool;
   const std::size_t blocks = pool == nullptr ? 1 : static_cast<std::size_t>(pool->threads());
   const bool shared =
       blocks > 1 && static_cast<std::size_t>(std::max(1, options.particles)) *
@@ -113,20 +113,8 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
                                                 (last - first) * n_climbs);
     shared_->costs[b].evaluate(actions, climbs, costs);
   };
-  // The first batch (the initial swarm) in blocks; the iterations after it move and evaluate
-  // each block on its own (SwarmBlocks).
-  const std::size_t dim = lo_.size();
-  const auto shared_batch = [&](std::span<const double> positions, std::span<double> costs) {
-    const std::size_t n = costs.size();
-    resizeDecoded(n, n_climbs);
-    pool->run(blocks, [&](std::size_t b) {
-      const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
-      if (first == last) return;
-      evaluate_block(b, positions.subspan(first * dim, (last - first) * dim),
-                     costs.subspan(first, last - first));
-    });
-    ++shared_batches_;
-  };
+  // The iterations move and evaluate each block on its own (SwarmBlocks); the first batch (the
+  // initial swarm) is evaluated in the same blocks.
   SwarmBlocks swarm_blocks;
   swarm_blocks.count = blocks;
   swarm_blocks.width = width;
@@ -135,6 +123,17 @@ PlanSearch PlanOptimizer::optimise(const PlanningProblem& problem, const PsoConf
     ++shared_batches_;
   };
   swarm_blocks.cost = evaluate_block;
+  const std::size_t dim = lo_.size();
+  const auto shared_batch = [&](std::span<const double> positions, std::span<double> costs) {
+    const std::size_t n = costs.size();
+    resizeDecoded(n, n_climbs);
+    swarm_blocks.run(blocks, [&](std::size_t b) {
+      const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
+      if (first == last) return;
+      evaluate_block(b, positions.subspan(first * dim, (last - first) * dim),
+                     costs.subspan(first, last - first));
+    });
+  };
   // No more warm starts than particles (the first ones kept).
   warm_.resize(std::min(warm_.size(), n_particles * dim));
   const SwarmResult best =
