@@ -39,38 +39,78 @@ void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> 
     std::iota(cols_.begin(), cols_.end(), 0);
     solvePart(small, large);
   } else {
+    findEdges(small, large);
     solveByParts(small, large);
   }
+  sortPairs();
+}
+
+void CutoffAssignment::solve(const CellGrid& truth_grid, std::span<const Vec2> estimates) {
+  const std::span<const Vec2> truth = truth_grid.points();
+  if (!truth_grid.usable() || truth_grid.side() != c_ ||
+      static_cast<long>(truth.size()) * static_cast<long>(estimates.size()) <= kWholeUpTo) {
+    solve(truth, estimates);
+    return;
+  }
+  truth_is_small_ = truth.size() <= estimates.size();
+  const std::span<const Vec2> small = truth_is_small_ ? truth : estimates;
+  const std::span<const Vec2> large = truth_is_small_ ? estimates : truth;
+  m_ = static_cast<int>(small.size());
+  n_ = static_cast<int>(large.size());
+  pairs_.clear();
+  // The same edges as findEdges() finds (the same cells, the same distance test), in another
+  // order, which the parts do not depend on.
+  startEdges();
+  for (int e = 0; e < static_cast<int>(estimates.size()); ++e) {
+    if (!CellGrid::searchable(estimates[e])) continue;
+    truth_grid.forEachNear(estimates[e], [&](int t) {
+      if (truth_is_small_) {
+        join(small, large, t, e);
+      } else {
+        join(small, large, e, t);
+      }
+    });
+  }
+  solveByParts(small, large);
+  sortPairs();
+}
+
+void CutoffAssignment::sortPairs() {
   std::sort(pairs_.begin(), pairs_.end(),
             [](const Pair& a, const Pair& b) { return a.truth < b.truth; });
 }
 
-void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const Vec2> large) {
-  // Edges: the pairs closer than c, found through a grid of cells of side c over the large set
-  // (a pair closer than c lies in neighbouring cells), kept as (cell, index) sorted by cell.
-  // Non-finite points have no edge.
+void CutoffAssignment::startEdges() {
+  parent_.resize(static_cast<std::size_t>(m_ + n_));
+  std::iota(parent_.begin(), parent_.end(), 0);
+  edges_.clear();
+}
+
+void CutoffAssignment::join(std::span<const Vec2> small, std::span<const Vec2> large, int i,
+                            int j) {
+  if (!((small[i] - large[j]).norm() < c_)) return;
+  edges_.push_back({0, i, j});
+  parent_[findRoot(parent_, i)] = findRoot(parent_, m_ + j);
+}
+
+void CutoffAssignment::findEdges(std::span<const Vec2> small, std::span<const Vec2> large) {
+  // The pairs closer than c, found through a grid of cells of side c over the large set (a pair
+  // closer than c lies in neighbouring cells), kept as (cell, index) sorted by cell. Non-finite
+  // points have no edge.
   auto cellOf = [&](const Vec2& p) {
     return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(p.x() / c_)),
                                                  static_cast<std::int64_t>(std::floor(p.y() / c_))};
   };
-  auto usable = [&](const Vec2& p) { return p.allFinite() && p.cwiseAbs().maxCoeff() < 1e15; };
   cells_.clear();
   for (int j = 0; j < n_; ++j) {
-    if (!usable(large[j])) continue;
+    if (!CellGrid::searchable(large[j])) continue;
     const auto [cx, cy] = cellOf(large[j]);
     cells_.push_back({cellKey(cx, cy), j});
   }
   std::sort(cells_.begin(), cells_.end());
-  parent_.resize(static_cast<std::size_t>(m_ + n_));
-  std::iota(parent_.begin(), parent_.end(), 0);
-  edges_.clear();
-  auto join = [&](int i, int j) {  // a pair closer than c: an edge
-    if (!((small[i] - large[j]).norm() < c_)) return;
-    edges_.push_back({0, i, j});
-    parent_[findRoot(parent_, i)] = findRoot(parent_, m_ + j);
-  };
+  startEdges();
   for (int i = 0; i < m_; ++i) {
-    if (!usable(small[i])) continue;
+    if (!CellGrid::searchable(small[i])) continue;
     const auto [cx, cy] = cellOf(small[i]);
     // Per column x, the cells (x, y−1), (x, y), (x, y+1) in the order of their keys (by cell,
     // then index) are one run of cells_ found by one search, unless y's low 32 bits (all the key
@@ -82,16 +122,19 @@ void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const
         const std::uint64_t first = cellKey(cx + dx, cy + (one_run ? -1 : dy));
         const std::uint64_t last = cellKey(cx + dx, cy + (one_run ? 1 : dy));
         auto cell = std::lower_bound(cells_.begin(), cells_.end(), std::pair{first, 0});
-        for (; cell != cells_.end() && cell->first <= last; ++cell) join(i, cell->second);
+        for (; cell != cells_.end() && cell->first <= last; ++cell)
+          join(small, large, i, cell->second);
       }
     }
   }
+}
 
+void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const Vec2> large) {
   // Each connected component of the edge graph is its own cut-off assignment: a pair across
   // components costs c^p, as leaving both points unassigned does, so the components' optimal
-  // matchings together are optimal (see the header). Components in the order of their roots,
-  // rows and columns in index order: the same sums on every platform. The edges by root, by a
-  // stable counting sort: within a component they keep their order, by small index.
+  // matchings together are optimal (see the header). Each part's rows and columns in index order:
+  // the same sums on every platform, whatever order the edges were found in. The edges by root,
+  // by a stable counting sort.
   root_start_.assign(parent_.size() + 1, 0);
   for (Edge& edge : edges_) {
     edge.root = findRoot(parent_, edge.small);
@@ -108,9 +151,10 @@ void CutoffAssignment::solveByParts(std::span<const Vec2> small, std::span<const
       rows_.push_back(by_root_[last].small);
       cols_.push_back(by_root_[last].large);
     }
-    rows_.erase(std::unique(rows_.begin(), rows_.end()), rows_.end());  // sorted by the edges
-    std::sort(cols_.begin(), cols_.end());
-    cols_.erase(std::unique(cols_.begin(), cols_.end()), cols_.end());
+    for (std::vector<int>* side : {&rows_, &cols_}) {
+      std::sort(side->begin(), side->end());
+      side->erase(std::unique(side->begin(), side->end()), side->end());
+    }
     solvePart(small, large);
     first = last;
   }
@@ -128,8 +172,8 @@ void CutoffAssignment::solvePart(std::span<const Vec2> small, std::span<const Ve
     for (int b = 0; b < nc; ++b) {
       const Vec2& x = rows_small ? small[r[a]] : small[c[b]];
       const Vec2& y = rows_small ? large[c[b]] : large[r[a]];
-      cost_[static_cast<std::size_t>(a) * nc + b] =
-          std::pow(std::min(c_, (x - y).norm()), p_);  // d_c^p
+      const double d = (x - y).norm();
+      cost_[static_cast<std::size_t>(a) * nc + b] = d < c_ ? std::pow(d, p_) : cp;  // min(c, d)^p
     }
   }
   const std::span<const int> assigned = hungarian_.solve(cost_, nr, nc);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "agents/fusion/hungarian.h"
+#include "metrics/cell_grid.h"
 #include "core/types.h"
 
 namespace canopy::metrics {
@@ -27,6 +28,10 @@ class CutoffAssignment {
  public:
   CutoffAssignment(double cutoff = 50.0, double order = 2.0) : c_(cutoff), p_(order) {}
   void solve(std::span<const Vec2> truth, std::span<const Vec2> estimates);
+  /// The same solve, the truth's pairs found through its grid (cells of side c, built once for
+  /// many solves against the same truth): the same bits as solve(truth.points(), estimates).
+  void solve(const CellGrid& truth, std::span<const Vec2> estimates);
+  double cutoff() const { return c_; }
 
   /// Of the last solve: ( (1/n) · (assignment + c^p · (n − m)) )^{1/p}; 0 when both sets are
   /// empty and c when exactly one is.
@@ -55,7 +60,13 @@ class CutoffAssignment {
   double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
   // The part small[rows_] × large[cols_]: its pairs closer than c join pairs_.
   void solvePart(std::span<const Vec2> small, std::span<const Vec2> large);
-  // Every connected component of the pairs closer than c, each by solvePart().
+  void sortPairs();   // pairs_ by truth index
+  void startEdges();  // no edges; each point its own component
+  // edges_: the pairs closer than c, through a grid of cells over the large set.
+  void findEdges(std::span<const Vec2> small, std::span<const Vec2> large);
+  // The pair (small i, large j) when closer than c: an edge, and one component in parent_.
+  void join(std::span<const Vec2> small, std::span<const Vec2> large, int i, int j);
+  // Every connected component of edges_, each by solvePart().
   void solveByParts(std::span<const Vec2> small, std::span<const Vec2> large);
 
   double c_, p_;
@@ -70,7 +81,7 @@ class CutoffAssignment {
     int root = 0;  // its component
     int small = 0, large = 0;
   };
-  std::vector<Edge> edges_;       // pairs closer than c, by small index
+  std::vector<Edge> edges_;       // pairs closer than c
   std::vector<Edge> by_root_;     // edges_ by component root (then as in edges_)
   std::vector<int> root_start_;   // per root, its first edge in by_root_ (a counting sort)
   std::vector<int> rows_, cols_;  // one part's small and large indices

@@ -77,12 +77,13 @@ void SummaryBuilder::onStep(const StepRecord& record) {
 
   truth_positions_.clear();
   for (const TargetRecord& target : record.targets) truth_positions_.push_back(target.position);
+  truth_grid_.build(truth_positions_, assignment_.cutoff());  // one grid for every agent's solve
   for (std::size_t i = 0; i < record.beliefs.size(); ++i) {
     estimates_.clear();
     for (const agents::TrackEstimate& track : record.beliefs[i].tracks) {
       estimates_.push_back(track.belief.x.head<2>());
     }
-    assignment_.solve(truth_positions_, estimates_);  // one assignment for every metric
+    assignment_.solve(truth_grid_, estimates_);  // one assignment for every metric
     ospa_[i].push_back(assignment_.ospa());
     gospa_[i].push_back(assignment_.gospa());
     false_tracks_[i] += assignment_.parts().false_estimates;

@@ -62,6 +62,7 @@ class SummaryBuilder final : public StepObserver {
   std::vector<int> visible_by_;       // scratch: per target, UAVs that see it this step
   std::vector<int> in_footprint_of_;  // scratch: per target, footprints holding it this step
   metrics::CutoffAssignment assignment_{50.0, 2.0};  // OSPA and GOSPA (α = 2), c = 50 m, p = 2
+  metrics::CellGrid truth_grid_;                     // the people's positions, per step
   std::vector<std::vector<double>> ospa_;            // [agent][k], m
   std::vector<std::vector<double>> gospa_;           // [agent][k], m
   // Region of interest: the people and tracks within interest_range of the agent (∞: all of

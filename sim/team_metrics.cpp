@@ -8,26 +8,25 @@ namespace canopy::sim {
 TeamFigures TeamMetrics::compute(std::span<const Vec2> truth,
                                  std::span<const agents::AgentBelief> beliefs,
                                  std::vector<char>* held_by) {
-  // The team's estimate set: per key, the copy with the least tr(P_pos) (agents in index order,
-  // so a tie keeps the lower index).
+  // The team's estimate set: per key, the copy with the least tr(P_pos). The copies are visited
+  // agent by agent (in index order), and a later copy replaces the kept one only when its trace is
+  // strictly less, so a tie keeps the lower index. Then the set in key order.
   best_.clear();
+  slot_of_key_.clear();
   for (const agents::AgentBelief& belief : beliefs) {
     for (const agents::TrackEstimate& track : belief.tracks) {
       const agents::TargetGaussian& g = track.belief;
-      best_.push_back({track.key, g.x.head<2>(), g.P(0, 0) + g.P(1, 1), g.P.topLeftCorner<2, 2>()});
+      const Best copy{track.key, g.x.head<2>(), g.P(0, 0) + g.P(1, 1), g.P.topLeftCorner<2, 2>()};
+      const auto [slot, inserted] = slot_of_key_.try_emplace(packed(track.key), best_.size());
+      if (inserted) {
+        best_.push_back(copy);
+      } else if (copy.trace < best_[slot->second].trace) {
+        best_[slot->second] = copy;
+      }
     }
   }
-  std::stable_sort(best_.begin(), best_.end(),
-                   [](const Best& a, const Best& b) { return a.key < b.key; });
-  std::size_t out = 0;
-  for (std::size_t k = 0; k < best_.size(); ++k) {
-    if (out > 0 && best_[out - 1].key == best_[k].key) {
-      if (best_[k].trace < best_[out - 1].trace) best_[out - 1] = best_[k];
-      continue;
-    }
-    best_[out++] = best_[k];
-  }
-  best_.resize(out);
+  std::sort(best_.begin(), best_.end(),  // the keys are distinct
+            [](const Best& a, const Best& b) { return a.key < b.key; });
   points_.clear();
   for (const Best& b : best_) points_.push_back(b.position);
 

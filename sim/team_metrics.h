@@ -11,7 +11,9 @@
 // A person is *held* when the team estimate the OSPA assignment gives it lies within
 // kHeldDistance of it and the person lies inside that estimate's 99 % ellipse,
 // Δpᵀ P_pos⁻¹ Δp ≤ kHeldGate (χ²₂): some agent knows where it is, and how well.
+#include <cstdint>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "agents/belief.h"
@@ -44,7 +46,12 @@ class TeamMetrics {
     double trace;  // tr(P_pos), m²
     Mat2 P;        // P_pos, m²
   };
+  static std::uint64_t packed(const agents::TrackKey& key) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(key.origin)) << 32 |
+           static_cast<std::uint32_t>(key.serial);
+  }
   std::vector<Best> best_;
+  std::unordered_map<std::uint64_t, std::size_t> slot_of_key_;  // key → its entry of best_
   std::vector<Vec2> points_;
   metrics::CutoffAssignment assignment_{50.0, 2.0};
 };

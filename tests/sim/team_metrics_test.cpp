@@ -44,5 +44,25 @@ TEST(TeamMetrics, ThreeAgentsFourPeopleByHand) {
   EXPECT_EQ(held, (std::vector<char>{1, 1, 0, 0}));
 }
 
+// Copies of one key with equal traces: the lower agent's is the team's, whatever the key order in
+// the agents' lists; a later copy replaces it only with a strictly smaller trace. One person at
+// (0, 0) and one key, so OSPA is the distance to the copy kept (one estimate, d < c).
+TEST(TeamMetrics, ATieKeepsTheLowerAgentsCopy) {
+  const std::vector<Vec2> person{Vec2(0, 0)};
+  std::vector<agents::AgentBelief> beliefs(3);
+  beliefs[0].tracks = {track({4, 2}, Vec2(900, 0), 1.0), track({-1, 0}, Vec2(3, 0), 1.0)};
+  beliefs[1].tracks = {track({-1, 0}, Vec2(0, 4), 1.0), track({4, 2}, Vec2(950, 0), 0.5)};
+  beliefs[2].tracks = {track({-1, 0}, Vec2(0, 2), 1.0)};
+  TeamMetrics metrics;
+  // Key {-1,0}: (3, 0) kept against the equal traces of (0, 4) and (0, 2): OSPA over two
+  // estimates (the other key at 900 or 950 m is false) = sqrt((9 + 2500) / 2).
+  TeamFigures f = metrics.compute(person, beliefs);
+  EXPECT_EQ(f.estimates, 2);
+  EXPECT_NEAR(f.ospa, std::sqrt((9.0 + 2500.0) / 2.0), 1e-12);
+  beliefs[2].tracks[0].belief.P *= 0.5;  // now strictly less: agent 2's (0, 2) wins, d² = 4
+  f = metrics.compute(person, beliefs);
+  EXPECT_NEAR(f.ospa, std::sqrt((4.0 + 2500.0) / 2.0), 1e-12);
+}
+
 }  // namespace
 }  // namespace canopy::sim
