@@ -77,6 +77,12 @@ class SummaryBuilder final : public StepObserver {
   std::vector<long> false_tracks_;  // [agent]: Σ_k confirmed tracks with no target within c
   std::vector<std::vector<double>> plan_seconds_;  // [agent][epoch], s
   std::vector<Vec2> truth_positions_, estimates_;  // scratch
+  struct AgentFigures {
+    double ospa = 0.0, gospa = 0.0;
+    int false_estimates = 0;
+  };
+  AgentFigures solved_;                  // the step's last solve: its figures
+  std::vector<Vec2> solved_estimates_;   // and its estimates
   std::vector<AgentCounts> counts_at_end_;         // the last step's; empty until a step was added
   agents::fusion::FusionDiagnostics fusion_at_end_;
   agents::planning::MessageCounts intentions_at_end_;
