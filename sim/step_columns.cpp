@@ -1,6 +1,9 @@
 #include "sim/step_columns.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "sim/json_line.h"
@@ -276,23 +279,70 @@ void StepColumnEncoder::take(std::string& out) {
   targets_.clear();
 }
 
+namespace {
+
+// The 8 × 8 byte matrix whose row i is word[i] (byte k in column k, little-endian) transposed in
+// place: afterwards byte i of word[k] is what byte k of word[i] was. Three rounds swap the
+// off-diagonal blocks of 4 × 4, then 2 × 2, then 1 × 1 bytes (each a masked XOR swap).
+void transposeBytes(std::uint64_t (&word)[8]) {
+  for (int i = 0; i < 4; ++i) {
+    const std::uint64_t t = ((word[i] >> 32) ^ word[i + 4]) & 0x00000000FFFFFFFFULL;
+    word[i] ^= t << 32;
+    word[i + 4] ^= t;
+  }
+  for (const int i : {0, 1, 4, 5}) {
+    const std::uint64_t t = ((word[i] >> 16) ^ word[i + 2]) & 0x0000FFFF0000FFFFULL;
+    word[i] ^= t << 16;
+    word[i + 2] ^= t;
+  }
+  for (const int i : {0, 2, 4, 6}) {
+    const std::uint64_t t = ((word[i] >> 8) ^ word[i + 1]) & 0x00FF00FF00FF00FFULL;
+    word[i] ^= t << 8;
+    word[i + 1] ^= t;
+  }
+}
+
+// Plane b of n values, planes[b·n + i] = values[8i + b], and back (inverse = true): eight values
+// at a time through transposeBytes (a value's byte b is its b-th in memory), the rest one byte
+// at a time.
+void transposePlanes(const char* from, char* to, std::size_t n, bool inverse) {
+  std::size_t i = 0;
+  if constexpr (std::endian::native == std::endian::little) {
+    for (; i + 8 <= n; i += 8) {
+      std::uint64_t word[8];
+      for (std::size_t r = 0; r < 8; ++r)
+        std::memcpy(&word[r], inverse ? from + r * n + i : from + 8 * (i + r), 8);
+      transposeBytes(word);
+      for (std::size_t r = 0; r < 8; ++r)
+        std::memcpy(inverse ? to + 8 * (i + r) : to + r * n + i, &word[r], 8);
+    }
+  }
+  for (; i < n; ++i) {
+    for (std::size_t b = 0; b < 8; ++b) {
+      if (inverse) {
+        to[8 * i + b] = from[b * n + i];
+      } else {
+        to[b * n + i] = from[8 * i + b];
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void toPlanes(std::string_view values, std::string& out) {
   const std::size_t n = values.size() / 8;
   const std::size_t start = out.size();
   out.resize(start + values.size());
   char* planes = out.data() + start;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t b = 0; b < 8; ++b) planes[b * n + i] = values[8 * i + b];
-  }
+  transposePlanes(values.data(), planes, n, false);
   for (std::size_t k = 8 * n; k < values.size(); ++k) planes[k] = values[k];
 }
 
 void fromPlanes(std::string_view planes, std::string& out) {
   const std::size_t n = planes.size() / 8;
   out.resize(planes.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t b = 0; b < 8; ++b) out[8 * i + b] = planes[b * n + i];
-  }
+  transposePlanes(planes.data(), out.data(), n, true);
   for (std::size_t k = 8 * n; k < planes.size(); ++k) out[k] = planes[k];
 }
 

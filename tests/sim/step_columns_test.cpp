@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -203,6 +204,27 @@ TEST(StepColumns, BytePlanesGoBothWays) {
   std::string back;
   fromPlanes(planes, back);
   EXPECT_EQ(back, values);
+}
+
+// Byte planes by their definition, planes[b·n + i] = values[8i + b], for sizes on either side of
+// the eight values the encoder moves at a time, and back.
+TEST(StepColumns, BytePlanesAreTheValuesBytesByPosition) {
+  std::mt19937 rng(20261208);
+  for (const std::size_t size : {0, 7, 8, 63, 64, 65, 71, 72, 127, 128, 135, 1000, 4099}) {
+    std::string values(size, '\0');
+    for (char& byte : values) byte = static_cast<char>(rng() & 0xff);
+    std::string planes = "prefix";  // appended after what out holds
+    toPlanes(values, planes);
+    const std::size_t n = size / 8;
+    std::string expected = "prefix" + std::string(size, '\0');
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t b = 0; b < 8; ++b) expected[6 + b * n + i] = values[8 * i + b];
+    for (std::size_t k = 8 * n; k < size; ++k) expected[6 + k] = values[k];
+    EXPECT_EQ(planes, expected) << size << " bytes";
+    std::string back;
+    fromPlanes(std::string_view(planes).substr(6), back);
+    EXPECT_EQ(back, values) << size << " bytes";
+  }
 }
 
 TEST(StepColumns, MalformedBlocksAreErrors) {
