@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/random.h"
@@ -42,6 +43,21 @@ TEST(NearbyUavs, ListsEveryUavWithinReachInIndexOrder) {
         EXPECT_TRUE(std::binary_search(uavs.begin(), uavs.end(), i));
         EXPECT_LE((position[i] - z).norm(), 2.0 * std::sqrt(2.0) * reach + 1e-9);
       }
+      // Exactly the indexed UAVs of the nine cells around z's: cells of side `reach` from the
+      // corner of the indexed UAVs' box.
+      Vec2 corner = position[uavs.front()];
+      for (const int i : uavs) corner = corner.cwiseMin(position[i]);
+      auto cell = [&](const Vec2& p) {
+        const Vec2 d = (p - corner) / reach;
+        return std::pair{std::floor(d.x()), std::floor(d.y())};
+      };
+      std::vector<int> nine;
+      for (const int i : uavs) {
+        const auto [x, y] = cell(position[i]);
+        const auto [zx, zy] = cell(z);
+        if (std::abs(x - zx) <= 1 && std::abs(y - zy) <= 1) nine.push_back(i);
+      }
+      EXPECT_EQ(listed, nine) << "scene " << scene << ", query " << q;
     }
   }
 }
