@@ -101,7 +101,6 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
   custody_r2_ = s.custody_radius * s.custody_radius;
   terminal_ = s.terminal_penalty;
   weight_ = s.terminal_penalty_weight;
-  scope_ = s.scope;
   const int n_uavs = static_cast<int>(problem.uavs.size());
   const int n_targets = static_cast<int>(problem.targets.size());
   if (H < 1 || S < 1 || static_cast<int>(free_agents.size()) > kMaxFreeAgents ||
@@ -349,9 +348,21 @@ void NominalCost::prepare(const PlanningProblem& problem, std::span<const int> f
 
   reachable_.clear();
   scope_tracks_.clear();
+  stage_from_.resize(n_targets);
   for (int j = 0; j < n_targets; ++j) {
+    stage_from_[j] = start_[j] / S;
     if (start_[j] < T) reachable_.push_back(j);
     if (!reach_scope || start_[j] < T) scope_tracks_.push_back(j);
+  }
+  // evaluate() sums J over scope_tracks_ in order. Until the first track with stage terms it adds
+  // the same prefixes in every lane and for every candidate: that part of the sum is taken here,
+  // once, by the same additions from 0.
+  sum_prefix_ = 0.0;
+  sum_prefix_tracks_ = 0;
+  for (const int j : scope_tracks_) {
+    if (stage_from_[j] < H) break;
+    sum_prefix_ += cost_start_[j];
+    ++sum_prefix_tracks_;
   }
   free_pose_.resize(free_.size() * T);
   free_height_.resize(free_.size() * T);

@@ -294,7 +294,6 @@ class NominalCost {
   double custody_r2_ = 0.0;            // m², r² of the custody cost (0: the trace)
   bool terminal_ = true;               // add the terminal penalty
   double weight_ = 0.5;                // 1/m, w
-  CostScope scope_ = CostScope::team;  // what J sums over (CostSettings::scope)
   NcvNoise Q_;                         // Q(τ) of the NCV model, τ = Δ/S
   std::vector<double> discount_;       // γ^{m−1}, m = 1..H
   const OcclusionMap* map_ = nullptr;  // the problem's map (outlives the calls that use it)
@@ -346,8 +345,11 @@ class NominalCost {
   // Per track: the recursion before the first step a free UAV could see it.
   std::vector<int> start_;           // first such sample t (H·S: none)
   std::vector<double> cost_start_;   // Σ_{m<start} γ^{m−1} tr(P_{j,m})
+  std::vector<int> stage_from_;      // start_ / S: its first stage term of evaluate() (H: none)
   std::vector<int> reachable_;       // the tracks with start_ < H·S, in order
   std::vector<int> scope_tracks_;    // the tracks J sums over: all (team) or reachable_ (reach)
+  double sum_prefix_ = 0.0;          // J over scope_tracks_' first sum_prefix_tracks_ tracks,
+  std::size_t sum_prefix_tracks_ = 0;  // those before the first with stage terms
   std::vector<int> penalty_uavs_;    // the UAVs the terminal penalty charges, by index
   std::vector<char> penalty_free_;   // per entry of penalty_uavs_: a free UAV
   std::vector<int> penalty_tracks_;  // the tracks of scope_tracks_ not occluded at m = H

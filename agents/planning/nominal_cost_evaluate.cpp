@@ -60,7 +60,6 @@ template <bool kHeight>
   const int H = horizon_, S = substeps_, T = H * S;
   const std::size_t per_candidate = free_.size() * H;
   const std::size_t n_candidates = costs.size();
-  const int n_targets = static_cast<int>(start_.size());
   const double tau = period_ / S;
   if (actions.size() != per_candidate * n_candidates) {
     std::fprintf(stderr, "NominalCost::evaluate: %zu actions for %zu candidates of %zu\n",
@@ -185,17 +184,16 @@ template <bool kHeight>
       store(&trace_final_[kLanes * j], penaltyWeight(P));  // tr(P_{j,H}[pos]) or its custody loss
       std::memcpy(&in_view_final_[kLanes * j], &seen, sizeof seen);
     }
-    // J in the order of the tracks, each its prefix from prepare() and then its own stage costs.
-    V4 J = V4{};
-    auto add = [&](int j) {
+    // J in the order of scope_tracks_ (all of them in team scope), each its prefix from
+    // prepare() and then its own stage costs; the leading tracks without stage costs were summed
+    // by prepare(). (A division per track and candidate group here, for the first stage, was
+    // half of this function at 1024 tracks: stage_from_.)
+    V4 J = lanes::broadcast(sum_prefix_);
+    for (std::size_t i = sum_prefix_tracks_; i < scope_tracks_.size(); ++i) {
+      const int j = scope_tracks_[i];
       J += cost_start_[j];
-      for (int k = start_[j] / S; k < H; ++k)
+      for (int k = stage_from_[j]; k < H; ++k)
         J += load(&stage_terms_[kLanes * (static_cast<std::size_t>(j) * H + k)]);
-    };
-    if (scope_ == CostScope::team) {
-      for (int j = 0; j < n_targets; ++j) add(j);
-    } else {
-      for (const int j : scope_tracks_) add(j);
     }
     for (int lane = 0; lane < kLanes && first + lane < n_candidates; ++lane) {
       costs[first + lane] = addTerminalPenalty(lane, J[lane]);
