@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -77,8 +78,12 @@ TEST(WorkModel, EveryStageOfAHandSizedFileMatchesItsFormulaWorkedByHand) {
   EXPECT_NEAR(w.sensing, kSensing * steps * uavs * (1 + seen), 1e-6);
   EXPECT_NEAR(w.world, kWorld * steps * (1 * (2 + 3) + 3), 1e-6);  // one sub-step a step
   EXPECT_NEAR(w.record, kRecord * steps * uavs * (1 + held + seen) + kStart, 1e-6);
+  // One solve per agent (no closed form: the agents' sets may differ), and each agent's tracks
+  // compared and counted in the team's figures (0.75 each).
   const double group = 5.0 / 3.0;  // min(held, people within the cut-off)
-  EXPECT_NEAR(w.metrics, kMetrics * steps * uavs * (3 + 11.5 * held + 0.1 * held * group * group),
+  EXPECT_NEAR(w.metrics,
+              kMetrics * steps *
+                  (uavs * (3 + 11.5 * held + 0.1 * held * group * group) + 0.75 * uavs * held),
               1e-6);
   EXPECT_NEAR(w.setup, kSetup * (0 + 2 + 3), 1e-6);
   EXPECT_EQ(w.largest(), "record");  // the program's start outweighs this little run
@@ -176,6 +181,26 @@ double instructions(int uavs, int people, double trees, double duration) {
   any.budget_scale = 1e6;
   return estimateWork(loadScenarioText(scalePoint(uavs, people, trees, duration), "s.json", any))
       .instructions;
+}
+
+// Sixteen UAVs in full communication without losses: the consensus is the closed form, every
+// agent holds the team's one set, and the summary solves one assignment per step (sim/summary.cpp
+// reuses it for every agent). The same file with lost messages: one per agent.
+TEST(WorkModel, AgentsThatAgreeShareOneSolvePerStep) {
+  LoadOptions any;
+  any.budget_scale = 1e6;
+  const ScenarioSpec agree = loadScenarioText(scalePoint(16, 64, 1e4, 4), "agree.json", any);
+  ScenarioSpec lossy = agree;
+  lossy.fusion.comm_drop = 0.1;
+  const WorkGeometry g = workGeometry(agree);
+  const double per_solve = 64 + 11.5 * g.tracks_held +
+                           0.1 * g.tracks_held * std::pow(std::min(g.tracks_held,
+                                                                   g.people_within_cutoff), 2);
+  const double copies = 0.75 * 16 * g.tracks_held;
+  EXPECT_NEAR(estimateStageWork(agree).metrics, kMetrics * g.steps * (per_solve + copies),
+              1e-6 * kMetrics * g.steps * per_solve);
+  EXPECT_NEAR(estimateStageWork(lossy).metrics, kMetrics * g.steps * (16 * per_solve + copies),
+              1e-6 * kMetrics * g.steps * per_solve);
 }
 
 // More UAVs, more people or a longer run never make the estimate smaller.
