@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "agents/fusion/hungarian.h"
-#include "metrics/cell_grid.h"
 #include "core/types.h"
+#include "metrics/cell_grid.h"
 
 namespace canopy::metrics {
 
