@@ -97,12 +97,13 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
     hi_[i] = hi[i % dim];
     width_[i] = hi_[i] - lo_[i];
   }
-  auto repeatSwarmBest = [&] {
-    for (std::size_t p = 0; p < n; ++p) {
+  // The swarm's best repeated over particles [first, last) (the kernels read it per particle).
+  auto repeatSwarmBest = [&](std::size_t first, std::size_t last) {
+    for (std::size_t p = first; p < last; ++p) {
       std::copy(result.best.begin(), result.best.end(), swarm_best_.begin() + p * dim);
     }
   };
-  repeatSwarmBest();
+  repeatSwarmBest(0, n);
   random_ = lanes::RandomLanes::from(rng);  // r1, r2 of every iteration
   const SwarmMove move{count,        options.inertia,  options.c1,         options.c2,
                        &random_,     own_best_.data(), swarm_best_.data(), lo_.data(),
@@ -156,10 +157,7 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
       blocks->run(blocks->count, [&](std::size_t b) {
         const std::size_t first = std::min(b * width, n), last = std::min(first + width, n);
         if (first == last) return;
-        if (best_moved) {
-          for (std::size_t p = first; p < last; ++p)
-            std::copy(result.best.begin(), result.best.end(), swarm_best_.begin() + p * dim);
-        }
+        if (best_moved) repeatSwarmBest(first, last);
         const std::size_t from = first * dim, part_count = (last - first) * dim;
         SwarmMove part = move;
         part.count = part_count;
@@ -217,7 +215,7 @@ SwarmResult ParticleSwarm::minimise(const BatchCost& cost, std::span<const doubl
       if (in_blocks) {
         best_moved = best_moved || improved;  // each block repeats it over its own particles
       } else if (improved) {
-        repeatSwarmBest();
+        repeatSwarmBest(0, n);
       }
       // Stall: |best_k − best_{k−1}| < ftol·(1 + |best_{k−1}|).
       stalls = std::abs(result.best_cost - previous) < options.ftol * (1.0 + std::abs(previous))
