@@ -23,13 +23,18 @@ std::uint64_t cellKey(std::int64_t cx, std::int64_t cy) {
 
 }  // namespace
 
-void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> estimates) {
-  std::span<const Vec2> small = truth, large = estimates;
-  truth_is_small_ = small.size() <= large.size();
-  if (!truth_is_small_) std::swap(small, large);
-  m_ = static_cast<int>(small.size());
-  n_ = static_cast<int>(large.size());
+CutoffAssignment::Sides CutoffAssignment::start(std::span<const Vec2> truth,
+                                                std::span<const Vec2> estimates) {
+  truth_is_small_ = truth.size() <= estimates.size();
+  const Sides sides = truth_is_small_ ? Sides{truth, estimates} : Sides{estimates, truth};
+  m_ = static_cast<int>(sides.small.size());
+  n_ = static_cast<int>(sides.large.size());
   pairs_.clear();
+  return sides;
+}
+
+void CutoffAssignment::solve(std::span<const Vec2> truth, std::span<const Vec2> estimates) {
+  const auto [small, large] = start(truth, estimates);
   if (m_ == 0) return;
 
   if (static_cast<long>(m_) * n_ <= kWholeUpTo) {  // small: one Hungarian problem, no grid
@@ -52,12 +57,7 @@ void CutoffAssignment::solve(const CellGrid& truth_grid, std::span<const Vec2> e
     solve(truth, estimates);
     return;
   }
-  truth_is_small_ = truth.size() <= estimates.size();
-  const std::span<const Vec2> small = truth_is_small_ ? truth : estimates;
-  const std::span<const Vec2> large = truth_is_small_ ? estimates : truth;
-  m_ = static_cast<int>(small.size());
-  n_ = static_cast<int>(large.size());
-  pairs_.clear();
+  const auto [small, large] = start(truth, estimates);
   // The same edges as findEdges() finds (the same cells, the same distance test), in another
   // order, which the parts do not depend on.
   startEdges();

@@ -60,6 +60,11 @@ class CutoffAssignment {
   double penalised(double penalty_per_point) const;  // the penalty, then each assigned cost
   // The part small[rows_] × large[cols_]: its pairs closer than c join pairs_.
   void solvePart(std::span<const Vec2> small, std::span<const Vec2> large);
+  struct Sides {
+    std::span<const Vec2> small, large;  // the smaller set (the assignment's rows), the larger
+  };
+  // A new solve: which set is the smaller, m_, n_, and no pairs yet.
+  Sides start(std::span<const Vec2> truth, std::span<const Vec2> estimates);
   void sortPairs();   // pairs_ by truth index
   void startEdges();  // no edges; each point its own component
   // edges_: the pairs closer than c, through a grid of cells over the large set.
