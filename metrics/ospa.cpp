@@ -57,7 +57,10 @@ void CutoffAssignment::solve(const CellGrid& truth_grid, std::span<const Vec2> e
     solve(truth, estimates);
     return;
   }
-  const auto [small, large] = start(truth, estimates);
+  // Named spans, not a structured binding: the lambda below uses them (clang 14 cannot capture
+  // bindings).
+  const Sides sides = start(truth, estimates);
+  const std::span<const Vec2> small = sides.small, large = sides.large;
   // The same edges as findEdges() finds (the same cells, the same distance test), in another
   // order, which the parts do not depend on.
   startEdges();
